@@ -1,0 +1,3 @@
+from moos_lint.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,188 @@
+"""Configuration: ``[tool.moos-lint]`` in pyproject.toml, or moos-lint.toml / .moos-lint.toml.
+
+The first of those found walking up from the linted paths wins. Unknown keys,
+unknown rules and options of the wrong type are errors that name the file and
+the key: a typo in a config must never silently turn a check off.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+from moos_lint.registry import all_rules, get_rule, is_valid_selector
+
+CONFIG_FILES = (".moos-lint.toml", "moos-lint.toml", "pyproject.toml")
+LIST_KEYS = ("select", "ignore", "extend-select", "exclude", "include-paths")
+KNOWN_KEYS = {*LIST_KEYS, "per-file-ignores", "defines", "rules"}
+DEFAULT_EXCLUDE = (
+    ".git",
+    ".hg",
+    ".svn",
+    ".moos_lint_cache",
+    "__pycache__",
+    ".venv",
+    "node_modules",
+)
+
+
+class ConfigError(Exception):
+    """A configuration problem; the CLI exits with status 2."""
+
+
+@dataclass
+class Settings:
+    select: list[str] | None = None
+    extend_select: list[str] = field(default_factory=list)
+    ignore: list[str] = field(default_factory=list)
+    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
+    exclude: list[str] = field(default_factory=list)
+    defines: dict[str, str] = field(default_factory=dict)
+    include_paths: list[str] = field(default_factory=list)
+    rule_options: dict[str, dict[str, Any]] = field(default_factory=dict)
+    config_path: str | None = None
+    root: str = "."
+
+    def options_for(self, name: str) -> dict[str, Any]:
+        """A rule's options: its defaults, overridden by the config."""
+        r = get_rule(name)
+        out = dict(r.options) if r else {}
+        out.update(self.rule_options.get(name, {}))
+        return out
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "config": self.config_path,
+            "root": self.root,
+            "select": self.select,
+            "extend-select": self.extend_select,
+            "ignore": self.ignore,
+            "per-file-ignores": self.per_file_ignores,
+            "exclude": [*DEFAULT_EXCLUDE, *self.exclude],
+            "defines": self.defines,
+            "include-paths": self.include_paths,
+            "rules": {r.name: self.options_for(r.name) for r in all_rules() if r.options},
+        }
+
+
+def find_config(start: Path) -> Path | None:
+    """The nearest config file at or above ``start``."""
+    here = start if start.is_dir() else start.parent
+    here = Path(os.path.abspath(here))
+    for folder in (here, *here.parents):
+        for name in CONFIG_FILES:
+            candidate = folder / name
+            if not candidate.is_file():
+                continue
+            if name == "pyproject.toml":
+                try:
+                    data = tomllib.loads(candidate.read_text(encoding="utf-8"))
+                except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+                    continue
+                if "moos-lint" not in data.get("tool", {}):
+                    continue
+            return candidate
+    return None
+
+
+def _check_list(path: Path, key: str, value: Any) -> list[str]:
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise ConfigError(f"{path}: `{key}` must be a list of strings")
+    return value
+
+
+def _check_selectors(path: Path, key: str, values: list[str]) -> None:
+    for v in values:
+        if not is_valid_selector(v):
+            raise ConfigError(f"{path}: `{key}` names an unknown rule or code `{v}`")
+
+
+def load_config(path: Path) -> Settings:
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ConfigError(f"{path}: cannot read config: {exc}") from exc
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(f"{path}: invalid TOML: {exc}") from exc
+    if path.name == "pyproject.toml":
+        data = data.get("tool", {}).get("moos-lint", {})
+        prefix = "tool.moos-lint."
+    else:
+        prefix = ""
+    if not isinstance(data, dict):
+        raise ConfigError(f"{path}: `{prefix}` must be a table")
+    return settings_from_dict(data, path, prefix)
+
+
+def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Settings:
+    root = path.parent
+    s = Settings(config_path=str(path), root=str(root))
+    for key, value in data.items():
+        if key not in KNOWN_KEYS:
+            raise ConfigError(f"{path}: unknown key `{prefix}{key}`")
+        if key in LIST_KEYS:
+            _check_list(path, prefix + key, value)
+    if "select" in data:
+        s.select = _check_list(path, prefix + "select", data["select"])
+        _check_selectors(path, prefix + "select", s.select)
+    s.extend_select = list(data.get("extend-select", []))
+    _check_selectors(path, prefix + "extend-select", s.extend_select)
+    s.ignore = list(data.get("ignore", []))
+    _check_selectors(path, prefix + "ignore", s.ignore)
+    s.exclude = list(data.get("exclude", []))
+    s.include_paths = [str((root / p).resolve()) for p in data.get("include-paths", [])]
+    pfi = data.get("per-file-ignores", {})
+    if not isinstance(pfi, dict):
+        raise ConfigError(f"{path}: `{prefix}per-file-ignores` must be a table")
+    for glob, codes in pfi.items():
+        s.per_file_ignores[glob] = _check_list(path, f"{prefix}per-file-ignores.{glob}", codes)
+        _check_selectors(path, f"{prefix}per-file-ignores.{glob}", codes)
+    defines = data.get("defines", {})
+    if not isinstance(defines, dict):
+        raise ConfigError(f"{path}: `{prefix}defines` must be a table of NAME = value")
+    s.defines = {str(k): str(v) for k, v in defines.items()}
+    rules = data.get("rules", {})
+    if not isinstance(rules, dict):
+        raise ConfigError(f"{path}: `{prefix}rules` must be a table")
+    for name, opts in rules.items():
+        r = get_rule(name)
+        if r is None:
+            raise ConfigError(f"{path}: unknown rule `{prefix}rules.{name}`")
+        if not isinstance(opts, dict):
+            raise ConfigError(f"{path}: `{prefix}rules.{name}` must be a table")
+        for okey, oval in opts.items():
+            if okey not in r.options:
+                known = ", ".join(sorted(r.options)) or "none"
+                raise ConfigError(
+                    f"{path}: unknown option `{prefix}rules.{name}.{okey}` (options: {known})"
+                )
+            default = r.options[okey]
+            int_for_float = isinstance(default, float) and isinstance(oval, int)
+            if default is not None and type(oval) is not type(default) and not int_for_float:
+                raise ConfigError(
+                    f"{path}: `{prefix}rules.{name}.{okey}` must be "
+                    f"{type(default).__name__}, not {type(oval).__name__}"
+                )
+        s.rule_options[r.name] = dict(opts)
+    return s
+
+
+def resolve_settings(paths: list[Path], config: Path | None) -> Settings:
+    """Settings from ``--config`` or from the nearest config file."""
+    if config is not None:
+        if not config.is_file():
+            raise ConfigError(f"{config}: config file not found")
+        return load_config(config)
+    start = paths[0] if paths else Path(".")
+    found = find_config(start)
+    if found is None:
+        return Settings(root=os.path.abspath(start if start.is_dir() else start.parent))
+    return load_config(found)

@@ -1,0 +1,87 @@
+"""Finding the files to lint: mission, fragment and behavior files under the given paths."""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from moos_lint.config import DEFAULT_EXCLUDE
+
+MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
+BHV_SUFFIXES = (".bhv",)
+SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
+
+
+def kind_of(path: str) -> str | None:
+    """``moos``, ``bhv`` or None, from the file name."""
+    low = path.lower()
+    if low.endswith(MOOS_SUFFIXES):
+        return "moos"
+    if low.endswith(BHV_SUFFIXES):
+        return "bhv"
+    return None
+
+
+@dataclass(slots=True)
+class Discovered:
+    files: list[str]  # absolute paths, sorted
+    missing: list[str]  # paths given on the command line that do not exist
+
+
+def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
+    for pat in patterns:
+        pat = pat.rstrip("/")
+        if fnmatch.fnmatch(name, pat) or fnmatch.fnmatch(rel, pat):
+            return True
+        if fnmatch.fnmatch(rel, pat + "/*"):
+            return True
+    return False
+
+
+def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
+    """Walk ``paths``; directories are searched, files given by name are always taken."""
+    patterns = [*DEFAULT_EXCLUDE, *exclude]
+    files: set[str] = set()
+    missing: list[str] = []
+    for given in paths:
+        p = os.path.abspath(given)
+        if not os.path.lexists(p):
+            missing.append(str(given))
+            continue
+        if not os.path.isdir(p):
+            files.add(p)
+            continue
+        seen_dirs: set[tuple[int, int]] = set()
+        for dirpath, dirnames, filenames in os.walk(p, followlinks=True):
+            try:
+                st = os.stat(dirpath)
+            except OSError:
+                dirnames[:] = []
+                continue
+            key = (st.st_dev, st.st_ino)
+            if key in seen_dirs:  # a symlink loop
+                dirnames[:] = []
+                continue
+            seen_dirs.add(key)
+            rel_dir = os.path.relpath(dirpath, root)
+            keep = []
+            for d in sorted(dirnames):
+                rel = os.path.normpath(os.path.join(rel_dir, d))
+                if _excluded(rel, d, patterns):
+                    continue
+                if kind_of(d) is not None:
+                    # A directory named like a mission file: report it, do not descend.
+                    files.add(os.path.join(dirpath, d))
+                    continue
+                keep.append(d)
+            dirnames[:] = keep
+            for f in filenames:
+                if kind_of(f) is None:
+                    continue
+                rel = os.path.normpath(os.path.join(rel_dir, f))
+                if _excluded(rel, f, patterns):
+                    continue
+                files.add(os.path.join(dirpath, f))
+    return Discovered(sorted(files), missing)

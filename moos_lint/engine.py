@@ -1,0 +1,250 @@
+"""The engine: files -> nsplug -> model -> rules -> diagnostics.
+
+It knows nothing of output formats. :func:`lint_paths` is what the CLI calls;
+:func:`lint_files` is the core, also usable on in-memory text (editors).
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+import traceback
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from moos_lint.config import Settings
+from moos_lint.diagnostics import Diagnostic, Fix, IncludeSite, Severity, Span
+from moos_lint.discovery import discover, kind_of
+from moos_lint.model import BehaviorFile, MoosFile
+from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor
+from moos_lint.parsers.bhv import parse_bhv
+from moos_lint.parsers.moos import parse_moos
+from moos_lint.registry import Kind, Rule, Scope, select_rules
+from moos_lint.source import ReadProblem, SourceFile
+from moos_lint.suppressions import Suppression, parse_suppressions
+
+INTERNAL_ERROR = "L900"
+
+
+@dataclass
+class Unit:
+    """One linted file: its expansion and its model."""
+
+    path: str
+    kind: Kind
+    expansion: Expansion
+    moos: MoosFile | None = None
+    bhv: BehaviorFile | None = None
+
+
+@dataclass
+class Context:
+    """What a rule's check function receives."""
+
+    rule: Rule
+    unit: Unit
+    settings: Settings
+    run: Run
+    options: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def path(self) -> str:
+        return self.unit.path
+
+    @property
+    def moos(self) -> MoosFile | None:
+        return self.unit.moos
+
+    @property
+    def bhv(self) -> BehaviorFile | None:
+        return self.unit.bhv
+
+    @property
+    def expansion(self) -> Expansion:
+        return self.unit.expansion
+
+    def report(
+        self,
+        span: Span,
+        message: str,
+        *,
+        line: Line | None = None,
+        chain: tuple[IncludeSite, ...] | None = None,
+        fix: Fix | None = None,
+        severity: Severity | None = None,
+    ) -> Diagnostic:
+        if chain is None:
+            chain = line.chain if line is not None else ()
+        return Diagnostic(
+            code=self.rule.code,
+            name=self.rule.name,
+            severity=severity or self.rule.severity,
+            span=span,
+            message=message,
+            chain=chain,
+            fix=fix,
+        )
+
+    def at_line(self, line: Line, message: str, **kw: Any) -> Diagnostic:
+        return self.report(line.span(), message, line=line, **kw)
+
+
+@dataclass
+class Result:
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    files: list[str] = field(default_factory=list)
+    internal_errors: int = 0
+    missing: list[str] = field(default_factory=list)
+    sources: dict[str, SourceFile] = field(default_factory=dict)
+
+
+class Run:
+    """State shared by every unit of one lint run."""
+
+    def __init__(self, settings: Settings, rules: list[Rule], cache: FileCache | None = None):
+        self.settings = settings
+        self.rules = rules
+        self.cache = cache or FileCache()
+        self.preprocessor = Preprocessor(
+            defines=settings.defines,
+            include_paths=settings.include_paths,
+            mode="lint",
+            cache=self.cache,
+        )
+        self.sources: dict[str, SourceFile] = {}
+        self.mission_files: set[str] = set()  # files analysed as part of a mission
+        self.included_elsewhere: set[str] = set()  # linted files that other files include
+        self.units: list[Unit] = []
+        self.suppressions: dict[str, list[Suppression]] = {}
+
+    def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
+        """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
+        for path, src in self.sources.items():
+            if path not in self.suppressions:
+                self.suppressions[path] = parse_suppressions(path, src.lines)
+        kept: list[Diagnostic] = []
+        for d in diags:
+            if d.code != INTERNAL_ERROR and self.file_ignored(d):
+                continue
+            hit = False
+            for sup in self.suppressions.get(d.span.path, ()):
+                sel = sup.covers(d)
+                if sel is not None:
+                    sup.used.add(sel)
+                    hit = True
+            if not hit:
+                kept.append(d)
+        return kept
+
+    def file_ignored(self, d: Diagnostic) -> bool:
+        return _per_file_ignored(d, self.settings)
+
+    def build_unit(self, path: str) -> Unit:
+        kind = Kind.BHV if kind_of(path) == "bhv" else Kind.MOOS
+        exp = self.preprocessor.expand(path)
+        self.sources.update(exp.sources)
+        unit = Unit(path=exp.path, kind=kind, expansion=exp)
+        if exp.read_problem is None:
+            if kind is Kind.MOOS:
+                unit.moos = parse_moos(exp)
+                if unit.moos.is_mission:
+                    self.mission_files.update(exp.sources)
+            else:
+                unit.bhv = parse_bhv(exp)
+        return unit
+
+    def run_rules(self, unit: Unit) -> tuple[list[Diagnostic], int]:
+        out: list[Diagnostic] = []
+        errors = 0
+        for r in self.rules:
+            if r.scope not in (Scope.FILE, Scope.MISSION) or unit.kind not in r.kinds:
+                continue
+            if unit.expansion.read_problem is not None and r.code != "R001":
+                continue
+            if r.scope is Scope.MISSION and not (unit.moos and unit.moos.is_mission):
+                continue
+            ctx = Context(r, unit, self.settings, self, self.settings.options_for(r.name))
+            try:
+                out.extend(r.check(ctx) or ())
+            except Exception as exc:  # a rule bug must not stop the run
+                errors += 1
+                out.append(internal_error(unit.path, r, exc))
+        return out, errors
+
+
+def internal_error(path: str, r: Rule, exc: BaseException) -> Diagnostic:
+    where = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
+    at = f" at {os.path.basename(where.filename)}:{where.lineno}" if where else ""
+    return Diagnostic(
+        code=INTERNAL_ERROR,
+        name="internal-error",
+        severity=Severity.ERROR,
+        span=Span(path, 1, 1),
+        message=f"internal error in rule {r.code} ({r.name}): {type(exc).__name__}: {exc}{at}; "
+        "please report it",
+    )
+
+
+def lint_files(
+    files: list[str], settings: Settings, rules: list[Rule] | None = None, cache=None
+) -> Result:
+    """Lint the given files with the given settings."""
+    if rules is None:
+        rules = select_rules(settings.select, settings.extend_select, settings.ignore)
+    run = Run(settings, rules, cache)
+    result = Result(files=list(files))
+    for path in files:
+        run.units.append(run.build_unit(path))
+    for unit in run.units:
+        run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
+    found: dict[tuple, Diagnostic] = {}
+    for unit in run.units:
+        diags, errors = run.run_rules(unit)
+        result.internal_errors += errors
+        for d in diags:
+            found.setdefault(d.identity, d)
+    kept = run.suppress(found.values())
+    for r in rules:
+        if r.scope is Scope.PROJECT:
+            ctx = Context(r, _empty_unit(), settings, run, settings.options_for(r.name))
+            try:
+                kept.extend(d for d in r.check(ctx) or () if not run.file_ignored(d))
+            except Exception as exc:
+                result.internal_errors += 1
+                kept.append(internal_error(files[0] if files else ".", r, exc))
+    kept.sort(key=lambda d: d.sort_key)
+    result.diagnostics = kept
+    result.sources = run.sources
+    return result
+
+
+def _empty_unit() -> Unit:
+    return Unit(path=".", kind=Kind.MOOS, expansion=Expansion(path="."))
+
+
+def _per_file_ignored(d: Diagnostic, settings: Settings) -> bool:
+    if not settings.per_file_ignores:
+        return False
+    rel = os.path.relpath(d.span.path, settings.root)
+    from moos_lint.registry import get_rule, matches
+
+    r = get_rule(d.code)
+    for glob, selectors in settings.per_file_ignores.items():
+        hit = fnmatch.fnmatch(rel, glob) or fnmatch.fnmatch(os.path.basename(rel), glob)
+        if hit and r is not None and any(matches(s, r) for s in selectors):
+            return True
+    return False
+
+
+def lint_paths(paths: Iterable[Path], settings: Settings) -> Result:
+    """Discover files under ``paths`` and lint them."""
+    paths = list(paths) or [Path(".")]
+    found = discover(paths, settings.exclude, settings.root)
+    result = lint_files(found.files, settings)
+    result.missing = found.missing
+    return result
+
+
+__all__ = ["Context", "ReadProblem", "Result", "Run", "Unit", "lint_files", "lint_paths"]

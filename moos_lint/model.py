@@ -1,0 +1,255 @@
+"""The model the rules look at: mission files, their blocks and launches, behavior files.
+
+Parsers build these objects from preprocessed lines; rules only read them.
+Every node keeps the :class:`~moos_lint.nsplug.Line` it came from, so any
+finding maps back to the file and line the user edits.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from moos_lint.diagnostics import Span
+from moos_lint.nsplug import Expansion, Line
+
+#: Keys every MOOS app reads from the top of a mission file (CMOOSApp, MOOSDB, pAntler).
+GLOBAL_KEYS = {
+    "serverhost": "ServerHost",
+    "serverport": "ServerPort",
+    "community": "Community",
+    "moostimewarp": "MOOSTimeWarp",
+    "latorigin": "LatOrigin",
+    "longorigin": "LongOrigin",
+}
+
+
+def has_macro(text: str) -> bool:
+    """True when ``text`` still holds an unexpanded nsplug macro."""
+    return "$(" in text or "%(" in text
+
+
+@dataclass(slots=True)
+class Param:
+    """A ``key = value`` line. Positions are indices into ``line.text``."""
+
+    key: str
+    value: str
+    line: Line
+    key_start: int
+    value_start: int
+    value_end: int
+    block: Block | None = None
+
+    @property
+    def lkey(self) -> str:
+        """The key as MOOS compares it: spaces removed, case folded."""
+        return "".join(self.key.split()).lower()
+
+    @property
+    def key_span(self) -> Span:
+        return self.line.span(self.key_start, self.key_start + len(self.key))
+
+    @property
+    def value_span(self) -> Span:
+        return self.line.span(self.value_start, self.value_end)
+
+    @property
+    def span(self) -> Span:
+        return self.line.span(self.key_start, self.value_end)
+
+
+@dataclass(slots=True)
+class Block:
+    """``ProcessConfig = NAME`` followed by ``{ ... }``."""
+
+    name: str
+    header: Line | None  # None for an orphan ``{ ... }``
+    name_start: int = 0
+    open: Line | None = None
+    close: Line | None = None
+    params: list[Param] = field(default_factory=list)
+    brace_on_header: bool = False
+
+    @property
+    def lname(self) -> str:
+        return self.name.lower()
+
+    @property
+    def name_span(self) -> Span:
+        line = self.header or self.open
+        assert line is not None
+        if self.header is None:
+            return line.span()
+        return line.span(self.name_start, self.name_start + len(self.name))
+
+    def get(self, key: str) -> list[Param]:
+        k = key.lower()
+        return [p for p in self.params if p.lkey == k]
+
+
+@dataclass(slots=True)
+class RunLine:
+    """An Antler ``Run = BINARY @ OPTIONS ~ ALIAS`` line."""
+
+    param: Param
+    binary: str
+    has_at: bool
+    options: dict[str, str]
+    alias: str | None
+    alias_from_params: str | None = None  # ``--alias=`` given through ExtraProcessParams
+
+    @property
+    def name(self) -> str:
+        """The MOOS name the process connects as, and the block it reads."""
+        if self.alias_from_params:
+            return self.alias_from_params
+        if self.alias:
+            return self.alias
+        return self.binary.replace("\\", "/").rsplit("/", 1)[-1]
+
+    def _find(self, text: str, after: int = 0) -> Span:
+        line = self.param.line
+        idx = line.text.find(text, self.param.value_start + after) if text else -1
+        if idx < 0:
+            return self.param.value_span
+        return line.span(idx, idx + len(text))
+
+    @property
+    def binary_span(self) -> Span:
+        return self._find(self.binary.strip())
+
+    @property
+    def name_span(self) -> Span:
+        if self.alias and not self.alias_from_params:
+            tilde = self.param.line.text.find("~", self.param.value_start)
+            return self._find(self.alias, max(0, tilde - self.param.value_start))
+        return self.binary_span
+
+
+@dataclass(slots=True)
+class MoosFile:
+    """A ``.moos`` file (or fragment) after nsplug, as MOOS would read it."""
+
+    path: str
+    expansion: Expansion
+    lines: list[Line] = field(default_factory=list)
+    globals: list[Param] = field(default_factory=list)
+    blocks: list[Block] = field(default_factory=list)
+    orphan_blocks: list[Block] = field(default_factory=list)
+    unclosed_blocks: list[Block] = field(default_factory=list)
+    headers_without_block: list[Line] = field(default_factory=list)
+    stray_closers: list[Line] = field(default_factory=list)
+    malformed: list[Line] = field(default_factory=list)
+
+    def blocks_named(self, name: str) -> list[Block]:
+        n = name.lower()
+        return [b for b in self.blocks if b.lname == n]
+
+    @property
+    def antler_blocks(self) -> list[Block]:
+        return self.blocks_named("ANTLER")
+
+    @property
+    def is_mission(self) -> bool:
+        """A mission launches processes: it has an ANTLER block."""
+        return bool(self.antler_blocks)
+
+    @property
+    def runs(self) -> list[RunLine]:
+        from moos_lint.parsers.moos import antler_runs
+
+        return [run for block in self.antler_blocks for run in antler_runs(block)]
+
+    def global_values(self, key: str) -> list[Param]:
+        k = key.lower()
+        return [p for p in self.globals if p.lkey == k]
+
+    @property
+    def all_params(self) -> list[Param]:
+        out = list(self.globals)
+        for b in self.blocks:
+            out.extend(b.params)
+        return out
+
+
+# --------------------------------------------------------------------- behaviors
+@dataclass(slots=True)
+class BhvParam:
+    key: str
+    value: str
+    line: Line
+    key_start: int
+    value_start: int
+    value_end: int
+
+    @property
+    def lkey(self) -> str:
+        """As the helm compares it: lower case, a leading ``_`` ignored."""
+        return self.key.lower().lstrip("_")
+
+    @property
+    def key_span(self) -> Span:
+        return self.line.span(self.key_start, self.key_start + len(self.key))
+
+    @property
+    def value_span(self) -> Span:
+        return self.line.span(self.value_start, self.value_end)
+
+
+@dataclass(slots=True)
+class Behavior:
+    kind: str
+    header: Line
+    kind_start: int
+    params: list[BhvParam] = field(default_factory=list)
+    closed: bool = False
+
+    @property
+    def kind_span(self) -> Span:
+        return self.header.span(self.kind_start, self.kind_start + len(self.kind))
+
+    def get(self, key: str) -> list[BhvParam]:
+        k = key.lower()
+        return [p for p in self.params if p.lkey == k]
+
+    @property
+    def name(self) -> BhvParam | None:
+        for p in self.params:
+            if p.lkey in ("name", "descriptor"):
+                return p
+        return None
+
+
+@dataclass(slots=True)
+class Initialize:
+    var: str
+    value: str
+    line: Line
+    deferred: bool
+    var_start: int
+
+    @property
+    def var_span(self) -> Span:
+        return self.line.span(self.var_start, self.var_start + len(self.var))
+
+
+@dataclass(slots=True)
+class SetBlock:
+    mode_var: str
+    value: str
+    header: Line
+    conditions: list[tuple[str, Line]] = field(default_factory=list)
+    else_value: str | None = None
+
+
+@dataclass(slots=True)
+class BehaviorFile:
+    path: str
+    expansion: Expansion
+    lines: list[Line] = field(default_factory=list)
+    behaviors: list[Behavior] = field(default_factory=list)
+    initializes: list[Initialize] = field(default_factory=list)
+    sets: list[SetBlock] = field(default_factory=list)
+    #: lines the helm rejects (the whole behavior set then fails), with the reason
+    invalid: list[tuple[Line, str]] = field(default_factory=list)
+    unclosed: list[Line] = field(default_factory=list)

@@ -1,0 +1,554 @@
+"""nsplug preprocessing, as nsplug does it, with a source map.
+
+nsplug (MOOS-IvP's mission preprocessor) handles ``#include``, ``#define``,
+``#ifdef``/``#ifndef``/``#elseifdef``/``#else``/``#endif`` and ``$(NAME)`` /
+``%(NAME)`` macros. This module reproduces it in two modes:
+
+``lint``
+    What the linter uses. A macro that is neither ``#define``-d in the files nor
+    given by the user is *unknown* (the launch script usually sets it): ``$(X)``
+    stays in the text, and a condition that depends on it is unknown, so every
+    branch of that ``#ifdef`` is kept. Each kept line records the branches it
+    sits in, so that two lines in mutually exclusive branches never conflict.
+
+``nsplug``
+    What ``moos-lint expand`` prints: an undefined macro is undefined, exactly
+    one branch is taken, and a line with a macro left over is left unexpanded
+    (as nsplug does without ``--lenient``).
+
+Every output :class:`Line` maps back to its file and line, with the chain of
+``#include`` lines that led to it. Problems (a missing include, an include
+loop, an unknown directive, ...) are recorded as :class:`Problem` facts; the
+rules decide what to report.
+"""
+
+from __future__ import annotations
+
+import difflib
+import itertools
+import os
+import re
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from moos_lint.diagnostics import IncludeSite, Span
+from moos_lint.source import ReadProblem, SourceFile, read_source
+
+DIRECTIVES = ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif", "#include", "#define")
+#: A macro whose value depends on the branch taken: its value is unknown.
+UNKNOWN = object()
+#: nsplug's value for ``#define NAME`` with no value.
+DEFINED = "<defined>"
+MAX_INCLUDE_DEPTH = 2000
+MAX_SUBS_PER_LINE = 100
+
+_MACRO_DEFAULT = re.compile(r"([$%])\(([^()=:$%]+?)(:?=)([^()]*)\)")
+_MACRO_REF = re.compile(r"[$%]\(([^()]*)\)")
+_TAG_LINE = re.compile(r"^\s*<tag>\s*<([^<>]*)>")
+_INCLUDE_TAG = re.compile(r"^(.*?)\s*<([^<>]+)>\s*$")
+_DIRECTIVE_LIKE = re.compile(r"^\s*(#+\s*)([A-Za-z]+)")
+
+
+@dataclass(slots=True)
+class Line:
+    """One line of preprocessed text, mapped back to where it was written."""
+
+    text: str  # after macro expansion
+    raw: str  # as written in the file
+    path: str
+    lineno: int
+    chain: tuple[IncludeSite, ...] = ()
+    branches: tuple[tuple[int, int], ...] = ()
+
+    def span(self, start: int = 0, end: int | None = None) -> Span:
+        """The span of ``text[start:end]``, mapped to the written line."""
+        if end is None:
+            end = len(self.text.rstrip())
+            if start == 0:
+                start = len(self.text) - len(self.text.lstrip())
+        if self.text == self.raw:
+            return Span(self.path, self.lineno, start + 1, self.lineno, end + 1)
+        piece = self.text[start:end].strip()
+        idx = self.raw.find(piece) if piece else -1
+        if idx >= 0:
+            return Span(self.path, self.lineno, idx + 1, self.lineno, idx + len(piece) + 1)
+        return Span(self.path, self.lineno, 1, self.lineno, len(self.raw) + 1)
+
+    def excludes(self, other: Line) -> bool:
+        """True when the two lines sit in different branches of one ``#ifdef``."""
+        if not self.branches or not other.branches:
+            return False
+        mine = dict(self.branches)
+        return any(g in mine and mine[g] != b for g, b in other.branches)
+
+
+@dataclass(slots=True)
+class Problem:
+    """Something nsplug gets wrong, rejects or silently lets through."""
+
+    kind: str
+    span: Span
+    message: str
+    chain: tuple[IncludeSite, ...] = ()
+
+
+@dataclass(slots=True)
+class Expansion:
+    """The result of preprocessing one top-level file."""
+
+    path: str
+    lines: list[Line] = field(default_factory=list)
+    problems: list[Problem] = field(default_factory=list)
+    sources: dict[str, SourceFile] = field(default_factory=dict)
+    #: an include could not be followed (unresolved macro in its path, or missing)
+    incomplete: bool = False
+    read_problem: ReadProblem | None = None
+
+
+@dataclass(slots=True)
+class _Frame:
+    kind: str  # "ifdef" | "ifndef"
+    group: int
+    branch: int
+    state: str  # "T" | "F" | "U": the current branch's truth
+    matched: bool  # an earlier branch was certainly taken
+    line: Line
+    seen_else: bool = False
+    any_unknown: bool = False  # some branch so far was unknown
+
+
+@dataclass(slots=True)
+class _Work:
+    """A file being expanded, on the include stack."""
+
+    src: SourceFile
+    tag: str | None
+    chain: tuple[IncludeSite, ...]
+    outer: tuple[tuple[int, int], ...]
+    uncertain: bool
+    idx: int = 0
+    in_tag: bool = False
+    frames: list[_Frame] = field(default_factory=list)
+
+
+class FileCache:
+    """Reads each file at most once per run."""
+
+    def __init__(self, reader: Callable[[Path], SourceFile | ReadProblem] = read_source):
+        self._reader = reader
+        self._cache: dict[str, SourceFile | ReadProblem] = {}
+
+    def get(self, path: str) -> SourceFile | ReadProblem:
+        hit = self._cache.get(path)
+        if hit is None:
+            hit = self._reader(Path(path))
+            self._cache[path] = hit
+        return hit
+
+
+def _norm(path: str | Path) -> str:
+    return os.path.normpath(os.path.abspath(path))
+
+
+class Preprocessor:
+    """Expands a file with nsplug's semantics. One instance may expand many files."""
+
+    def __init__(
+        self,
+        defines: dict[str, str] | None = None,
+        include_paths: list[str | Path] | None = None,
+        mode: str = "lint",
+        cache: FileCache | None = None,
+    ) -> None:
+        if mode not in ("lint", "nsplug"):
+            raise ValueError(f"unknown mode {mode!r}")
+        self.defines = dict(defines or {})
+        self.include_paths = [_norm(p) for p in include_paths or []]
+        self.mode = mode
+        self.lenient = False  # nsplug --lenient: partial expansion in nsplug mode
+        self.cache = cache or FileCache()
+        self._groups = itertools.count(1)
+
+    # ------------------------------------------------------------------ macros
+    def expand_macros(self, text: str, macros: dict) -> str:
+        """Apply macros to one line, as ``applyMacrosToLine`` does."""
+        if "(" not in text:
+            return text
+        original = text
+        subs = 0
+        while subs <= MAX_SUBS_PER_LINE:
+            changed = False
+            for ref in _MACRO_REF.finditer(text):
+                name = ref.group(1)
+                value = macros.get(name)
+                if value is None or value is UNKNOWN:
+                    continue
+                value = "" if value == DEFINED else value
+                if ref.group(0)[0] == "%":
+                    value = value.upper()
+                text = text[: ref.start()] + value + text[ref.end() :]
+                changed = True
+                subs += 1
+                break
+            if not changed:
+                break
+        text = _MACRO_DEFAULT.sub(lambda m: self._default(m, macros), text)
+        if self.mode == "nsplug" and not self.lenient and ("$(" in text or "%(" in text):
+            return original
+        return text
+
+    def _default(self, m: re.Match, macros: dict) -> str:
+        sigil, name, op, default = m.groups()
+        value = macros.get(name)
+        if value is UNKNOWN:
+            return m.group(0)
+        if value is None or (op == ":=" and value in ("", DEFINED)):
+            value = default
+        value = "" if value == DEFINED else value
+        return value.upper() if sigil == "%" else value
+
+    # -------------------------------------------------------------- conditions
+    def _value_state(self, name: str, macros: dict) -> object:
+        """The macro's value, ``None`` when undefined, UNKNOWN when unknown."""
+        if name in macros:
+            return macros[name]
+        return UNKNOWN if self.mode == "lint" else None
+
+    def _eval_term(self, term: str, macros: dict, conj: bool) -> str:
+        term = term.strip()
+        name, _, want = term.partition(" ")
+        want = want.strip()
+        value = self._value_state(name, macros)
+        if value is UNKNOWN:
+            return "U"
+        if not want:
+            if conj:
+                return "T" if value is not None else "F"
+            return "T" if value not in (None, "") else "F"
+        if value is None:
+            return "F"
+        if value == want:
+            return "T"
+        other = macros.get(want)
+        if other is UNKNOWN:
+            return "U"
+        return "T" if other is not None and other == value else "F"
+
+    def eval_ifdef(self, rest: str, macros: dict) -> str:
+        disj, conj = "||" in rest, "&&" in rest
+        if disj and conj:
+            return "F"
+        if conj:
+            states = [self._eval_term(t, macros, True) for t in rest.split("&&")]
+            if "F" in states:
+                return "F"
+            return "T" if all(s == "T" for s in states) else "U"
+        states = [self._eval_term(t, macros, False) for t in rest.split("||")]
+        if "T" in states:
+            return "T"
+        return "F" if all(s == "F" for s in states) else "U"
+
+    def eval_ifndef(self, rest: str, macros: dict) -> str:
+        states = []
+        for name in rest.split():
+            value = self._value_state(name, macros)
+            if value is UNKNOWN:
+                states.append("U")
+            else:
+                states.append("T" if value in (None, "") else "F")
+        if "F" in states:
+            return "F"
+        return "T" if all(s == "T" for s in states) else "U"
+
+    # ---------------------------------------------------------------- includes
+    def resolve_include(self, name: str, top_dir: str, including_dir: str) -> str | None:
+        """nsplug's search: its working folder, then ``--path`` folders, then the includer's."""
+        if os.path.isabs(name):
+            return _norm(name) if os.path.exists(name) else None
+        for folder in (top_dir, *self.include_paths, including_dir):
+            candidate = os.path.join(folder, name)
+            if os.path.exists(candidate):
+                return _norm(candidate)
+        return None
+
+    # ------------------------------------------------------------------ expand
+    def expand(self, path: str | Path, macros: dict | None = None) -> Expansion:
+        path = _norm(path)
+        exp = Expansion(path=path)
+        src = self.cache.get(path)
+        if isinstance(src, ReadProblem):
+            exp.read_problem = src
+            return exp
+        env: dict = dict(self.defines) if macros is None else macros
+        top_dir = os.path.dirname(path)
+        self._expand_file(exp, src, env, top_dir, chain=(), tag=None, uncertain=False)
+        return exp
+
+    def _expand_file(
+        self,
+        exp: Expansion,
+        src: SourceFile,
+        macros: dict,
+        top_dir: str,
+        chain: tuple[IncludeSite, ...],
+        tag: str | None,
+        uncertain: bool,
+    ) -> None:
+        """Expand one file. Includes are followed with an explicit work stack."""
+        stack = [_Work(src, tag, chain, (), uncertain)]
+        while stack:
+            work = stack[-1]
+            src = work.src
+            path = str(src.path)
+            exp.sources.setdefault(path, src)
+            if work.idx >= len(src.lines):
+                self._close_file(exp, work.frames)
+                stack.pop()
+                continue
+            raw = src.lines[work.idx]
+            work.idx += 1
+            here = Line(raw, raw, path, work.idx, work.chain)
+            frames = work.frames
+
+            tag_match = _TAG_LINE.match(raw)
+            if tag_match:  # <tag> lines are never written out
+                work.in_tag = tag_match.group(1).strip() == work.tag
+                continue
+            if work.tag is not None:
+                # Inside a tagged section nsplug skips lines starting with '#'.
+                if work.in_tag and not raw.lstrip().startswith("#"):
+                    exp.lines.append(self._out_line(here, macros, frames, work.outer))
+                continue
+
+            squeezed = raw.replace("\t", " ").strip()
+            left, _, rest = squeezed.partition(" ")
+            rest = rest.strip()
+
+            if left in ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif"):
+                self._conditional(exp, here, left, rest, frames, macros)
+                continue
+            if not self._active(frames):
+                continue
+            branch_uncertain = work.uncertain or any(f.state == "U" for f in frames)
+            if left == "#define":
+                self._define(exp, here, rest, macros, branch_uncertain)
+                continue
+            if left == "#include":
+                child = self._include(exp, here, rest, macros, top_dir, work.chain)
+                if child is not None:
+                    csrc, ctag = child
+                    cchain = (*work.chain, IncludeSite(path, here.lineno))
+                    if len(cchain) > MAX_INCLUDE_DEPTH:
+                        self._problem(
+                            exp,
+                            "include-cycle",
+                            here,
+                            f"includes are nested more than {MAX_INCLUDE_DEPTH} deep",
+                        )
+                        continue
+                    outer = self._branches(frames, work.outer)
+                    stack.append(_Work(csrc, ctag, cchain, outer, branch_uncertain))
+                continue
+            if raw.lstrip().startswith("#"):
+                self._unknown_directive(exp, here)
+            exp.lines.append(self._out_line(here, macros, frames, work.outer))
+
+    def _conditional(
+        self,
+        exp: Expansion,
+        here: Line,
+        left: str,
+        rest: str,
+        frames: list[_Frame],
+        macros: dict,
+    ) -> None:
+        if left in ("#ifdef", "#ifndef"):
+            if not rest:
+                self._problem(exp, "malformed-directive", here, f"`{left}` needs a macro name")
+            self._check_condition(exp, here, left, rest)
+            if left == "#ifdef":
+                state = self.eval_ifdef(rest, macros)
+            else:
+                state = self.eval_ifndef(rest, macros)
+            frame = _Frame(left[1:], next(self._groups), 0, state, state == "T", here)
+            frame.any_unknown = state == "U"
+            frames.append(frame)
+            return
+        if not frames:
+            what = "`#endif` without an open `#ifdef` or `#ifndef`"
+            if left != "#endif":
+                what = f"`{left}` without an open `#ifdef`"
+            self._problem(exp, "unbalanced-conditional", here, what + ": nsplug stops here")
+            return
+        top = frames[-1]
+        if left == "#endif":
+            frames.pop()
+            return
+        if top.seen_else:
+            self._problem(exp, "unbalanced-conditional", here, f"`{left}` after `#else`")
+        if left == "#elseifdef":
+            if top.kind == "ifndef":
+                self._problem(
+                    exp,
+                    "unbalanced-conditional",
+                    here,
+                    "`#elseifdef` after `#ifndef`: nsplug stops with 'Dangling #elseifdef'",
+                )
+            self._check_condition(exp, here, left, rest)
+            top.branch += 1
+            if top.matched:
+                top.state = "F"
+            else:
+                top.state = self.eval_ifdef(rest, macros)
+                top.matched = top.state == "T"
+                top.any_unknown = top.any_unknown or top.state == "U"
+            return
+        # #else
+        top.seen_else = True
+        top.branch += 1
+        if top.matched:
+            top.state = "F"
+        elif top.any_unknown:
+            top.state = "U"
+        else:
+            top.state = "T"
+            top.matched = True
+
+    # ---------------------------------------------------------------- helpers
+    @staticmethod
+    def _active(frames: list[_Frame]) -> bool:
+        return all(f.state != "F" for f in frames)
+
+    @staticmethod
+    def _branches(frames: list[_Frame], outer: tuple) -> tuple[tuple[int, int], ...]:
+        return (*outer, *((f.group, f.branch) for f in frames))
+
+    def _out_line(self, here: Line, macros: dict, frames: list[_Frame], outer: tuple) -> Line:
+        here.text = self.expand_macros(here.raw, macros)
+        here.branches = self._branches(frames, outer)
+        return here
+
+    @staticmethod
+    def _problem(exp: Expansion, kind: str, line: Line, message: str) -> None:
+        exp.problems.append(Problem(kind, line.span(), message, line.chain))
+
+    def _check_condition(self, exp: Expansion, here: Line, left: str, rest: str) -> None:
+        if "//" in rest:
+            self._problem(
+                exp,
+                "comment-in-condition",
+                here,
+                f"`{left}` reads the `//` comment as part of its condition: `{rest}`",
+            )
+        if left != "#ifndef" and "||" in rest and "&&" in rest:
+            self._problem(
+                exp,
+                "mixed-and-or",
+                here,
+                f"`{left}` mixes `||` and `&&`: nsplug evaluates it as false",
+            )
+
+    def _define(self, exp: Expansion, here: Line, rest: str, macros: dict, uncertain: bool):
+        rest = " ".join(rest.split())
+        name, _, value = rest.partition(" ")
+        if len(name) > 3 and name.startswith("$(") and name.endswith(")"):
+            name = name[2:-1]
+        if not name:
+            self._problem(exp, "malformed-directive", here, "`#define` needs a macro name")
+            return
+        macros[name] = UNKNOWN if uncertain else (value or DEFINED)
+
+    def _include(
+        self,
+        exp: Expansion,
+        here: Line,
+        rest: str,
+        macros: dict,
+        top_dir: str,
+        chain: tuple[IncludeSite, ...],
+    ) -> tuple[SourceFile, str | None] | None:
+        target = self.expand_macros(rest, macros).strip()
+        tag = None
+        m = _INCLUDE_TAG.match(target)
+        if m:
+            target, tag = m.group(1).strip(), m.group(2).strip()
+        if len(target) >= 2 and target[0] == target[-1] and target[0] in "\"'":
+            target = target[1:-1]
+        if not target:
+            self._problem(exp, "malformed-directive", here, "`#include` needs a file name")
+            return None
+        if "$(" in target or "%(" in target:
+            exp.incomplete = True
+            return None
+        including_dir = os.path.dirname(here.path)
+        found = self.resolve_include(target, top_dir, including_dir)
+        if found is None:
+            exp.incomplete = True
+            self._problem(exp, "include-not-found", here, f"included file `{target}` not found")
+            return None
+        if found == here.path or any(found == site.path for site in chain):
+            self._problem(
+                exp,
+                "include-cycle",
+                here,
+                f"`{target}` includes itself through this line (nsplug crashes on include loops)",
+            )
+            return None
+        src = self.cache.get(found)
+        if isinstance(src, ReadProblem):
+            exp.incomplete = True
+            self._problem(exp, "include-not-found", here, f"included file `{target}` {src.message}")
+            return None
+        if tag is not None and not any(
+            (m := _TAG_LINE.match(ln)) and m.group(1).strip() == tag for ln in src.lines
+        ):
+            self._problem(
+                exp,
+                "unknown-include-tag",
+                here,
+                f"`{target}` has no `<tag><{tag}>` section: nothing is included",
+            )
+            return None
+        return src, tag
+
+    def _unknown_directive(self, exp: Expansion, here: Line) -> bool:
+        """Report a line meant as a directive that nsplug does not recognise."""
+        m = _DIRECTIVE_LIKE.match(here.raw)
+        if m is None:
+            return False
+        word = m.group(2).lower()
+        if word == "elseifndef":
+            hint = "nsplug has no `#elseifndef`"
+        else:
+            known = [d for d in DIRECTIVES if d[1:] == word]
+            if not known:
+                close = difflib.get_close_matches("#" + word, DIRECTIVES, n=1, cutoff=0.75)
+                if not close:
+                    return False  # a '#' line, not a directive: the not-a-comment rule's job
+                known = close
+            hint = f"did you mean `{known[0]}`?"
+        self._problem(
+            exp,
+            "unknown-directive",
+            here,
+            f"`{m.group(0).strip()}` is not an nsplug directive (nsplug passes the line on "
+            f"as text): {hint}",
+        )
+        return True
+
+    def _close_file(self, exp: Expansion, frames: list[_Frame]) -> None:
+        for frame in frames:
+            self._problem(
+                exp,
+                "unclosed-conditional",
+                frame.line,
+                f"`#{frame.kind}` is never closed by `#endif`: nsplug silently drops "
+                "every line after it",
+            )
+        frames.clear()
+
+
+def expand_text(exp: Expansion) -> str:
+    """The expanded text, one output line per kept line."""
+    return "".join(line.text + "\n" for line in exp.lines)

@@ -1,0 +1,23 @@
+"""Output formats. Each format module has ``render(result, cwd) -> str``."""
+
+from __future__ import annotations
+
+import importlib
+import os
+
+FORMATS = ("text", "json")
+
+
+def display_path(path: str, cwd: str | None = None) -> str:
+    """``path`` relative to the working directory when it is under it."""
+    cwd = cwd or os.getcwd()
+    try:
+        rel = os.path.relpath(path, cwd)
+    except ValueError:
+        return path
+    return path if rel.startswith("..") else rel
+
+
+def render(fmt: str, result, cwd: str | None = None, **kw) -> str:
+    module = importlib.import_module(f"moos_lint.output.{fmt}_format")
+    return module.render(result, cwd or os.getcwd(), **kw)

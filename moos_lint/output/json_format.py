@@ -1,0 +1,47 @@
+"""JSON output: an array of findings in a deterministic order."""
+
+from __future__ import annotations
+
+import json
+
+from moos_lint.diagnostics import Diagnostic
+from moos_lint.output import display_path
+
+
+def to_dict(d: Diagnostic, cwd: str) -> dict:
+    s = d.span
+    fix = None
+    if d.fix is not None:
+        fix = {
+            "message": d.fix.message,
+            "edits": [
+                {
+                    "path": display_path(e.span.path, cwd),
+                    "line": e.span.line,
+                    "column": e.span.col,
+                    "end_line": e.span.end_line,
+                    "end_column": e.span.end_col,
+                    "content": e.text,
+                }
+                for e in d.fix.edits
+            ],
+        }
+    return {
+        "code": d.code,
+        "name": d.name,
+        "severity": d.severity.value,
+        "path": display_path(s.path, cwd),
+        "line": s.line,
+        "column": s.col,
+        "end_line": s.end_line,
+        "end_column": s.end_col,
+        "message": d.message,
+        "fix": fix,
+        "include_chain": [
+            {"path": display_path(site.path, cwd), "line": site.line} for site in d.chain
+        ],
+    }
+
+
+def render(result, cwd: str, **_kw) -> str:
+    return json.dumps([to_dict(d, cwd) for d in result.diagnostics], indent=2) + "\n"

@@ -1,0 +1,52 @@
+"""Human-readable output: a header line, the source line with a caret, the include chain."""
+
+from __future__ import annotations
+
+from collections import Counter
+
+from moos_lint.output import display_path
+
+MAX_EXCERPT = 160
+
+
+def _excerpt(text: str, col: int, end_col: int, end_line_same: bool) -> tuple[str, str]:
+    text = text.replace("\t", " ")
+    start = max(col - 1, 0)
+    width = max((end_col - col) if end_line_same else len(text) - start, 1)
+    if len(text) > MAX_EXCERPT:
+        lo = max(0, start - 40)
+        text = ("…" if lo else "") + text[lo : lo + MAX_EXCERPT] + "…"
+        start = start - lo + (1 if lo else 0)
+        width = min(width, MAX_EXCERPT - start + 1)
+    return text, " " * start + "^" * max(1, min(width, len(text) - start if text else 1))
+
+
+def render(result, cwd: str, *, statistics: bool = False, quiet: bool = False, **_kw) -> str:
+    out: list[str] = []
+    for d in result.diagnostics:
+        s = d.span
+        path = display_path(s.path, cwd)
+        out.append(f"{path}:{s.line}:{s.col}: {d.code} [{d.name}] {d.message}")
+        src = result.sources.get(s.path)
+        if src is not None and 1 <= s.line <= len(src.lines):
+            text, caret = _excerpt(src.lines[s.line - 1], s.col, s.end_col, s.end_line == s.line)
+            num = str(s.line)
+            pad = " " * len(num)
+            out.append(f"  {pad} |")
+            out.append(f"  {num} | {text}")
+            out.append(f"  {pad} | {caret}")
+        for site in reversed(d.chain):
+            out.append(f"  = included from {display_path(site.path, cwd)}:{site.line}")
+        out.append("")
+    if statistics:
+        counts = Counter((d.code, d.name) for d in result.diagnostics)
+        for (code, name), n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
+            out.append(f"{n:6d}  {code}  {name}")
+    if not quiet:
+        n = len(result.diagnostics)
+        files = len(result.files)
+        if n:
+            out.append(f"Found {n} finding{'s' if n != 1 else ''} in {files} file(s).")
+        else:
+            out.append(f"All checks passed ({files} file(s)).")
+    return "\n".join(out) + ("\n" if out else "")

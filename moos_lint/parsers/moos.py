@@ -1,0 +1,161 @@
+"""The ``.moos`` reader, as CMOOSFileReader, CProcessConfigReader and pAntler read files.
+
+- ``//`` starts a comment and nothing else does (``#Run = pX`` is a live line
+  with the key ``#Run``); only the first pair of double quotes protects a ``//``.
+- Keys and ProcessConfig names compare without regard to case or spaces.
+- ``ProcessConfig = NAME`` must be followed by a line that starts with ``{``;
+  the first line that starts with ``}`` ends the block.
+"""
+
+from __future__ import annotations
+
+from moos_lint.model import Block, MoosFile, Param, RunLine
+from moos_lint.nsplug import Expansion, Line
+
+
+def strip_comment(text: str) -> str:
+    """Cut a trailing ``//`` comment; the first ``"..."`` pair protects its content."""
+    cut = text.find("//")
+    if cut < 0:
+        return text
+    q1 = text.find('"')
+    if q1 != -1 and q1 < cut:
+        q2 = text.find('"', q1 + 1)
+        if q2 != -1 and q2 > cut:
+            nxt = text.find("//", q2 + 1)
+            return text if nxt < 0 else text[:nxt]
+    return text[:cut]
+
+
+def is_comment(text: str) -> bool:
+    return text.lstrip().startswith("//")
+
+
+def split_param(line: Line) -> Param | None:
+    """``key = value`` on one line, or None when the line has no ``=``."""
+    text = strip_comment(line.text)
+    eq = text.find("=")
+    if eq < 0:
+        return None
+    key_part = text[:eq]
+    key = key_part.strip()
+    key_start = len(key_part) - len(key_part.lstrip())
+    rest = text[eq + 1 :]
+    value = rest.strip()
+    value_start = eq + 1 + (len(rest) - len(rest.lstrip()))
+    return Param(key, value, line, key_start, value_start, value_start + len(value))
+
+
+def _header_name(param: Param) -> tuple[str, bool] | None:
+    """The block name when ``param`` is a ``ProcessConfig = NAME`` header."""
+    if param.lkey != "processconfig":
+        return None
+    value = param.value
+    brace = "{" in value
+    if brace:
+        value = value.split("{", 1)[0]
+    return "".join(value.split()), brace
+
+
+def parse_moos(expansion: Expansion) -> MoosFile:
+    """Build the model of one preprocessed ``.moos`` file."""
+    mf = MoosFile(path=expansion.path, expansion=expansion, lines=expansion.lines)
+    current: Block | None = None  # the open block
+    pending: Block | None = None  # a header waiting for its "{"
+    for line in expansion.lines:
+        stripped = line.text.strip()
+        if not stripped or stripped.startswith("//"):
+            continue
+        if pending is not None:
+            if stripped.startswith("{"):
+                pending.open = line
+                current, pending = pending, None
+                continue
+            mf.headers_without_block.append(pending.header)  # type: ignore[arg-type]
+            pending = None
+        if stripped.startswith("}"):
+            if current is None:
+                mf.stray_closers.append(line)
+            else:
+                current.close = line
+                current = None
+            continue
+        if stripped.startswith("{"):
+            if current is not None:
+                mf.unclosed_blocks.append(current)
+            current = Block(name="", header=None, open=line)
+            mf.orphan_blocks.append(current)
+            continue
+        param = split_param(line)
+        if param is None:
+            if "[" not in stripped and "]" not in stripped:
+                mf.malformed.append(line)
+            continue
+        header = _header_name(param)
+        if header is not None:
+            name, brace = header
+            if current is not None:
+                # MOOS reads this header as a parameter of the block left open.
+                mf.unclosed_blocks.append(current)
+                current = None
+            block = Block(name=name, header=line, brace_on_header=brace)
+            block.name_start = line.text.find(name[:1], param.value_start) if name else 0
+            if block.name_start < 0:
+                block.name_start = param.value_start
+            mf.blocks.append(block)
+            if brace:
+                # MOOS never finds this block; read on as if it were well formed.
+                block.open = line
+                current = block
+            else:
+                pending = block
+            continue
+        if current is not None:
+            param.block = current
+            current.params.append(param)
+        elif param.key:
+            mf.globals.append(param)
+        else:
+            mf.malformed.append(line)
+    if pending is not None and pending.header is not None:
+        mf.headers_without_block.append(pending.header)
+    if current is not None:
+        mf.unclosed_blocks.append(current)
+    return mf
+
+
+# ------------------------------------------------------------------ Antler
+def _squeeze(text: str) -> str:
+    return "".join(text.split())
+
+
+def parse_run(param: Param, block: Block) -> RunLine:
+    """Read a Run line the way pAntler's CreateMOOSProcess does."""
+    value = param.value
+    if "@" in value:
+        binary, _, rest = value.partition("@")
+        has_at = True
+    else:
+        binary, rest, has_at = value, "", False
+    opts_text, _, alias_text = rest.partition("~")
+    options: dict[str, str] = {}
+    for item in opts_text.split(","):
+        k, _, v = item.partition("=")
+        if k.strip():
+            options[_squeeze(k).lower()] = _squeeze(v)
+    alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
+    binary = _squeeze(binary) if has_at else binary.strip()
+    run = RunLine(param, binary, has_at, options, alias)
+    extra = options.get("extraprocessparams")
+    if extra:
+        for p in block.params:
+            if _squeeze(p.key).lower() == extra.lower():
+                for token in p.value.split(","):
+                    token = _squeeze(token)
+                    if token.startswith("--alias="):
+                        run.alias_from_params = token[len("--alias=") :] or None
+    return run
+
+
+def antler_runs(block: Block) -> list[RunLine]:
+    return [parse_run(p, block) for p in block.params if p.lkey == "run"]

@@ -1,0 +1,39 @@
+"""An `#include` loop (a file that includes itself, directly or not).
+
+## What it does
+Reports an `#include` that would include a file already being included
+(A includes B includes A), and include chains nested absurdly deep.
+
+## Why is this bad?
+nsplug does not catch include loops: it recurses until it crashes with a
+segmentation fault, and no mission file is written.
+
+## Example
+```moos
+// a.plug
+#include b.plug
+// b.plug
+#include a.plug
+```
+
+## How to fix
+Remove the include that closes the loop.
+
+## Options
+None.
+"""
+
+from moos_lint.diagnostics import Severity
+from moos_lint.registry import Kind, Scope, rule
+from moos_lint.rules._helpers import problem_findings
+
+
+@rule(
+    code="P002",
+    name="include-cycle",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    yield from problem_findings(ctx, "include-cycle")
