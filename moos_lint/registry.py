@@ -37,8 +37,9 @@ class Scope(enum.Enum):
 
 
 class Kind(enum.Enum):
-    MOOS = "moos"
+    MOOS = "moos"  # .moos, .moos++, .plug, .def
     BHV = "bhv"
+    CPP = "cpp"  # C++ sources of MOOS apps
 
 
 @dataclass(slots=True)
