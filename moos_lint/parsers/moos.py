@@ -144,7 +144,7 @@ def parse_run(param: Param, block: Block) -> RunLine:
         if k.strip():
             options[_squeeze(k).lower()] = _squeeze(v)
     alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
-    binary = _squeeze(binary) if has_at else binary.strip()
+    binary = _squeeze(binary)  # pAntler reads lines with every space removed
     run = RunLine(param, binary, has_at, options, alias)
     extra = options.get("extraprocessparams")
     if extra:
