@@ -14,6 +14,7 @@ import sys
 from pathlib import Path
 
 from moos_lint import __version__
+from moos_lint.output import FORMATS
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -60,7 +61,8 @@ def _add_preproc_args(p: argparse.ArgumentParser) -> None:
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="moos-lint",
-        description="Lint MOOS and MOOS-IvP mission (.moos) and behavior (.bhv) files.",
+        description="Lint MOOS and MOOS-IvP mission (.moos) and behavior (.bhv) files "
+        "and the C++ of MOOS apps.",
     )
     parser.add_argument("--version", action="version", version=f"moos-lint {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
@@ -77,12 +79,42 @@ def build_parser() -> argparse.ArgumentParser:
     _add_preproc_args(check)
     check.add_argument("--config", type=Path, help="use this config file instead of searching")
     check.add_argument(
+        "--cpp-backend",
+        choices=("tree-sitter", "clang"),
+        help="how C++ apps are read: tree-sitter (fast, default) or clang (libclang deep mode)",
+    )
+    check.add_argument(
+        "--compile-commands",
+        type=Path,
+        metavar="PATH",
+        help="compile_commands.json (or its folder) for --cpp-backend clang",
+    )
+    check.add_argument(
         "--output-format",
-        choices=("text", "json"),
-        default="text",
-        help="output format (default: text)",
+        choices=FORMATS,
+        default=None,
+        help="output format (default: text; github when GITHUB_ACTIONS=true)",
     )
     check.add_argument("--output-file", "-o", type=Path, help="write the report to this file")
+    check.add_argument(
+        "--context",
+        action="store_true",
+        help="also lint the missions under the project root that include the given files; "
+        "report findings in the given files and those missions only (pre-commit)",
+    )
+    check.add_argument(
+        "--baseline", type=Path, metavar="FILE", help="report only findings not in this baseline"
+    )
+    check.add_argument(
+        "--write-baseline",
+        type=Path,
+        metavar="FILE",
+        help="record the current findings in FILE (per file and rule) and exit",
+    )
+    check.add_argument("--fix", action="store_true", help="apply the fixes findings offer")
+    check.add_argument(
+        "--diff", action="store_true", help="print the fixes as a unified diff; write nothing"
+    )
     check.add_argument("--statistics", action="store_true", help="count findings per rule")
     check.add_argument("--show-settings", action="store_true", help="print the settings and exit")
     check.add_argument("--exit-zero", action="store_true", help="exit 0 even with findings")
@@ -102,12 +134,25 @@ def build_parser() -> argparse.ArgumentParser:
 
     rules = sub.add_parser("rules", help="list every rule")
     rules.add_argument("--output-format", choices=("text", "json"), default="text")
+
+    graph = sub.add_parser("graph", help="draw a mission's processes and variables")
+    graph.add_argument("mission", type=Path, help="a .moos mission file")
+    graph.add_argument("--format", choices=("html", "dot", "json"), default="html")
+    graph.add_argument("-o", "--output", type=Path, help="write to FILE (default: stdout)")
+    graph.add_argument(
+        "--all-variables", action="store_true", help="also draw variables no one else reads"
+    )
+    graph.add_argument("--config", type=Path, help="use this config file")
+    graph.add_argument("--define", "-D", action="append", metavar="NAME=VALUE")
+
+    server = sub.add_parser("server", help="run the language server for editors (stdio)")
+    server.add_argument("--stdio", action="store_true", help="talk on stdin/stdout (the default)")
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
-    commands = {"check", "expand", "rule", "rules"}
+    commands = {"check", "expand", "rule", "rules", "server", "graph"}
     if not argv or (argv[0] not in commands and argv[0] not in ("-h", "--help", "--version")):
         argv.insert(0, "check")
     parser = build_parser()
@@ -121,6 +166,10 @@ def main(argv: list[str] | None = None) -> int:
             return cmd_rule(args)
         if args.command == "rules":
             return cmd_rules(args)
+        if args.command == "server":
+            return cmd_server(args)
+        if args.command == "graph":
+            return cmd_graph(args)
     except KeyboardInterrupt:
         return EXIT_ERROR
     except BrokenPipeError:
@@ -144,14 +193,15 @@ def _settings(args: argparse.Namespace):
     settings.ignore += _csv(args.ignore)
     settings.defines.update(_defines(args.define))
     settings.include_paths += [os.path.abspath(p) for p in args.include_path or []]
+    if getattr(args, "cpp_backend", None):
+        settings.cpp_backend = args.cpp_backend
+    if getattr(args, "compile_commands", None):
+        settings.compile_commands = os.path.abspath(args.compile_commands)
     return settings
 
 
 def cmd_check(args: argparse.Namespace) -> int:
     from moos_lint.config import ConfigError
-    from moos_lint.diagnostics import Diagnostic, Severity, Span
-    from moos_lint.engine import lint_paths
-    from moos_lint.output import render
 
     try:
         settings = _settings(args)
@@ -160,19 +210,61 @@ def cmd_check(args: argparse.Namespace) -> int:
     if args.show_settings:
         print(json.dumps(settings.as_dict(), indent=2))
         return EXIT_CLEAN
-    result = lint_paths(args.paths, settings)
-    for missing in result.missing:
-        result.diagnostics.insert(
-            0,
-            Diagnostic(
-                "R001",
-                "unreadable-file",
-                Severity.ERROR,
-                Span(os.path.abspath(missing), 1, 1),
-                "no such file or directory",
-            ),
-        )
-    text = render(args.output_format, result, statistics=args.statistics, quiet=args.quiet)
+    from moos_lint.baseline import BaselineError
+
+    try:
+        return _check(args, settings)
+    except BaselineError as exc:
+        return _usage_error(str(exc))
+
+
+def _check(args: argparse.Namespace, settings) -> int:
+    from moos_lint import baseline as bl
+    from moos_lint.context import project_root
+    from moos_lint.diagnostics import Diagnostic, Severity, Span
+    from moos_lint.engine import lint_paths
+    from moos_lint.output import render
+
+    # A baseline outside any project (no config, no VCS) is relative to its own folder.
+    baseline_file = args.write_baseline or args.baseline
+    fallback = os.path.dirname(os.path.abspath(baseline_file)) if baseline_file else None
+    root = project_root(settings, args.paths, fallback)
+    base = bl.load(str(args.baseline), root) if args.baseline else None
+
+    def lint(cache=None, *, filtered: bool = True):
+        result = lint_paths(args.paths, settings, context=args.context, cache=cache)
+        for missing in result.missing:
+            result.diagnostics.insert(
+                0,
+                Diagnostic(
+                    "R001",
+                    "unreadable-file",
+                    Severity.ERROR,
+                    Span(os.path.abspath(missing), 1, 1),
+                    "no such file or directory",
+                ),
+            )
+        if base is not None and filtered:
+            result.diagnostics, result.baselined = bl.new_findings(
+                result.diagnostics, base, result.sources
+            )
+        return result
+
+    if args.write_baseline:
+        return _write_baseline(args, settings, root, lint(filtered=False))
+    result = lint()
+    if args.fix or args.diff:
+        from moos_lint.fix import fix_until_stable
+
+        outcome = fix_until_stable(lint, first=result)
+        if args.diff:
+            return _show_diff(args, outcome)
+        status = _write_fixes(outcome)
+        if status is not None:
+            return status
+        result = outcome.result
+    fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
+    text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
     if args.output_file:
         try:
             args.output_file.write_text(text, encoding="utf-8")
@@ -189,6 +281,68 @@ def cmd_check(args: argparse.Namespace) -> int:
     if result.diagnostics and not args.exit_zero:
         return EXIT_FINDINGS
     return EXIT_CLEAN
+
+
+def _write_baseline(args: argparse.Namespace, settings, root: str, result) -> int:
+    from moos_lint import baseline as bl
+    from moos_lint.registry import select_rules
+
+    path = str(args.write_baseline)
+    previous = bl.load(path, root) if os.path.exists(path) else None
+    ran = {r.code for r in select_rules(settings.select, settings.extend_select, settings.ignore)}
+    new = bl.build(
+        result.diagnostics,
+        root,
+        result.sources,
+        previous=previous,
+        linted=result.files,
+        ran_codes=ran,
+    )
+    try:
+        bl.write(path, new)
+    except OSError as exc:
+        return _usage_error(f"cannot write {path}: {exc.strerror or exc}")
+    if not args.quiet:
+        print(
+            f"moos-lint: wrote {new.total} finding(s) in {len(new.files)} file(s) to {path}",
+            file=sys.stderr,
+        )
+    return EXIT_ERROR if result.internal_errors else EXIT_CLEAN
+
+
+def _show_diff(args: argparse.Namespace, outcome) -> int:
+    from moos_lint.fix import unified_diff
+    from moos_lint.output import display_path
+
+    text = "".join(unified_diff(doc, display_path(doc.path)) for doc in outcome.changed)
+    if args.output_file:
+        try:
+            args.output_file.write_text(text, encoding="utf-8")
+        except OSError as exc:
+            return _usage_error(f"cannot write {args.output_file}: {exc.strerror or exc}")
+    else:
+        sys.stdout.write(text)
+    if not args.quiet:
+        n, files = outcome.fixed, len(outcome.changed)
+        print(f"moos-lint: would fix {n} finding(s) in {files} file(s)", file=sys.stderr)
+    return EXIT_FINDINGS if outcome.changed else EXIT_CLEAN
+
+
+def _write_fixes(outcome) -> int | None:
+    from moos_lint.fix import write_atomic
+    from moos_lint.output import display_path
+
+    for doc in outcome.changed:
+        try:
+            write_atomic(doc)
+        except OSError as exc:
+            return _usage_error(f"cannot write {display_path(doc.path)}: {exc.strerror or exc}")
+    if outcome.changed:
+        print(
+            f"moos-lint: fixed {outcome.fixed} finding(s) in {len(outcome.changed)} file(s)",
+            file=sys.stderr,
+        )
+    return None
 
 
 def cmd_expand(args: argparse.Namespace) -> int:
@@ -217,6 +371,27 @@ def cmd_expand(args: argparse.Namespace) -> int:
         if prob.kind in fatal:
             status = EXIT_FINDINGS
     return status
+
+
+def cmd_graph(args: argparse.Namespace) -> int:
+    from moos_lint.config import ConfigError, resolve_settings
+    from moos_lint.graph import GraphError, build_graph, render
+
+    try:
+        settings = resolve_settings([args.mission], args.config)
+        settings.defines.update(_defines(args.define))
+        g = build_graph(str(args.mission), settings, all_variables=args.all_variables)
+    except (ConfigError, GraphError) as exc:
+        return _usage_error(str(exc))
+    text = render(g, args.format)
+    if args.output is None:
+        sys.stdout.write(text)
+        return EXIT_CLEAN
+    try:
+        args.output.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        return _usage_error(f"{args.output}: {exc}")
+    return EXIT_CLEAN
 
 
 def cmd_rule(args: argparse.Namespace) -> int:
@@ -253,3 +428,14 @@ def cmd_rules(args: argparse.Namespace) -> int:
         on = "on " if r.default_enabled else "off"
         print(f"{r.code}  {r.name:32s} {r.severity.value:8s} {on}  {r.summary}")
     return EXIT_CLEAN
+
+
+def cmd_server(args: argparse.Namespace) -> int:
+    try:
+        from moos_lint.lsp.server import serve
+    except ImportError as exc:
+        return _usage_error(
+            f"the language server needs pygls ({exc}); install it with "
+            "`pip install 'moos-lint[lsp]'`"
+        )
+    return serve()

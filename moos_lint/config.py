@@ -22,7 +22,16 @@ from moos_lint.registry import all_rules, get_rule, is_valid_selector
 
 CONFIG_FILES = (".moos-lint.toml", "moos-lint.toml", "pyproject.toml")
 LIST_KEYS = ("select", "ignore", "extend-select", "exclude", "include-paths")
-KNOWN_KEYS = {*LIST_KEYS, "per-file-ignores", "defines", "rules"}
+KNOWN_KEYS = {
+    *LIST_KEYS,
+    "per-file-ignores",
+    "defines",
+    "rules",
+    "cpp-backend",
+    "compile-commands",
+    "catalogues",
+}
+CPP_BACKENDS = ("tree-sitter", "clang")
 DEFAULT_EXCLUDE = (
     ".git",
     ".hg",
@@ -50,6 +59,11 @@ class Settings:
     rule_options: dict[str, dict[str, Any]] = field(default_factory=dict)
     config_path: str | None = None
     root: str = "."
+    #: how C++ is read: "tree-sitter" (fast) or "clang" (libclang deep mode)
+    cpp_backend: str = "tree-sitter"
+    compile_commands: str | None = None  # a compile_commands.json, or its folder
+    #: app/behavior catalogue files (JSON or TOML) for apps whose C++ is elsewhere
+    catalogues: list[str] = field(default_factory=list)
 
     def options_for(self, name: str) -> dict[str, Any]:
         """A rule's options: its defaults, overridden by the config."""
@@ -69,6 +83,9 @@ class Settings:
             "exclude": [*DEFAULT_EXCLUDE, *self.exclude],
             "defines": self.defines,
             "include-paths": self.include_paths,
+            "cpp-backend": self.cpp_backend,
+            "compile-commands": self.compile_commands,
+            "catalogues": self.catalogues,
             "rules": {r.name: self.options_for(r.name) for r in all_rules() if r.options},
         }
 
@@ -103,6 +120,23 @@ def _check_selectors(path: Path, key: str, values: list[str]) -> None:
     for v in values:
         if not is_valid_selector(v):
             raise ConfigError(f"{path}: `{key}` names an unknown rule or code `{v}`")
+
+
+def _check_catalogues(path: Path, key: str, value: Any, root: Path) -> list[str]:
+    """Catalogue files, relative to the config's folder; each must exist and be valid."""
+    from moos_lint.catalogue import Catalogue, CatalogueError, load_user_catalogue
+
+    out = []
+    for name in _check_list(path, key, value):
+        full = str((root / name).resolve())
+        if not os.path.isfile(full):
+            raise ConfigError(f"{path}: `{key}`: catalogue file `{name}` not found")
+        try:
+            load_user_catalogue(full, Catalogue())
+        except CatalogueError as exc:
+            raise ConfigError(f"{path}: `{key}`: {exc}") from exc
+        out.append(full)
+    return out
 
 
 def load_config(path: Path) -> Settings:
@@ -145,6 +179,17 @@ def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Se
     for glob, codes in pfi.items():
         s.per_file_ignores[glob] = _check_list(path, f"{prefix}per-file-ignores.{glob}", codes)
         _check_selectors(path, f"{prefix}per-file-ignores.{glob}", codes)
+    backend = data.get("cpp-backend", "tree-sitter")
+    if backend not in CPP_BACKENDS:
+        raise ConfigError(f"{path}: `{prefix}cpp-backend` must be one of {', '.join(CPP_BACKENDS)}")
+    s.cpp_backend = backend
+    if "compile-commands" in data:
+        cc = data["compile-commands"]
+        if not isinstance(cc, str):
+            raise ConfigError(f"{path}: `{prefix}compile-commands` must be a path")
+        s.compile_commands = str((root / cc).resolve())
+    if "catalogues" in data:
+        s.catalogues = _check_catalogues(path, prefix + "catalogues", data["catalogues"], root)
     defines = data.get("defines", {})
     if not isinstance(defines, dict):
         raise ConfigError(f"{path}: `{prefix}defines` must be a table of NAME = value")

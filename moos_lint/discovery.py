@@ -1,4 +1,4 @@
-"""Finding the files to lint: mission, fragment and behavior files under the given paths."""
+"""Finding the files to lint: mission, fragment, behavior and C++ files under the given paths."""
 
 from __future__ import annotations
 
@@ -11,16 +11,19 @@ from moos_lint.config import DEFAULT_EXCLUDE
 
 MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
 BHV_SUFFIXES = (".bhv",)
+CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".h", ".hpp")
 SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
 
 
 def kind_of(path: str) -> str | None:
-    """``moos``, ``bhv`` or None, from the file name."""
+    """``moos``, ``bhv``, ``cpp`` or None, from the file name."""
     low = path.lower()
     if low.endswith(MOOS_SUFFIXES):
         return "moos"
     if low.endswith(BHV_SUFFIXES):
         return "bhv"
+    if low.endswith(CPP_SUFFIXES):
+        return "cpp"
     return None
 
 
@@ -71,7 +74,7 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
                 rel = os.path.normpath(os.path.join(rel_dir, d))
                 if _excluded(rel, d, patterns):
                     continue
-                if kind_of(d) is not None:
+                if kind_of(d) in ("moos", "bhv"):
                     # A directory named like a mission file: report it, do not descend.
                     files.add(os.path.join(dirpath, d))
                     continue

@@ -37,6 +37,8 @@ class Unit:
     expansion: Expansion
     moos: MoosFile | None = None
     bhv: BehaviorFile | None = None
+    #: C++ units (one folder of C++ files): the app model, a ``moos_lint.cpp.model.AppModel``
+    cpp: Any = None
 
 
 @dataclass
@@ -98,6 +100,9 @@ class Result:
     internal_errors: int = 0
     missing: list[str] = field(default_factory=list)
     sources: dict[str, SourceFile] = field(default_factory=dict)
+    baselined: int = 0  # findings hidden by --baseline
+    #: the linted files' expansions and models, in the order given
+    units: list[Unit] = field(default_factory=list)
 
 
 class Run:
@@ -113,6 +118,7 @@ class Run:
             mode="lint",
             cache=self.cache,
         )
+        self.preprocessor.memo = {}  # each file is expanded once per run
         self.sources: dict[str, SourceFile] = {}
         self.mission_files: set[str] = set()  # files analysed as part of a mission
         self.included_elsewhere: set[str] = set()  # linted files that other files include
@@ -142,6 +148,10 @@ class Run:
         return _per_file_ignored(d, self.settings)
 
     def build_unit(self, path: str) -> Unit:
+        if kind_of(path) == "cpp":
+            from moos_lint.cpp.units import build_cpp_units
+
+            return build_cpp_units(self, [path])[0]
         kind = Kind.BHV if kind_of(path) == "bhv" else Kind.MOOS
         exp = self.preprocessor.expand(path)
         self.sources.update(exp.sources)
@@ -159,11 +169,17 @@ class Run:
         out: list[Diagnostic] = []
         errors = 0
         for r in self.rules:
-            if r.scope not in (Scope.FILE, Scope.MISSION) or unit.kind not in r.kinds:
+            if unit.kind not in r.kinds or r.scope is Scope.PROJECT:
+                continue
+            if unit.kind is Kind.CPP:
+                if unit.cpp is None:
+                    continue
+            elif r.scope not in (Scope.FILE, Scope.MISSION):
                 continue
             if unit.expansion.read_problem is not None and r.code != "R001":
                 continue
-            if r.scope is Scope.MISSION and not (unit.moos and unit.moos.is_mission):
+            mission = unit.kind is Kind.CPP or (unit.moos and unit.moos.is_mission)
+            if r.scope is Scope.MISSION and not mission:
                 continue
             ctx = Context(r, unit, self.settings, self, self.settings.options_for(r.name))
             try:
@@ -187,6 +203,38 @@ def internal_error(path: str, r: Rule, exc: BaseException) -> Diagnostic:
     )
 
 
+def _build_cpp_units(run: Run, files: list[str]) -> tuple[list[Unit], list[Diagnostic]]:
+    """The C++ units; a folder whose C++ cannot be analysed is an internal error, not a crash."""
+    from moos_lint.cpp.units import build_cpp_units
+
+    try:
+        return build_cpp_units(run, files), []
+    except Exception:
+        pass
+    units: list[Unit] = []
+    errors: list[Diagnostic] = []
+    folders: dict[str, list[str]] = {}
+    for p in files:
+        folders.setdefault(os.path.dirname(p), []).append(p)
+    for _folder, paths in sorted(folders.items()):
+        try:
+            units.extend(build_cpp_units(run, paths))
+        except Exception as exc:  # one folder's C++ must not stop the run
+            where = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
+            at = f" at {os.path.basename(where.filename)}:{where.lineno}" if where else ""
+            errors.append(
+                Diagnostic(
+                    code=INTERNAL_ERROR,
+                    name="internal-error",
+                    severity=Severity.ERROR,
+                    span=Span(sorted(paths)[0], 1, 1),
+                    message=f"internal error reading the C++ files of this folder: "
+                    f"{type(exc).__name__}: {exc}{at}; please report it",
+                )
+            )
+    return units, errors
+
+
 def lint_files(
     files: list[str], settings: Settings, rules: list[Rule] | None = None, cache=None
 ) -> Result:
@@ -195,11 +243,18 @@ def lint_files(
         rules = select_rules(settings.select, settings.extend_select, settings.ignore)
     run = Run(settings, rules, cache)
     result = Result(files=list(files))
+    cpp_files = [p for p in files if kind_of(p) == "cpp"]
     for path in files:
-        run.units.append(run.build_unit(path))
+        if kind_of(path) != "cpp":
+            run.units.append(run.build_unit(path))
+    cpp_errors: list[Diagnostic] = []
+    if cpp_files:
+        units, cpp_errors = _build_cpp_units(run, cpp_files)
+        run.units.extend(units)
+        result.internal_errors += len(cpp_errors)
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
-    found: dict[tuple, Diagnostic] = {}
+    found: dict[tuple, Diagnostic] = {d.identity: d for d in cpp_errors}
     for unit in run.units:
         diags, errors = run.run_rules(unit)
         result.internal_errors += errors
@@ -217,6 +272,7 @@ def lint_files(
     kept.sort(key=lambda d: d.sort_key)
     result.diagnostics = kept
     result.sources = run.sources
+    result.units = run.units
     return result
 
 
@@ -238,11 +294,36 @@ def _per_file_ignored(d: Diagnostic, settings: Settings) -> bool:
     return False
 
 
-def lint_paths(paths: Iterable[Path], settings: Settings) -> Result:
-    """Discover files under ``paths`` and lint them."""
+def lint_paths(
+    paths: Iterable[Path],
+    settings: Settings,
+    *,
+    context: bool = False,
+    cache: FileCache | None = None,
+) -> Result:
+    """Discover files under ``paths`` and lint them.
+
+    With ``context``, the missions under the project root that use one of the
+    files (see :mod:`moos_lint.context`) are linted too, and only findings in
+    the given files or in those missions are kept.
+    """
     paths = list(paths) or [Path(".")]
     found = discover(paths, settings.exclude, settings.root)
-    result = lint_files(found.files, settings)
+    if not context:
+        result = lint_files(found.files, settings, cache=cache)
+        result.missing = found.missing
+        return result
+    from moos_lint.context import related_missions
+
+    cache = cache or FileCache()
+    missions = related_missions(found.files, settings, cache)
+    result = lint_files([*found.files, *missions], settings, cache=cache)
+    keep = {os.path.normpath(p) for p in (*found.files, *missions)}
+    result.diagnostics = [
+        d
+        for d in result.diagnostics
+        if d.code == INTERNAL_ERROR or os.path.normpath(d.span.path) in keep
+    ]
     result.missing = found.missing
     return result
 

@@ -40,7 +40,9 @@ DIRECTIVES = ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif", "#include", 
 UNKNOWN = object()
 #: nsplug's value for ``#define NAME`` with no value.
 DEFINED = "<defined>"
-MAX_INCLUDE_DEPTH = 2000
+#: Real missions nest includes a few levels deep. Each linted file expands its
+#: whole include tree, so a deeper chain costs every file above it time and memory.
+MAX_INCLUDE_DEPTH = 100
 MAX_SUBS_PER_LINE = 100
 
 _MACRO_DEFAULT = re.compile(r"([$%])\(([^()=:$%]+?)(:?=)([^()]*)\)")
@@ -104,6 +106,9 @@ class Expansion:
     #: an include could not be followed (unresolved macro in its path, or missing)
     incomplete: bool = False
     read_problem: ReadProblem | None = None
+    #: the condition of each ``#ifdef`` branch, by ``(group, branch)`` as in ``Line.branches``:
+    #: ``"ifdef A v"``, ``"ifndef A"`` or ``"else"``
+    conditions: dict[tuple[int, int], str] = field(default_factory=dict)
 
 
 @dataclass(slots=True)
@@ -130,6 +135,36 @@ class _Work:
     idx: int = 0
     in_tag: bool = False
     frames: list[_Frame] = field(default_factory=list)
+    # Kept up to date at each conditional, so that a line costs O(1) however deep the
+    # nesting: the branches of the current lines, and how many frames are false/unknown.
+    branches: tuple[tuple[int, int], ...] = ()
+    n_false: int = 0
+    n_unknown: int = 0
+
+    def __post_init__(self) -> None:
+        self.branches = self.outer
+
+    def count(self, state: str | None, delta: int) -> None:
+        if state == "F":
+            self.n_false += delta
+        elif state == "U":
+            self.n_unknown += delta
+
+    def frames_changed(self, depth_before: int, top_state_before: str | None) -> None:
+        """Update the cached state after a conditional pushed, popped or moved a frame."""
+        frames = self.frames
+        if len(frames) < depth_before:  # #endif
+            self.count(top_state_before, -1)
+            self.branches = self.branches[:-1]
+        elif len(frames) > depth_before:  # #ifdef / #ifndef
+            top = frames[-1]
+            self.count(top.state, 1)
+            self.branches = (*self.branches, (top.group, top.branch))
+        elif frames:  # #else / #elseifdef
+            top = frames[-1]
+            self.count(top_state_before, -1)
+            self.count(top.state, 1)
+            self.branches = (*self.branches[:-1], (top.group, top.branch))
 
 
 class FileCache:
@@ -169,6 +204,9 @@ class Preprocessor:
         self.lenient = False  # nsplug --lenient: partial expansion in nsplug mode
         self.cache = cache or FileCache()
         self._groups = itertools.count(1)
+        #: when a dict, ``expand(path)`` (default macros) is computed once per path and shared:
+        #: a lint run expands a behavior file or a sibling mission for each mission that uses it
+        self.memo: dict[str, Expansion] | None = None
 
     # ------------------------------------------------------------------ macros
     def expand_macros(self, text: str, macros: dict) -> str:
@@ -275,6 +313,14 @@ class Preprocessor:
     # ------------------------------------------------------------------ expand
     def expand(self, path: str | Path, macros: dict | None = None) -> Expansion:
         path = _norm(path)
+        if macros is None and self.memo is not None:
+            hit = self.memo.get(path)
+            if hit is None:
+                hit = self.memo[path] = self._expand(path, None)
+            return hit
+        return self._expand(path, macros)
+
+    def _expand(self, path: str, macros: dict | None) -> Expansion:
         exp = Expansion(path=path)
         src = self.cache.get(path)
         if isinstance(src, ReadProblem):
@@ -297,6 +343,9 @@ class Preprocessor:
     ) -> None:
         """Expand one file. Includes are followed with an explicit work stack."""
         stack = [_Work(src, tag, chain, (), uncertain)]
+        # The files on the include stack, for an include-loop check in O(1).
+        active = {site.path for site in chain}
+        active.add(str(src.path))
         while stack:
             work = stack[-1]
             src = work.src
@@ -305,6 +354,7 @@ class Preprocessor:
             if work.idx >= len(src.lines):
                 self._close_file(exp, work.frames)
                 stack.pop()
+                active.discard(path)
                 continue
             raw = src.lines[work.idx]
             work.idx += 1
@@ -326,16 +376,19 @@ class Preprocessor:
             rest = rest.strip()
 
             if left in ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif"):
+                before = len(frames), (frames[-1].state if frames else None)
                 self._conditional(exp, here, left, rest, frames, macros)
+                work.frames_changed(*before)
                 continue
-            if not self._active(frames):
+            if work.n_false:  # inside a branch that is not taken
                 continue
-            branch_uncertain = work.uncertain or any(f.state == "U" for f in frames)
+            branch_uncertain = work.uncertain or work.n_unknown > 0
+            branches = work.branches
             if left == "#define":
                 self._define(exp, here, rest, macros, branch_uncertain)
                 continue
             if left == "#include":
-                child = self._include(exp, here, rest, macros, top_dir, work.chain)
+                child = self._include(exp, here, rest, macros, top_dir, active)
                 if child is not None:
                     csrc, ctag = child
                     cchain = (*work.chain, IncludeSite(path, here.lineno))
@@ -347,12 +400,12 @@ class Preprocessor:
                             f"includes are nested more than {MAX_INCLUDE_DEPTH} deep",
                         )
                         continue
-                    outer = self._branches(frames, work.outer)
-                    stack.append(_Work(csrc, ctag, cchain, outer, branch_uncertain))
+                    stack.append(_Work(csrc, ctag, cchain, branches, branch_uncertain))
+                    active.add(str(csrc.path))
                 continue
             if raw.lstrip().startswith("#"):
                 self._unknown_directive(exp, here)
-            exp.lines.append(self._out_line(here, macros, frames, work.outer))
+            exp.lines.append(self._out_line(here, macros, frames, work.outer, branches))
 
     def _conditional(
         self,
@@ -374,6 +427,7 @@ class Preprocessor:
             frame = _Frame(left[1:], next(self._groups), 0, state, state == "T", here)
             frame.any_unknown = state == "U"
             frames.append(frame)
+            exp.conditions[(frame.group, 0)] = f"{left[1:]} {rest}"
             return
         if not frames:
             what = "`#endif` without an open `#ifdef` or `#ifndef`"
@@ -397,6 +451,7 @@ class Preprocessor:
                 )
             self._check_condition(exp, here, left, rest)
             top.branch += 1
+            exp.conditions[(top.group, top.branch)] = f"ifdef {rest}"
             if top.matched:
                 top.state = "F"
             else:
@@ -407,6 +462,7 @@ class Preprocessor:
         # #else
         top.seen_else = True
         top.branch += 1
+        exp.conditions[(top.group, top.branch)] = "else"
         if top.matched:
             top.state = "F"
         elif top.any_unknown:
@@ -424,9 +480,16 @@ class Preprocessor:
     def _branches(frames: list[_Frame], outer: tuple) -> tuple[tuple[int, int], ...]:
         return (*outer, *((f.group, f.branch) for f in frames))
 
-    def _out_line(self, here: Line, macros: dict, frames: list[_Frame], outer: tuple) -> Line:
+    def _out_line(
+        self,
+        here: Line,
+        macros: dict,
+        frames: list[_Frame],
+        outer: tuple,
+        branches: tuple[tuple[int, int], ...] | None = None,
+    ) -> Line:
         here.text = self.expand_macros(here.raw, macros)
-        here.branches = self._branches(frames, outer)
+        here.branches = self._branches(frames, outer) if branches is None else branches
         return here
 
     @staticmethod
@@ -466,7 +529,7 @@ class Preprocessor:
         rest: str,
         macros: dict,
         top_dir: str,
-        chain: tuple[IncludeSite, ...],
+        active: set[str],
     ) -> tuple[SourceFile, str | None] | None:
         target = self.expand_macros(rest, macros).strip()
         tag = None
@@ -487,7 +550,7 @@ class Preprocessor:
             exp.incomplete = True
             self._problem(exp, "include-not-found", here, f"included file `{target}` not found")
             return None
-        if found == here.path or any(found == site.path for site in chain):
+        if found == here.path or found in active:
             self._problem(
                 exp,
                 "include-cycle",

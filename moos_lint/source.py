@@ -85,6 +85,14 @@ def decode(data: bytes, path: Path) -> SourceFile | ReadProblem:
 
 def read_source(path: Path) -> SourceFile | ReadProblem:
     """Read a regular file as text without ever blocking or raising."""
+    data = read_bytes(path)
+    if isinstance(data, ReadProblem):
+        return data
+    return decode(data, path)
+
+
+def read_bytes(path: Path) -> bytes | ReadProblem:
+    """Read a regular file's bytes without ever blocking or raising."""
     try:
         st = os.stat(path)
     except OSError as exc:
@@ -113,4 +121,4 @@ def read_source(path: Path) -> SourceFile | ReadProblem:
         return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
     finally:
         os.close(fd)
-    return decode(data, path)
+    return data

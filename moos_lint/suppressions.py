@@ -20,6 +20,7 @@ _COMMENT = re.compile(
     r"//\s*moos-lint:\s*(?P<verb>ignore|disable|enable|file-ignore)\s*"
     r"\[(?P<codes>[^\]]*)\]"
 )
+COMMENT_RE = _COMMENT  # public name, for the fix that removes unused selectors
 
 
 @dataclass(slots=True)

@@ -146,7 +146,7 @@ def test_suppressions(project):
         "// moos-lint: disable[R003]\nProcessConfig = pC {\n}\n// moos-lint: enable[R003]\n"
         "ProcessConfig = pD {\n}\n"
     )
-    status, out = run("check", "m.moos", "--output-format", "json")
+    _, out = run("check", "m.moos", "--output-format", "json")
     data = json.loads(out)
     assert [(d["code"], d["line"]) for d in data] == [("R003", 10)]
     (project / "m.moos").write_text("// moos-lint: file-ignore[R]\nProcessConfig = pA {\n}\n")
@@ -155,7 +155,7 @@ def test_suppressions(project):
 
 def test_unused_suppression(project):
     (project / "m.moos").write_text("ServerPort = 9000   // moos-lint: ignore[R003]\n")
-    status, out = run("check", "m.moos", "--output-format", "json")
+    _, out = run("check", "m.moos", "--output-format", "json")
     assert [d["code"] for d in json.loads(out)] == ["L001"]
     assert run("check", "m.moos", "--ignore", "R003")[0] == 0
 
@@ -201,7 +201,12 @@ def test_console_script_runs_on_the_example():
 
 
 def test_version_is_fast_and_light():
-    code = "import sys, moos_lint.cli as c; sys.argv=['moos-lint','--version']\ntry:\n c.main()\nexcept SystemExit: pass\nprint(sorted(m for m in sys.modules if m.split('.')[0] in ('tree_sitter','clang','pygls','moos_lint')))"
+    code = (
+        "import sys, moos_lint.cli as c\n"
+        "try:\n c.main(['--version'])\nexcept SystemExit: pass\n"
+        "print(sorted(m for m in sys.modules if m.split('.')[0] in "
+        "('tree_sitter', 'clang', 'pygls', 'moos_lint')))"
+    )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True).stdout
     assert "tree_sitter" not in out and "pygls" not in out and "clang" not in out
     assert "moos_lint.engine" not in out

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.nsplug import Preprocessor, expand_text
+from moos_lint.nsplug import MAX_INCLUDE_DEPTH, Preprocessor, expand_text
 
 
 def write(tmp_path: Path, name: str, text: str) -> Path:
@@ -142,8 +142,15 @@ def test_deep_include_chain_does_not_recurse(tmp_path):
     for i in range(1200):
         write(tmp_path, f"f{i}.plug", f"#include f{i + 1}.plug\n")
     write(tmp_path, "f1200.plug", "bottom = 1\n")
-    exp = Preprocessor().expand(tmp_path / "f0.plug")
+    exp = Preprocessor().expand(tmp_path / f"f{1200 - MAX_INCLUDE_DEPTH}.plug")
     assert [ln.text for ln in exp.lines] == ["bottom = 1"]
+    assert len(exp.lines[0].chain) == MAX_INCLUDE_DEPTH
+    # Deeper than the limit: a problem at the include that goes too deep, no crash.
+    exp = Preprocessor().expand(tmp_path / "f0.plug")
+    assert exp.lines == []
+    assert [(p.kind, Path(p.span.path).name) for p in exp.problems] == [
+        ("include-cycle", f"f{MAX_INCLUDE_DEPTH}.plug")
+    ]
 
 
 def test_lint_mode_keeps_every_branch_of_an_unknown_condition(tmp_path):

@@ -5,7 +5,7 @@ from __future__ import annotations
 import importlib
 import os
 
-FORMATS = ("text", "json")
+FORMATS = ("text", "concise", "json", "sarif", "github", "gitlab", "junit")
 
 
 def display_path(path: str, cwd: str | None = None) -> str:

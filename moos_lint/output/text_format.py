@@ -49,4 +49,7 @@ def render(result, cwd: str, *, statistics: bool = False, quiet: bool = False, *
             out.append(f"Found {n} finding{'s' if n != 1 else ''} in {files} file(s).")
         else:
             out.append(f"All checks passed ({files} file(s)).")
+        hidden = getattr(result, "baselined", 0)
+        if hidden:
+            out.append(f"{hidden} older finding(s) hidden by the baseline.")
     return "\n".join(out) + ("\n" if out else "")

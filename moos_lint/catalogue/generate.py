@@ -1,0 +1,557 @@
+"""Generate the stock catalogue from the MOOS-IvP and MOOS core C++ sources.
+
+Usage::
+
+    python -m moos_lint.catalogue.generate SRC [-o moos_lint/catalogue/stock.json]
+        [--commit SHA] [--repository URL]
+
+``SRC`` is a work tree of https://github.com/moos-ivp/moos-ivp (which vendors
+MOOS core in ``MOOS_Jul2724/``). Every app and behavior is read with
+moos-lint's own C++ extractor (:mod:`moos_lint.cpp`): the configuration
+parameters an app compares its config lines against, the variables it
+``Notify``s and ``Register``s; for behaviors the parameters their
+``setParam`` compares against (base classes included, ``IvPBehavior``'s
+generic keys among them) and the variables they post.
+
+What the extractor cannot see is added by hand in :data:`CORRECTIONS`; every
+entry so changed lists the correction in its ``corrected`` field.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+from collections.abc import Iterable
+
+from moos_lint.cpp.app import build_apps
+from moos_lint.cpp.model import AppModel
+from moos_lint.source import SourceFile, read_source
+
+CPP_EXT = (".cpp", ".cc", ".cxx", ".h", ".hpp")
+_POST = re.compile(
+    r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\"([A-Za-z0-9_]+)\"", re.MULTILINE
+)
+_LINK = re.compile(r"TARGET_LINK_LIBRARIES\s*\(([^)]*)\)", re.IGNORECASE | re.DOTALL)
+_NAME = re.compile(r"^[A-Za-z0-9_]+$")
+
+#: Parameters read by base classes (``CMOOSApp``, ``AppCastingMOOSApp``): every app accepts them.
+BASE_PARAMS = {
+    "CMOOSApp": {
+        "params": [
+            "apptick",
+            "maxapptick",
+            "iteratemode",
+            "commstick",
+            "sortmailbytime",
+            "catchcommandmessages",
+            "moos_time_warp",
+            "moos_timewarp_delay_factor",
+            "moos_timewarp_scale_factor",
+            "moos_app_name",
+            "moos_name",
+            "moos_file",
+            "moos_host",
+            "moos_port",
+            "moos_iterate_mode",
+            "moos_quiet",
+            "moos_configuration_audit",
+            "moos_apptick",
+            "moos_max_apptick",
+            "moos_commstick",
+        ],
+        "provenance": "MOOS_Jul2724/MOOSCore/Core/libMOOS/App/MOOSApp.cpp:548-591,1149 (by hand)",
+        # GetConfigurationParam(double) takes only values starting with a digit or `-`
+        "param_forms": {
+            "apptick": {
+                "form": "moos_double",
+                "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:265",
+            },
+            "maxapptick": {
+                "form": "moos_double",
+                "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:265",
+            },
+        },
+    },
+    "AppCastingMOOSApp": {
+        "params": [
+            "comms_policy",
+            "app_logging",
+            "deprecated_ok",
+            "term_report_interval",
+            "max_appcast_events",
+            "max_appcast_run_warnings",
+        ],
+        "publishes": ["APPCAST", "APP_LOG"],
+        "publish_suffixes": ["_ITER_GAP", "_ITER_LEN"],
+        "subscribes": ["APPCAST_REQ", "LOADCAST_REQ", "TERM_REPORT_INTERVAL", "COMMS_POLICY"],
+        "provenance": (
+            "MOOS_Jul2724/MOOSCore/Core/libMOOS/Thirdparty/AppCasting/"
+            "AppCastingMOOSApp.cpp:233-275,384-420,455-458 (by hand)"
+        ),
+    },
+}
+
+#: Behavior parameters read outside the behavior classes.
+BEHAVIOR_EXTRA_PARAMS = {
+    "name": "ivp/src/lib_helmivp/BehaviorSet.cpp:399",
+    "descriptor": "ivp/src/lib_helmivp/BehaviorSet.cpp:399",
+    "templating": "ivp/src/lib_helmivp/BehaviorSpec.cpp:60-85",
+    "max_spawnings": "ivp/src/lib_helmivp/BehaviorSpec.cpp:60-85",
+}
+
+#: Hand corrections: app -> fields to add, and why.
+CORRECTIONS: dict[str, dict] = {
+    "pEchoVar": {
+        "param_prefixes": ["flip"],
+        "why": '`flip:N = ...` keys are matched with strncmp(param, "flip", 4) (EchoVar.cpp:143)',
+    },
+    "pMarineViewer": {
+        "reports_unhandled": True,
+        "why": "the final else hands other keys to PMV_Viewer::setParam, then "
+        "MarineViewer::setParam and VPlug_GeoSettings::setParam, whose keys are all listed "
+        "(PMV_MOOSApp.cpp, lib_marineview, lib_geometry): checked by hand",
+    },
+    "pShare": {
+        "params": ["input", "output", "multicast_base_port", "multicast_address", "verbose"],
+        "why": "read with GetRepeatedConfigurations and "
+        "GetParameterFromCommandLineOrConfigurationFile (Share.cpp:213-308)",
+    },
+    "pNodeReporter": {
+        "publishes": ["NODE_REPORT_LOCAL"],
+        "why": "the node report variable defaults to NODE_REPORT_LOCAL (NodeReporter.cpp:714)",
+    },
+    "pHelmIvP": {
+        "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
+        "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "
+        "the behavior file's set blocks",
+    },
+}
+
+
+_NAV = [
+    "NAV_X",
+    "NAV_Y",
+    "NAV_LAT",
+    "NAV_LONG",
+    "NAV_HEADING",
+    "NAV_SPEED",
+    "NAV_DEPTH",
+    "NAV_Z",
+    "NAV_PITCH",
+    "NAV_YAW",
+    "NAV_HEADING_OVER_GROUND",
+    "NAV_SPEED_OVER_GROUND",
+    "NAV_ALTITUDE",
+]
+for _sim in ("uSimMarine", "uSimMarineV22", "uSimMarineV23"):
+    CORRECTIONS[_sim] = {
+        "publishes": _NAV,
+        "why": 'NAV_* are posted as prefix + "_X" with the prefix NAV by default '
+        "(uSimMarineV22/USM_MOOSApp.cpp:600-648)",
+    }
+
+
+#: apps the extractor does not see as apps (no CMOOSApp class), described by hand
+EXTRA_APPS: dict[str, dict] = {
+    "pMOOSBridge": {
+        "source": "MOOS_Jul2724/MOOSEssentials/Essentials/pMOOSBridge",
+        "base": "",
+        "params": ["share", "udpshare", "loopback", "bridgefrequency", "udplisten"],
+        "params_from_libraries": {},
+        "param_forms": {},
+        "reports_unhandled": False,
+        "delegates_other_keys": False,
+        "publishes": [],
+        "publish_prefixes": [],
+        "publish_suffixes": [],
+        "publishes_dynamic": True,
+        "subscribes": [],
+        "subscribe_prefixes": [],
+        "subscribes_dynamic": True,
+        "needs_process_config": True,
+        "needs_origin": False,
+        "corrected": [
+            "CMOOSBridge is not a CMOOSApp: keys read by hand from MOOSBridge.cpp:205-401"
+        ],
+    },
+}
+
+
+def _git_commit(src: str) -> tuple[str, str]:
+    try:
+        out = subprocess.run(
+            ["git", "-C", src, "log", "-1", "--format=%H %cs"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+            check=False,
+        ).stdout.split()
+    except OSError:
+        return "", ""
+    return (out[0], out[1]) if len(out) == 2 else ("", "")
+
+
+def _cpp_files(folder: str) -> list[str]:
+    out = []
+    for dirpath, _dirs, files in os.walk(folder):
+        out.extend(os.path.join(dirpath, f) for f in files if f.endswith(CPP_EXT))
+    return sorted(out)
+
+
+def _linked_libs(folder: str) -> list[str]:
+    path = os.path.join(folder, "CMakeLists.txt")
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+    except OSError:
+        return []
+    libs: list[str] = []
+    for m in _LINK.finditer(text):
+        libs.extend(t for t in m.group(1).split() if _NAME.match(t))
+    return libs
+
+
+_DELEGATE = re.compile(
+    r"\belse\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
+)
+#: ``m_var_index = "WPT_INDEX";``: a variable a behavior posts under a default name
+_VAR_DEFAULT = re.compile(r"\b(m_\w*var\w*)\s*=\s*\"([A-Z][A-Z0-9_]*)\"\s*;")
+_INFO_VARS = re.compile(r"addInfoVars\(\s*\"([^\"]+)\"")
+_DELEGATE_MEMBER = re.compile(r"\b(m_\w+)\s*(?:\.|->)\s*setParam\s*\(\s*param\b")
+_TAIL = re.compile(r"\+\s*\"([A-Z0-9_]+)\"\s*\)?$")
+
+
+def _names(items: Iterable) -> tuple[list[str], list[str], list[str], bool]:
+    """Static names, known prefixes and suffixes of dynamic names, and whether any is unknown."""
+    static, prefixes, suffixes, dynamic = set(), set(), set(), False
+    for it in items:
+        n = it.name
+        if n.text is not None:
+            static.add(n.text)
+        elif n.prefix:
+            prefixes.add(n.prefix)
+        else:
+            m = _TAIL.search(n.source.strip())
+            if m and m.group(1).startswith("_"):
+                suffixes.add(m.group(1))
+            else:
+                dynamic = True
+    return sorted(static), sorted(prefixes), sorted(suffixes), dynamic
+
+
+def _rel(path: str, src: str) -> str:
+    return os.path.relpath(path, src).replace(os.sep, "/")
+
+
+def _read(path: str) -> str:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    except OSError:
+        return ""
+
+
+def generate(src: str, commit: str = "", repository: str = "") -> dict:
+    src = os.path.abspath(src)
+    sha, date = _git_commit(src)
+    commit = commit or sha
+    ivp = os.path.join(src, "ivp", "src")
+    core = [
+        os.path.join(src, "MOOS_Jul2724", "MOOSEssentials", "Essentials"),
+        os.path.join(src, "MOOS_Jul2724", "MOOSCore", "Core", "MOOSDB"),
+    ]
+    folders = sorted(
+        os.path.join(ivp, d) for d in os.listdir(ivp) if os.path.isdir(os.path.join(ivp, d))
+    )
+    for c in core:
+        if os.path.isdir(c):
+            if os.path.exists(os.path.join(c, "CMakeLists.txt")) and c.endswith("MOOSDB"):
+                folders.append(c)
+            else:
+                folders.extend(
+                    os.path.join(c, d)
+                    for d in sorted(os.listdir(c))
+                    if os.path.isdir(os.path.join(c, d))
+                )
+    files: list[str] = []
+    for f in folders:
+        files.extend(_cpp_files(f))
+    # every file, not only those that mention the MOOS API: parsers of
+    # configuration often live in GUI, settings and behavior classes
+    sources = {}
+    for path in files:
+        got = read_source(path)
+        if isinstance(got, SourceFile):
+            sources[path] = got
+    models = build_apps(sources)
+    top = set(folders)
+    by_folder = {m.folder: m for m in models}
+    # library folders by CMake target name (lib_marine_pid -> marine_pid)
+    lib_folder = {
+        os.path.basename(f)[4:]: f for f in folders if os.path.basename(f).startswith("lib_")
+    }
+
+    # every class, for behaviors' base chains
+    class_params: dict[str, set[str]] = {}
+    class_forms: dict[str, dict[str, dict[str, str]]] = {}
+    class_bases: dict[str, list[str]] = {}
+    class_file: dict[str, str] = {}
+    for m in models:
+        for cf in m.files:
+            for c in cf.classes:
+                class_bases.setdefault(c.name, []).extend(c.bases)
+                if cf.path.endswith((".cpp", ".cc", ".cxx")) or c.name not in class_file:
+                    class_file.setdefault(c.name, cf.path)
+    for m in models:
+        for cf in m.files:
+            if not cf.path.endswith((".cpp", ".cc", ".cxx")):
+                continue
+            stem = os.path.splitext(os.path.basename(cf.path))[0]
+            class_params.setdefault(stem, set()).update(_keys(cf))
+            class_forms.setdefault(stem, {}).update(_forms(cf, src))
+            if stem in class_file:
+                class_file[stem] = cf.path
+
+    apps: dict[str, dict] = {}
+    for m in models:
+        if not m.is_app or not m.process_name or m.folder not in top:
+            continue
+        if m.process_name_source == "folder" and not any(f.has_main for f in m.files):
+            continue
+        apps[m.process_name] = _app_entry(m, src, by_folder, lib_folder)
+    for name, entry in EXTRA_APPS.items():
+        apps.setdefault(name, dict(entry))
+    for name, corr in CORRECTIONS.items():
+        if name in apps:
+            entry = apps[name]
+            for key, vals in corr.items():
+                if key == "why":
+                    continue
+                if isinstance(vals, bool):
+                    entry[key] = vals
+                else:
+                    entry[key] = sorted(set(entry.get(key, [])) | set(vals))
+            entry.setdefault("corrected", []).append(corr["why"])
+
+    behaviors: dict[str, dict] = {}
+    for cls, path in sorted(class_file.items()):
+        if not cls.startswith("BHV_"):
+            continue
+        chain = _bhv_chain(cls, class_bases)
+        if not chain:
+            continue
+        params: set[str] = set()
+        forms: dict[str, dict[str, str]] = {}
+        for c in reversed(chain):
+            params |= class_params.get(c, set())
+            forms.update(class_forms.get(c, {}))
+        text = _read(path)
+        header = _read(os.path.splitext(path)[0] + ".h")
+        delegated = []
+        for member in sorted(set(_DELEGATE_MEMBER.findall(text))):
+            m_type = re.search(r"(\w+)\s*\*?\s*\b" + re.escape(member) + r"\s*;", header)
+            if m_type and m_type.group(1) in class_params:
+                params |= class_params[m_type.group(1)]
+                delegated.append(m_type.group(1))
+        posts = set(_POST.findall(text))
+        reads: set[str] = set()
+        for lit in _INFO_VARS.findall(text):
+            reads.update(v.strip() for v in lit.split(",") if _NAME.match(v.strip()))
+        for member, var in _VAR_DEFAULT.findall(text):
+            # ``addInfoVars(m_mark_variable)``: a name the behavior reads, else one it posts
+            if re.search(r"addInfoVars\(\s*" + re.escape(member) + r"\b", text):
+                reads.add(var)
+            else:
+                posts.add(var)
+        entry = {
+            "source": _rel(path, src),
+            "bases": chain[1:],
+            "params": sorted(p for p in params if _param_like(p)),
+            "posts": sorted(posts),
+            "reads": sorted(reads),
+            "params_from_members": delegated,
+            "param_forms": dict(sorted(forms.items())),
+        }
+        behaviors[cls] = entry
+    return {
+        "source": {
+            "repository": repository or "https://github.com/moos-ivp/moos-ivp",
+            "commit": commit,
+            "date": date,
+            "generator": "python -m moos_lint.catalogue.generate SRC",
+            "extractor": "moos_lint.cpp (tree-sitter)",
+        },
+        "base_classes": BASE_PARAMS,
+        "behavior_extra_params": BEHAVIOR_EXTRA_PARAMS,
+        "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
+        "behaviors": behaviors,
+    }
+
+
+_LINES: dict[str, list[str]] = {}
+_SUBJECT = re.compile(r"(\w+)\s*(?:[=!]=\s*|,\s*)$")
+
+
+def _line(path: str, n: int) -> str:
+    if path not in _LINES:
+        _LINES[path] = _read(path).splitlines()
+    lines = _LINES[path]
+    return lines[n - 1] if 0 < n <= len(lines) else ""
+
+
+def _key_sites(cf) -> list[tuple[str, int]]:
+    """The configuration keys of one file and their lines: literals compared with a key."""
+    out = []
+    for p in cf.config_params:
+        before = _line(cf.path, p.span.line)[: max(p.span.col - 1, 0)]
+        m = _SUBJECT.search(before)
+        if m and "val" in m.group(1).lower():
+            continue  # ``param_val == "true"``: a value, not a key
+        out.append((p.text, p.span.line))
+    return out
+
+
+def _keys(cf) -> set[str]:
+    return {k for k, _ in _key_sites(cf)}
+
+
+#: MBUtils setters (ivp/src/lib_mbutil/MBUtils.cpp) -> the value form they accept
+SETTER_FORMS = {
+    "setBooleanOnString": "bool",
+    "setDoubleOnString": "number",
+    "setNonNegDoubleOnString": "nonneg",
+    "setPosDoubleOnString": "positive",
+    "setUIntOnString": "uint",
+    "setPosUIntOnString": "posuint",
+    "setIntOnString": "int",
+}
+_SETTER = re.compile(r"\b(" + "|".join(SETTER_FORMS) + r")\s*\(")
+_LEAD = re.compile(r"\s*\{?\s*(?:\w+\s*=\s*|return\s*\(?\s*|ok\s*=\s*\w+\s*&&\s*)?")
+#: ``setX(member, value)``: the whole value goes to the setter
+_SETTER_CALL = re.compile(r"\w+\s*\(\s*[\w.>-]+\s*,\s*\w+\s*(?:,\s*\w+\s*)?\)")
+_NEXT_KEY = re.compile(r"(?:param|key|config)\w*\s*==\s*\"", re.IGNORECASE)
+
+
+def _forms(cf, src: str) -> dict[str, dict[str, str]]:
+    """Keys whose value goes straight to an MBUtils setter that rejects other forms."""
+    out: dict[str, dict[str, str]] = {}
+    bad: set[str] = set()
+    lines = _LINES.get(cf.path) or _read(cf.path).splitlines()
+    for key, n in _key_sites(cf):
+        text = lines[n - 1] if 0 < n <= len(lines) else ""
+        at = text.find('"' + key)
+        rest = text[at + len(key) + 2 :] if at >= 0 else text
+        window = [rest, *lines[n : n + 1]]
+        form = None
+        for i, chunk in enumerate(window):
+            if i and _NEXT_KEY.search(chunk):
+                break
+            m = _SETTER.search(chunk)
+            if m:
+                lead = chunk[: m.start()]
+                if i == 0:
+                    lead = lead.rsplit(")", 1)[-1] if ")" in lead else lead
+                call = _SETTER_CALL.match(chunk, m.start())
+                if _LEAD.fullmatch(lead) and call:
+                    form = SETTER_FORMS[m.group(1)]
+                break
+            if chunk.strip() not in ("", "{", ")", "){", ") {") and i:
+                break
+        if form is None:
+            bad.add(key)
+            continue
+        prev = out.get(key)
+        if prev and prev["form"] != form:
+            bad.add(key)
+        out[key] = {"form": form, "at": f"{_rel(cf.path, src)}:{n}"}
+    return {k: v for k, v in out.items() if k not in bad}
+
+
+def _param_like(p: str) -> bool:
+    return bool(re.match(r"^[a-z0-9_@:.\[\]+-]+$", p)) and len(p) < 60
+
+
+def _bhv_chain(cls: str, bases: dict[str, list[str]]) -> list[str]:
+    def walk(name: str, seen: frozenset) -> list[str]:
+        if name == "IvPBehavior":
+            return [name]
+        if name in seen:
+            return []
+        for b in bases.get(name, ()):
+            ch = walk(b, seen | {name})
+            if ch:
+                return [name, *ch]
+        return []
+
+    return walk(cls, frozenset())
+
+
+def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict:
+    text = "".join(_read(cf.path) for cf in m.files)
+    params = set().union(*(_keys(cf) for cf in m.files)) if m.files else set()
+    from_libs: dict[str, list[str]] = {}
+    for lib in _linked_libs(m.folder):
+        folder = lib_folder.get(lib)
+        lm = by_folder.get(folder) if folder else None
+        if lm is None or lm is m:
+            continue
+        got = set().union(*(_keys(cf) for cf in lm.files)) - params
+        if got:
+            from_libs[_rel(folder, src)] = sorted(p for p in got if _param_like(p))
+    forms: dict[str, dict[str, str]] = {}
+    for cf in m.files:
+        forms.update(_forms(cf, src))
+    delegates = bool(_DELEGATE.search(text))
+    base = m.base_chain[-1] if m.base_chain else ""
+    pubs, pub_prefixes, pub_suffixes, pub_dynamic = _names(m.publications)
+    subs, sub_prefixes, _sub_suffixes, sub_dynamic = _names(m.subscriptions)
+    entry = {
+        "source": _rel(m.folder, src),
+        "base": base,
+        "params": sorted(p for p in params if _param_like(p)),
+        "params_from_libraries": from_libs,
+        # value forms enforced by the app's parser: key -> {form, at: source line}
+        "param_forms": dict(sorted(forms.items())),
+        # IvP apps report "Unhandled config line" for any other key: the list is the parser's
+        "reports_unhandled": "reportUnhandledConfigWarning" in text and not delegates,
+        # a final ``else`` hands any other key to code whose keys are not listed
+        "delegates_other_keys": delegates,
+        "publishes": pubs,
+        "publish_prefixes": pub_prefixes,
+        "publish_suffixes": pub_suffixes,
+        "publishes_dynamic": pub_dynamic,
+        "subscribes": subs,
+        "subscribe_prefixes": sub_prefixes,
+        "subscribes_dynamic": sub_dynamic,
+        "needs_process_config": base.startswith("AppCasting") or "No config block" in text,
+        "needs_origin": bool(re.search(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"", text)),
+    }
+    return entry
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python -m moos_lint.catalogue.generate")
+    ap.add_argument("src", help="a moos-ivp work tree")
+    ap.add_argument("-o", "--output", default="-")
+    ap.add_argument("--commit", default="")
+    ap.add_argument("--repository", default="")
+    args = ap.parse_args(argv)
+    if not os.path.isdir(os.path.join(args.src, "ivp", "src")):
+        print(f"{args.src}: not a moos-ivp work tree (no ivp/src)", file=sys.stderr)
+        return 2
+    data = generate(args.src, args.commit, args.repository)
+    text = json.dumps(data, indent=1, sort_keys=False) + "\n"
+    if args.output == "-":
+        sys.stdout.write(text)
+    else:
+        with open(args.output, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,110 @@
+"""Building app models: C++ files grouped by folder, parsed once, with their process names."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+
+from moos_lint.cpp.cmake import executable_name
+from moos_lint.cpp.model import APP_BASES, AppModel, CppClass, CppFile
+from moos_lint.cpp.prefilter import mentions_moos
+from moos_lint.source import SourceFile, decode, read_bytes
+
+
+def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
+    """The C++ files that can be read and mention the MOOS API.
+
+    The prefilter runs on the bytes, before decoding: most C++ files of a
+    repository never mention the MOOS API and are never decoded. (The pattern is
+    ASCII, so bytes and the re-encoded text match alike.)
+    """
+    out: dict[str, SourceFile] = {}
+    for path in paths:
+        data = read_bytes(path)  # type: ignore[arg-type]
+        if isinstance(data, bytes) and mentions_moos(data):
+            src = decode(data, path)  # type: ignore[arg-type]
+            if isinstance(src, SourceFile):
+                out[path] = src
+    return out
+
+
+def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
+    """Parse the files of one folder and extract their facts."""
+    from moos_lint.cpp.extract import Extractor, ParsedFile, collect_tables
+    from moos_lint.cpp.parse import backend
+
+    be = backend()
+    parsed = []
+    for path, src in sorted(sources.items()):
+        # a bare CR ends a line for moos-lint (and for the spans), not for tree-sitter
+        text = src.text.replace("\r\n", "\n").replace("\r", "\n")
+        data = text.encode("utf-8", "replace")
+        tree = be.parse(data)
+        parsed.append(ParsedFile(path, data, tree, be.matches(tree)))
+    tables = collect_tables(parsed)
+    return [Extractor(pf, tables).run() for pf in parsed]
+
+
+def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
+    """One :class:`AppModel` per folder of relevant C++ files, linked."""
+    by_folder: dict[str, dict[str, SourceFile]] = {}
+    for path, src in sources.items():
+        by_folder.setdefault(os.path.dirname(path), {})[path] = src
+    apps = [AppModel(folder=f, files=parse_folder(s)) for f, s in sorted(by_folder.items())]
+    link_apps(apps)
+    return apps
+
+
+def link_apps(apps: list[AppModel]) -> None:
+    """Find each folder's app class (base chains may cross folders) and its process name."""
+    bases: dict[str, list[str]] = {}
+    for app in apps:
+        for f in app.files:
+            for c in f.classes:
+                bases.setdefault(c.name, []).extend(c.bases)
+    for app in apps:
+        app.app_class, app.base_chain, app.process_name = None, [], None
+        _find_app_class(app, bases)
+        if app.is_app:
+            _process_name(app)
+
+
+def base_chain(name: str, bases: dict[str, list[str]], seen: frozenset = frozenset()) -> list[str]:
+    """``[name, ..., MOOS base]`` when ``name`` derives from a MOOS app base, else []."""
+    if name in APP_BASES:
+        return [name]
+    if name in seen:
+        return []
+    for b in bases.get(name, ()):
+        chain = base_chain(b, bases, seen | {name})
+        if chain:
+            return [name, *chain]
+    return []
+
+
+def _find_app_class(app: AppModel, bases: dict[str, list[str]]) -> None:
+    classes: list[CppClass] = [c for f in app.files for c in f.classes]
+    candidates = [(c, base_chain(c.name, bases)) for c in classes]
+    candidates = [(c, ch) for c, ch in candidates if len(ch) > 1]
+    if not candidates:
+        return
+    derived_from = {b for c, _ in candidates for b in c.bases}
+    leaves = [(c, ch) for c, ch in candidates if c.name not in derived_from] or candidates
+    app.app_class, app.base_chain = leaves[0]
+
+
+def _process_name(app: AppModel) -> None:
+    for f in app.files:
+        if f.has_main and f.run_names:
+            app.process_name, app.process_name_span = f.run_names[0]
+            app.process_name_source = "run"
+            return
+    found = executable_name(app.folder)
+    if found is not None:
+        app.process_name = found[0]
+        app.process_name_source = "cmake"
+    elif any(f.has_main for f in app.files):
+        app.process_name = os.path.basename(os.path.normpath(app.folder))
+        app.process_name_source = "folder"
+    if app.app_class is not None:
+        app.process_name_span = app.app_class.span

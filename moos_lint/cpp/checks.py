@@ -1,0 +1,277 @@
+"""The C++ checks of moos-lint's rules: plain functions over an :class:`AppModel`.
+
+Each yields ``(span, message)``; the rule modules turn them into findings.
+Names that cannot be resolved statically are dynamic and never reported.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import re
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from moos_lint.cpp import angles
+from moos_lint.cpp.model import AppModel, Publication
+from moos_lint.diagnostics import Span
+
+Finding = tuple[Span, str]
+UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
+#: apps whose network traffic carries MOOS itself
+MOOS_NETWORK_APPS = ("pShare", "pMOOSBridge", "MOOSDB")
+
+
+def _named(app: AppModel, pred) -> Iterator[Publication]:
+    for p in app.publications:
+        if p.name.text is not None and p.value is not None and pred(p.name.text):
+            yield p
+
+
+def _app_label(app: AppModel) -> str:
+    return f"`{app.process_name}`" if app.process_name else "this app"
+
+
+def process_name_prefix(
+    app: AppModel, exempt: tuple[str, ...] = ("MOOSDB", "ANTLER", "pAntler")
+) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_app or not name or app.process_name_span is None:
+        return
+    if name.lower() in {e.lower() for e in exempt} or re.match(r"^[ipu][A-Z]", name):
+        return
+    if app.process_name_source == "folder" and name.islower():
+        return  # a generic folder (src, attic, test): the name is a guess
+    where = {
+        "run": "as given to Run()",
+        "cmake": "the CMake add_executable name",
+        "folder": "from its folder, as no Run() literal or add_executable names it",
+    }[app.process_name_source]
+    yield (
+        app.process_name_span,
+        f"process name `{name}` ({where}) does not start with i, p or u "
+        "(instrument, process, utility)",
+    )
+
+
+def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_instrument or not name or app.app_class is None:
+        return
+    if name.startswith("i"):
+        return
+    yield (
+        app.app_class.span,
+        f"`{app.app_class.name}` derives from CMOOSInstrument but its process is `{name}`: "
+        "instruments are named with an `i` prefix",
+    )
+
+
+def pure_app_does_io(app: AppModel, sockets: bool = False) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_app or not name or not re.match(r"^p[A-Z0-9_]", name):
+        return
+    uses = [u for u in app.io if u.device]
+    termios = [u for u in app.io if u.kind == "termios"]
+    if termios and any(u.kind == "serial" for u in uses):
+        uses = [*uses, *termios]
+    if sockets and not name.startswith(MOOS_NETWORK_APPS):
+        uses += [u for u in app.io if u.kind == "socket"]
+    if not uses:
+        return
+    first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))
+    kinds = sorted({u.detail for u in uses})
+    yield (
+        first.span,
+        f"{_app_label(app)} is a `p` app but does device I/O ({', '.join(kinds[:4])}): "
+        "an app that talks to hardware is an instrument, named with an `i` prefix",
+    )
+
+
+def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
+    seen: set[tuple] = set()
+    yaw_assignments = [
+        a for a in app.assignments if re.search(r"yaw", a.target, re.I) and not _rate(a.target)
+    ]
+    for p in _named(app, angles.is_yaw_var):
+        m = angles.heading_to_rad_without_minus(p.value.expanded)  # type: ignore[union-attr]
+        if m:
+            raw = p.value.text  # type: ignore[union-attr]
+            if not angles.heading_to_rad_without_minus(raw) and any(
+                a.function == p.function
+                and re.search(r"\b" + re.escape(a.target) + r"\b", raw)
+                and angles.heading_to_rad_without_minus(a.value.text)
+                for a in yaw_assignments
+            ):
+                continue  # reported where the yaw variable is assigned
+            seen.add((p.value.span.path, p.value.span.line))  # type: ignore[union-attr]
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` gets `{m.group(0).strip()}`: yaw is −heading·π/180 "
+                "(heading turns clockwise, yaw counter-clockwise); the minus sign is missing",
+            )
+    for a in yaw_assignments:
+        if (a.value.span.path, a.value.span.line) in seen:
+            continue
+        m = angles.heading_to_rad_without_minus(a.value.text)
+        if m:
+            seen.add((a.value.span.path, a.value.span.line))
+            yield (
+                a.value.span,
+                f"`{a.target}` is assigned `{m.group(0).strip()}`: yaw is −heading·π/180; "
+                "the minus sign is missing",
+            )
+
+
+def _rate(name: str) -> bool:
+    return bool(re.search(r"rate|dot|vel", name, re.I))
+
+
+def heading_in_radians(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_heading_var):
+        why = angles.looks_radian(p.value.expanded)  # type: ignore[union-attr]
+        if why:
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published in radians ({why}): "
+                "headings are degrees, 0 = north, clockwise",
+            )
+
+
+def depth_z_sign(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_z_var):
+        term = angles.depth_without_negation(p.value.expanded)  # type: ignore[union-attr]
+        if term:
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published from the depth `{term}` without negation: "
+                "Z is up, so Z = −depth",
+            )
+
+
+def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_latlong_var):
+        why = angles.looks_radian(p.value.expanded)  # type: ignore[union-attr]
+        if why and why != "an expression in π":
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published in radians ({why}): "
+                "latitude and longitude are decimal degrees",
+            )
+
+
+def yaw_in_degrees(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_yaw_var):
+        v = p.value
+        if angles.literal_over_two_pi(v.number):  # type: ignore[union-attr]
+            yield (
+                v.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published as {v.text}, more than 2π: "  # type: ignore[union-attr]
+                "a yaw is in radians",
+            )
+            continue
+        term = angles.heading_term(v.expanded)  # type: ignore[union-attr]
+        if term:
+            yield (
+                v.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published from `{term}`, a value in degrees, "
+                "without conversion: a yaw is in radians",
+            )
+
+
+def angle_not_wrapped(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_yaw_var):
+        e = p.value.expanded  # type: ignore[union-attr]
+        wrap = angles.outer_wrap(e)
+        if wrap == "2pi":
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is wrapped into [0, 2π): a yaw is wrapped to ±π "
+                "(MOOS_ANGLE_WRAP)",
+            )
+        elif wrap is None and angles.has_arithmetic(e) and not angles.converts_to_degrees(e):
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"`{p.name.text}` is published after arithmetic with no wrap to ±π: "
+                "wrap it with MOOS_ANGLE_WRAP",
+            )
+
+
+def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
+    for p in _named(app, angles.is_other_angle_var):
+        v = p.value
+        e = v.expanded  # type: ignore[union-attr]
+        if angles.literal_over_two_pi(v.number):  # type: ignore[union-attr]
+            why = f"{v.text} is more than 2π"  # type: ignore[union-attr]
+        elif angles.converts_to_degrees(e):
+            why = "converted to degrees"
+        elif re.fullmatch(r"\(?\s*-?\s*[\w.>-]*(?:_deg|Deg|_degrees|Degrees)\w*\s*\)?", e.strip()):
+            why = "the value's name says degrees"
+        else:
+            continue
+        yield (
+            v.span,  # type: ignore[union-attr]
+            f"`{p.name.text}` is published in degrees ({why}): "
+            "angles other than heading are radians",
+        )
+
+
+def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
+    seen = set()
+    items: list[tuple[Any, str]] = [(p, "published") for p in app.publications]
+    items += [(s, "subscribed to") for s in app.subscriptions]
+    for item, verb in items:
+        name = item.name.text
+        if name is None or not name or (item.name_span.path, item.name_span.line, name) in seen:
+            continue
+        seen.add((item.name_span.path, item.name_span.line, name))
+        check = name.replace("*", "").replace("?", "")
+        if not check or UPPER_SNAKE.match(check) or re.fullmatch(r"[A-Z0-9_]+", check):
+            continue
+        if re.search(r"\s", name) or any(fnmatch.fnmatchcase(name, a) for a in allow):
+            continue  # not a variable name (a message or a format), or allowed
+        yield (
+            item.name_span,
+            f"variable `{name}` ({verb}) is not UPPER_SNAKE_CASE",
+        )
+
+
+def unhandled_mail(app: AppModel) -> Iterator[Finding]:
+    if not any(f.has_on_new_mail for f in app.files) or any(f.mail_generic for f in app.files):
+        return
+    keys = app.mail_keys
+    exact = {k.text for k in keys if not (k.prefix or k.suffix)}
+    prefixes = [k.text for k in keys if k.prefix and k.text]
+    suffixes = [k.text for k in keys if k.suffix and k.text]
+    if not exact and not prefixes:
+        return  # no dispatch on literal keys: handling we cannot read
+    seen = set()
+    for s in app.subscriptions:
+        name = s.name.text
+        if name is None or s.name.wildcard or name in seen or name == "APPCAST_REQ":
+            continue
+        seen.add(name)
+        if name in exact or name.upper() in {e.upper() for e in exact}:
+            continue
+        if any(name.startswith(p) for p in prefixes) or any(name.endswith(x) for x in suffixes):
+            continue
+        if s.name.source.strip().startswith('"') is False:
+            continue  # a name built in code may be matched in code too
+        yield (
+            s.name_span,
+            f"{_app_label(app)} registers for `{name}` but its OnNewMail never handles it",
+        )
+
+
+def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterator[Finding]:
+    """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR."""
+    for p in app.publications:
+        name = p.name.text
+        if name is None:
+            continue
+        word = word_of(name)
+        if word:
+            yield (
+                p.name_span,
+                f"`{name}` names the actuator `{word}`: MOOS actuators are "
+                "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
+            )

@@ -1,0 +1,269 @@
+"""libclang deep mode (``--cpp-backend clang``): types, constant folding, ``#ifdef`` as compiled.
+
+It refines the tree-sitter model, never replaces it: only the translation units
+the fast path found relevant are parsed (with their flags from a
+``compile_commands.json``), and the cursor is looked up at each call position
+tree-sitter found (``Cursor.from_location``); whole ASTs are never walked in
+Python. When libclang, the compilation database or the system headers are
+missing, moos-lint says so once on stderr and keeps the tree-sitter results.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import os
+import shutil
+import subprocess
+import sys
+from functools import lru_cache
+from typing import Any
+
+from moos_lint.cpp.model import AppModel, Publication, Subscription
+
+_warned: set[str] = set()
+
+
+def warn_once(key: str, message: str) -> None:
+    if key not in _warned:
+        _warned.add(key)
+        print(f"moos-lint: warning: {message}", file=sys.stderr)
+
+
+def load_cindex() -> Any | None:
+    try:
+        import clang.cindex as ci
+    except ImportError:
+        warn_once(
+            "no-libclang",
+            "--cpp-backend clang needs libclang (pip install 'moos-lint[clang]'); "
+            "reading C++ with tree-sitter only",
+        )
+        return None
+    try:
+        ci.conf.lib  # noqa: B018  (loads the shared library)
+    except Exception as exc:  # a broken install: no libclang.so
+        warn_once("no-libclang", f"libclang cannot be loaded ({exc}); reading C++ with tree-sitter")
+        return None
+    return ci
+
+
+def find_compile_commands(settings: Any, folders: list[str]) -> str | None:
+    """The folder holding compile_commands.json: given, else at or above the linted code."""
+    given = getattr(settings, "compile_commands", None)
+    if given:
+        folder = os.path.dirname(given) if given.endswith(".json") else given
+        return folder if os.path.isfile(os.path.join(folder, "compile_commands.json")) else None
+    starts = [getattr(settings, "root", "."), *folders]
+    for start in starts:
+        here = os.path.abspath(start)
+        while True:
+            for sub in ("", "build"):
+                if os.path.isfile(os.path.join(here, sub, "compile_commands.json")):
+                    return os.path.join(here, sub)
+            parent = os.path.dirname(here)
+            if parent == here:
+                break
+            here = parent
+    return None
+
+
+@lru_cache(maxsize=1)
+def system_include() -> str | None:
+    """The compiler's own include folder (stddef.h ...), which the libclang wheel lacks."""
+    for cc in ("gcc", "cc", "clang"):
+        exe = shutil.which(cc)
+        if not exe:
+            continue
+        try:
+            out = subprocess.run(
+                [exe, "-print-file-name=include"], capture_output=True, text=True, timeout=10
+            ).stdout.strip()
+        except (OSError, subprocess.SubprocessError):
+            continue
+        if os.path.isabs(out) and os.path.isfile(os.path.join(out, "stddef.h")):
+            return out
+    return None
+
+
+def _args(cmd: Any, path: str) -> list[str]:
+    """A compile command's flags, without the compiler, the source and the output."""
+    raw = list(cmd.arguments)[1:]
+    out: list[str] = []
+    skip = False
+    for a in raw:
+        if skip:
+            skip = False
+            continue
+        if a in ("-o", "-MF", "-MT", "-MQ"):
+            skip = True
+            continue
+        if a in ("-c", "-MD", "-MMD") or os.path.abspath(os.path.join(cmd.directory, a)) == path:
+            continue
+        if a.startswith(("-I", "-isystem")) and len(a) > 2 and not os.path.isabs(a[2:]):
+            a = a[:2] + os.path.join(cmd.directory, a[2:])
+        out.append(a)
+    return out
+
+
+class _Eval:
+    """``clang_Cursor_Evaluate``, which the Python bindings do not wrap."""
+
+    def __init__(self, ci: Any):
+        lib = ci.conf.lib
+        self.ok = all(
+            hasattr(lib, f)
+            for f in (
+                "clang_Cursor_Evaluate",
+                "clang_EvalResult_getKind",
+                "clang_EvalResult_getAsDouble",
+                "clang_EvalResult_getAsLongLong",
+                "clang_EvalResult_dispose",
+            )
+        )
+        if not self.ok:
+            return
+        lib.clang_Cursor_Evaluate.argtypes = [ci.Cursor]
+        lib.clang_Cursor_Evaluate.restype = ctypes.c_void_p
+        lib.clang_EvalResult_getKind.argtypes = [ctypes.c_void_p]
+        lib.clang_EvalResult_getKind.restype = ctypes.c_int
+        lib.clang_EvalResult_getAsDouble.argtypes = [ctypes.c_void_p]
+        lib.clang_EvalResult_getAsDouble.restype = ctypes.c_double
+        lib.clang_EvalResult_getAsLongLong.argtypes = [ctypes.c_void_p]
+        lib.clang_EvalResult_getAsLongLong.restype = ctypes.c_longlong
+        lib.clang_EvalResult_dispose.argtypes = [ctypes.c_void_p]
+        self.lib = lib
+
+    def number(self, cursor: Any) -> float | None:
+        if not self.ok:
+            return None
+        res = self.lib.clang_Cursor_Evaluate(cursor)
+        if not res:
+            return None
+        try:
+            kind = self.lib.clang_EvalResult_getKind(res)
+            if kind == 1:  # CXEval_Int
+                return float(self.lib.clang_EvalResult_getAsLongLong(res))
+            if kind == 2:  # CXEval_Float
+                return float(self.lib.clang_EvalResult_getAsDouble(res))
+            return None
+        finally:
+            self.lib.clang_EvalResult_dispose(res)
+
+
+def _byte_col(line_text: str, col: int) -> int:
+    return len(line_text[: col - 1].encode("utf-8")) + 1
+
+
+def enrich(apps: list[AppModel], settings: Any) -> None:
+    """Refine the app models with libclang; warn once and keep them as they are on failure."""
+    ci = load_cindex()
+    if ci is None:
+        return
+    folders = [a.folder for a in apps]
+    db_dir = find_compile_commands(settings, folders)
+    if db_dir is None:
+        warn_once(
+            "no-db",
+            "--cpp-backend clang needs a compile_commands.json (give it with --compile-commands "
+            "or configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON); "
+            "reading C++ with tree-sitter only",
+        )
+        return
+    try:
+        db = ci.CompilationDatabase.fromDirectory(db_dir)
+    except ci.CompilationDatabaseError:
+        warn_once("no-db", f"cannot read {db_dir}/compile_commands.json; using tree-sitter only")
+        return
+    inc = system_include()
+    if inc is None:
+        warn_once(
+            "no-headers",
+            "no system compiler include folder found (gcc -print-file-name=include): "
+            "libclang may not find <stddef.h>",
+        )
+    index = ci.Index.create()
+    ev = _Eval(ci)
+    for app in apps:
+        _enrich_app(ci, index, db, inc, ev, app)
+
+
+def _enrich_app(ci: Any, index: Any, db: Any, inc: str | None, ev: _Eval, app: AppModel) -> None:
+    calls: dict[str, list[Publication | Subscription]] = {}
+    for f in app.files:
+        items = [*f.publications, *f.subscriptions]
+        if items:
+            calls[f.path] = items
+    if not calls:
+        return
+    done: set[str] = set()
+    units = [f.path for f in app.files if not f.path.endswith((".h", ".hpp"))]
+    for path in units:
+        cmds = db.getCompileCommands(path)
+        if not cmds:
+            continue
+        args = _args(cmds[0], path)
+        if inc:
+            args += ["-isystem", inc]
+        try:
+            tu = index.parse(path, args)
+        except ci.TranslationUnitLoadError:
+            warn_once("tu:" + path, f"libclang could not parse {path}; using tree-sitter for it")
+            continue
+        fatal = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Fatal]
+        if fatal:
+            warn_once(
+                "fatal",
+                f"libclang: {fatal[0].spelling} in {fatal[0].location.file}: headers are missing, "
+                "so C++ is read with tree-sitter where libclang cannot see the code",
+            )
+            continue
+        app.backend = "clang"
+        for fpath, items in calls.items():
+            if fpath in done:
+                continue
+            cf = tu.get_file(fpath)
+            if cf is None:
+                continue
+            done.add(fpath)
+            try:
+                with open(fpath, encoding="utf-8", errors="replace") as fh:
+                    lines = fh.read().split("\n")
+            except OSError:
+                continue
+            for item in items:
+                _lookup(ci, tu, cf, lines, item, ev)
+
+
+def _lookup(ci: Any, tu: Any, cf: Any, lines: list[str], item: Any, ev: _Eval) -> None:
+    span = item.name_span
+    if span.line > len(lines):
+        return
+    text = lines[span.line - 1]
+    paren = text.rfind("(", 0, span.col - 1)
+    if paren < 0:
+        return
+    loc = ci.SourceLocation.from_position(tu, cf, span.line, _byte_col(text, paren + 1))
+    cursor = ci.Cursor.from_location(tu, loc)
+    if cursor is None:
+        return
+    if cursor.kind in (ci.CursorKind.COMPOUND_STMT, ci.CursorKind.TRANSLATION_UNIT):
+        item.active = False  # compiled out by #if / #ifdef
+        return
+    if cursor.kind != ci.CursorKind.CALL_EXPR or not isinstance(item, Publication):
+        return
+    args = list(cursor.get_arguments())
+    if len(args) < 2 or item.value is None:
+        return
+    decl = cursor.referenced
+    if decl is not None:
+        params = list(decl.get_arguments())
+        if len(params) >= 2:
+            spelled = params[1].type.get_canonical().spelling
+            item.value.type = (
+                "string"
+                if "basic_string" in spelled or "char" in spelled
+                else (spelled.replace("const ", "").strip())
+            )
+    number = ev.number(args[1])
+    if number is not None and item.value.number is None:
+        item.value.number = number

@@ -1,0 +1,37 @@
+"""C++ files as lint units: one unit per folder (an app), carrying its :class:`AppModel`.
+
+:func:`build_cpp_units` parses the files, joins what crosses folders (base
+classes) and runs the libclang deep mode when it is asked for.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from moos_lint.cpp.app import build_apps, read_relevant
+from moos_lint.cpp.model import AppModel
+
+
+def build_cpp_units(run: Any, paths: list[str]) -> list[Any]:
+    """Units for the C++ files in ``paths``: one per folder, in folder order."""
+    from moos_lint.engine import Unit
+    from moos_lint.nsplug import Expansion
+    from moos_lint.registry import Kind
+
+    sources = read_relevant(paths)
+    run.sources.update(sources)
+    apps = {a.folder: a for a in build_apps(sources)}
+    if getattr(run.settings, "cpp_backend", "tree-sitter") == "clang" and apps:
+        from moos_lint.cpp.clang import enrich
+
+        enrich(list(apps.values()), run.settings)
+    units = []
+    folders: dict[str, list[str]] = {}
+    for p in paths:
+        folders.setdefault(os.path.dirname(p), []).append(p)
+    for folder, files in sorted(folders.items()):
+        app = apps.get(folder) or AppModel(folder=folder)
+        first = sorted(f.path for f in app.files)[0] if app.files else sorted(files)[0]
+        units.append(Unit(path=first, kind=Kind.CPP, expansion=Expansion(path=first), cpp=app))
+    return units

@@ -1,0 +1,134 @@
+"""Linting one open document the way ``moos-lint check`` lints its folder.
+
+A document is never linted alone: whether a fragment's ``#include`` resolves,
+or whether a suppression is used, depends on the missions that include it. A
+document is linted together with the mission and behavior files beside it and
+with the open documents that include it, and only the findings that land in
+the document are kept. A finding inside an included file that is not open is
+shown on the ``#include`` line that pulls it in.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from moos_lint.config import ConfigError, Settings, resolve_settings
+from moos_lint.diagnostics import Diagnostic, IncludeSite, Span
+from moos_lint.discovery import DEFAULT_EXCLUDE, _excluded, kind_of
+from moos_lint.engine import Unit, lint_files
+from moos_lint.lsp.documents import memory_reader, norm
+from moos_lint.nsplug import FileCache
+
+#: At most this many neighbouring files are linted with a document.
+MAX_NEIGHBOURS = 64
+
+
+@dataclass(slots=True)
+class Finding:
+    """A finding as the document shows it."""
+
+    diagnostic: Diagnostic
+    #: where it shows in the document: the finding's own span, or the ``#include``
+    #: line that leads to it when it lies in another file
+    span: Span
+    via: IncludeSite | None = None
+
+    @property
+    def fix(self):
+        return self.diagnostic.fix if self.via is None else None
+
+
+@dataclass(slots=True)
+class Analysis:
+    path: str
+    findings: list[Finding] = field(default_factory=list)
+    reads: set[str] = field(default_factory=set)
+    includes: set[str] = field(default_factory=set)
+    settings: Settings | None = None
+    config_error: str | None = None
+    unit: Unit | None = None
+
+
+def lintable(path: str) -> bool:
+    """True for the files the engine lints (mission, fragment, behavior, ...)."""
+    return kind_of(path) is not None
+
+
+def settings_for(path: str) -> tuple[Settings, str | None]:
+    """The settings ``moos-lint check`` would use for ``path``, and a config error."""
+    try:
+        return resolve_settings([Path(path)], None), None
+    except ConfigError as exc:
+        return Settings(root=os.path.dirname(path)), str(exc)
+
+
+def neighbours(path: str, settings: Settings) -> list[str]:
+    """The lintable files beside ``path`` that the configuration does not exclude."""
+    folder = os.path.dirname(path)
+    patterns = [*DEFAULT_EXCLUDE, *settings.exclude]
+    out: list[str] = []
+    try:
+        entries = sorted(os.scandir(folder), key=lambda e: e.name)
+    except OSError:
+        return out
+    for entry in entries:
+        if len(out) >= MAX_NEIGHBOURS:
+            break
+        if not lintable(entry.name):
+            continue
+        try:
+            if not entry.is_file():
+                continue
+        except OSError:
+            continue
+        rel = os.path.normpath(os.path.relpath(entry.path, settings.root))
+        if _excluded(rel, entry.name, patterns):
+            continue
+        out.append(norm(entry.path))
+    return out
+
+
+def analyse(
+    path: str,
+    texts: dict[str, str],
+    includers: list[str] = (),
+    settings: Settings | None = None,
+) -> Analysis:
+    """Lint the document at ``path``; ``texts`` holds every open document's text."""
+    path = norm(path)
+    if not lintable(path):
+        return Analysis(path, settings=settings)
+    config_error = None
+    if settings is None:
+        settings, config_error = settings_for(path)
+    out = Analysis(path, settings=settings, config_error=config_error)
+    files = [path]
+    for other in [*includers, *neighbours(path, settings)]:
+        if other not in files:
+            files.append(other)
+    seen: set[str] = set()
+    result = lint_files(files, settings, cache=FileCache(reader=memory_reader(texts, seen)))
+    out.reads = seen | {path}
+    for unit in result.units:
+        if unit.path == path:
+            out.unit = unit
+            out.includes = set(unit.expansion.sources) - {path}
+    shown: set[tuple] = set()
+    for d in result.diagnostics:
+        if d.span.path == path:
+            out.findings.append(Finding(d, d.span))
+            continue
+        if d.span.path in texts:
+            continue  # an open document: it shows there
+        sites = [s for s in d.chain if s.path == path]
+        if not sites:
+            continue
+        site = sites[-1]
+        key = (site.line, d.code, d.span.path, d.span.line, d.message)
+        if key in shown:
+            continue
+        shown.add(key)
+        out.findings.append(Finding(d, Span(path, site.line, 1, site.line, 1), via=site))
+    return out

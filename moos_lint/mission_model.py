@@ -1,0 +1,439 @@
+"""The mission model: launched processes, their configuration, their interfaces and behaviors.
+
+One :class:`MissionModel` per mission (a ``.moos`` file with an ANTLER block,
+after nsplug expansion), built once and cached on the lint run
+(:func:`mission_model`). It joins
+
+- the Run lines of the ANTLER block (the launched processes, aliases followed
+  to their ProcessConfig block);
+- the app catalogue (:mod:`moos_lint.catalogue`: the linted C++, user
+  catalogues, the stock catalogue) for what each app publishes and reads;
+- the variables that configuration values name (:mod:`moos_lint.variables`:
+  uTimerScript events, pMarineViewer buttons, pShare routes, ...);
+- the behavior files of every launched pHelmIvP.
+
+**Finding the behavior files.** ``behaviors = FILE`` is opened next to the
+mission. A name holding an nsplug macro (``targ_$(VNAME).bhv``), or a
+``targ_*.bhv`` that does not exist yet, is the output of the launch script:
+it runs nsplug on a ``meta_*.bhv`` template beside the mission. The model
+then uses the template: ``meta_`` + the rest of the name when that file
+exists (``targ_shoreside.bhv`` -> ``meta_shoreside.bhv``), otherwise the only
+``meta_*.bhv`` in the folder, or the only ``meta_*vehicle*.bhv``; for a
+macro name with one template per vehicle (``meta_gilda.bhv``,
+``meta_henry.bhv``), all of them but ``meta_shoreside*``: the model is then
+the union of the vehicles, which can only hide findings, not make them.
+Otherwise, when the name is a macro pattern, the only existing file the
+pattern matches. With no candidate or no way to choose, no behavior file is
+used and the model says so (:attr:`MissionModel.unresolved_behaviors`).
+
+**Variables from outside the mission.** A mission that receives variables
+from another community (pShare with an ``input`` route, uFldNodeBroker,
+uFldShoreBroker, pMOOSBridge) may get any variable that the other missions
+of its folder publish; the model adds those. It also counts ``VAR=value``
+pairs that a ``uPokeDB`` command in a shell script beside the mission posts.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import glob
+import os
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from moos_lint.catalogue import AppInfo, Catalogue, catalogue_for
+from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
+from moos_lint.nsplug import Line
+from moos_lint.variables import (
+    PUBLISH,
+    SUBSCRIBE,
+    VarRef,
+    app_of,
+    bare_name,
+    bhv_variables,
+    block_variables,
+)
+
+#: apps that bring variables in from other MOOS communities
+INBOUND_APPS = {"pshare", "ufldnodebroker", "ufldshorebroker", "pmoosbridge", "imoosgateway"}
+#: parameters whose value is a logic condition a process waits on
+CONDITION_PARAMS = {
+    "condition",
+    "set-condition",
+    "lead_condition",
+    "pass_condition",
+    "fail_condition",
+}
+_POKE = re.compile(r"\buPokeDB\b([^\n;|&]*)")
+_PAIR = re.compile(r"(?:^|\s)['\"]?([A-Za-z_][A-Za-z0-9_]*)\s*:?=")
+_MACRO = re.compile(r"[$%]\([^)]*\)")
+
+
+@dataclass
+class Process:
+    """One Run line: the process it starts and what the model knows of it."""
+
+    name: str  # the MOOS name (alias) = the ProcessConfig block it reads
+    binary: str  # the program, without folder
+    run: RunLine
+    block: Block | None = None
+    app: AppInfo | None = None
+
+
+@dataclass
+class Publisher:
+    """Where a variable comes from."""
+
+    var: str
+    who: str  # process name, behavior, ``uPokeDB`` or ``<mission> (other community)``
+    how: str  # "app" | "config" | "behavior" | "poke" | "external"
+    line: Line | None = None
+    process: str | None = None  # the launched process, when it is one of the mission's
+
+
+@dataclass
+class MissionModel:
+    path: str
+    moos: MoosFile
+    catalogue: Catalogue
+    processes: list[Process] = field(default_factory=list)
+    behavior_files: list[tuple[str, BehaviorFile]] = field(default_factory=list)
+    unresolved_behaviors: list[str] = field(default_factory=list)
+    #: every variable reference of the mission's config and behavior files
+    refs: list[VarRef] = field(default_factory=list)
+    publishers: dict[str, list[Publisher]] = field(default_factory=dict)
+    #: launched processes the catalogue does not know
+    unknown_apps: list[Process] = field(default_factory=list)
+    #: processes bringing variables in from other communities
+    inbound: list[Process] = field(default_factory=list)
+    #: the other missions of the folder, whose publications count as inbound
+    sibling_missions: list[str] = field(default_factory=list)
+    #: apps whose publications are not all known statically (name -> binary)
+    dynamic_apps: list[Process] = field(default_factory=list)
+    #: id(VarRef) -> the process whose configuration (or behavior file) holds it
+    ref_process: dict[int, str] = field(default_factory=dict)
+
+    # ------------------------------------------------------------ queries
+    def published_by(self, var: str) -> list[Publisher]:
+        """Who publishes ``var`` (exact names, then prefixes and suffixes of dynamic names)."""
+        found = list(self.publishers.get(var, ()))
+        if found:
+            return found
+        for p in self.processes:
+            if p.app is not None and p.app.publishes_var(var):
+                found.append(Publisher(var, p.name, "app", process=p.name))
+        for name, pubs in self.publishers.items():
+            if "*" in name and _glob_match(name, var):
+                found.extend(pubs)
+        return found
+
+    @property
+    def waits(self) -> list[VarRef]:
+        """Variables a launched app's or a behavior's condition waits for."""
+        return [r for r in self.refs if r.role == SUBSCRIBE and r.param in CONDITION_PARAMS]
+
+    @property
+    def complete(self) -> bool:
+        """Whether every launched process is known to the model."""
+        return not self.unknown_apps and not self.unresolved_behaviors
+
+    def consumers(self) -> dict[str, list[tuple[str, VarRef | None]]]:
+        """Variable -> the processes (or behaviors) that read it."""
+        out: dict[str, list[tuple[str, VarRef | None]]] = {}
+        for r in self.refs:
+            if r.role == SUBSCRIBE:
+                name = bare_name(r.name)
+                if name:
+                    out.setdefault(name, []).append((r.app, r))
+        for p in self.processes:
+            if p.app is None:
+                continue
+            for var in p.app.subscribes:
+                out.setdefault(var, []).append((p.name, None))
+        return out
+
+
+def _glob_match(pattern: str, var: str) -> bool:
+    rx = re.escape(pattern).replace(r"\*", ".*").replace(r"\?", ".")
+    return re.fullmatch(rx, var) is not None
+
+
+def _norm(path: str) -> str:
+    return os.path.normpath(os.path.abspath(path))
+
+
+def behavior_paths(value: str, folder: str) -> tuple[list[str], bool]:
+    """The behavior file(s) a ``behaviors = VALUE`` line names; and whether it was resolved.
+
+    See the module docs for templates (``targ_$(VNAME).bhv`` -> ``meta_*.bhv``).
+    """
+    name = "".join(value.split())
+    if len(name) >= 2 and name[0] == name[-1] == '"':
+        name = name[1:-1]
+    if not name:
+        return [], True
+    if not has_macro(name):
+        path = name if os.path.isabs(name) else os.path.join(folder, name)
+        if os.path.isfile(path):
+            return [_norm(path)], True
+    base = os.path.basename(name)
+    where = os.path.join(folder, os.path.dirname(name))
+    ext = os.path.splitext(base)[1] or ".bhv"
+    if base.startswith("targ_"):
+        meta = os.path.join(where, "meta_" + base[len("targ_") :])
+        if not has_macro(meta) and os.path.isfile(meta):
+            return [_norm(meta)], True
+        metas = sorted(glob.glob(os.path.join(glob.escape(where), "meta_*" + ext)))
+        if len(metas) == 1:
+            return [_norm(metas[0])], True
+        vehicle = [m for m in metas if "vehicle" in os.path.basename(m)]
+        if len(vehicle) == 1 and has_macro(name):
+            return [_norm(vehicle[0])], True
+        if metas and has_macro(name):
+            # one template per vehicle (meta_gilda.bhv, meta_henry.bhv): use them all
+            return [_norm(m) for m in metas if "shoreside" not in os.path.basename(m)], True
+        return [], False
+    if has_macro(name):
+        pattern = _MACRO.sub("*", name)
+        path = pattern if os.path.isabs(pattern) else os.path.join(folder, pattern)
+        hits = sorted(glob.glob(path))
+        if len(hits) == 1:
+            return [_norm(hits[0])], True
+        return [], False
+    return [], True  # a missing plain file: missing-behavior-file reports it
+
+
+def _pokes(folder: str) -> dict[str, str]:
+    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``."""
+    out: dict[str, str] = {}
+    for script in sorted(glob.glob(os.path.join(glob.escape(folder), "*.sh"))):
+        try:
+            with open(script, encoding="utf-8", errors="replace") as fh:
+                text = fh.read(200_000)
+        except OSError:
+            continue
+        for m in _POKE.finditer(text):
+            for pair in _PAIR.finditer(m.group(1)):
+                out.setdefault(pair.group(1), os.path.basename(script))
+    return out
+
+
+def _block_for(moos: MoosFile, name: str) -> Block | None:
+    low = name.lower()
+    for b in moos.blocks:  # MOOS takes the first block of that name
+        if b.lname == low:
+            return b
+    return None
+
+
+class _Builder:
+    def __init__(self, run: Any, path: str, moos: MoosFile):
+        self.run = run
+        self.cat = catalogue_for(run)
+        self.m = MissionModel(path=path, moos=moos, catalogue=self.cat)
+
+    def add(
+        self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
+    ) -> None:
+        name = bare_name(var)
+        if name is None or not name:
+            return
+        self.m.publishers.setdefault(var if "*" in var else name, []).append(
+            Publisher(name, who, how, line, process)
+        )
+
+    def build(self) -> MissionModel:
+        m = self.m
+        seen: set[str] = set()
+        for run in m.moos.runs:
+            if not run.name or has_macro(run.name) or has_macro(run.binary):
+                continue
+            binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1].strip()
+            if run.name.lower() in seen:
+                continue
+            seen.add(run.name.lower())
+            block = _block_for(m.moos, run.name)
+            proc = Process(run.name, binary, run, block, self.cat.app(binary))
+            m.processes.append(proc)
+            low = binary.lower()
+            if low in ("moosdb", "pantler"):
+                continue
+            if proc.app is None:
+                m.unknown_apps.append(proc)
+            elif proc.app.publishes_dynamic:
+                m.dynamic_apps.append(proc)
+            if low in INBOUND_APPS:
+                m.inbound.append(proc)
+        for proc in m.processes:
+            self._process(proc)
+        for proc in m.processes:
+            if proc.binary.lower() == "phelmivp" and proc.block is not None:
+                self._helm(proc)
+        folder = os.path.dirname(m.path)
+        for var, script in _pokes(folder).items():
+            self.add(var, f"uPokeDB ({script})", "poke")
+        if m.inbound:
+            self._siblings(folder)
+        return m
+
+    def _process(self, proc: Process) -> None:
+        if proc.app is not None:
+            for var in proc.app.publishes:
+                self.add(var, proc.name, "app", process=proc.name)
+        if proc.block is None:
+            return
+        app = app_of(proc.block.name, {proc.name.lower(): proc.binary})
+        if app is None:
+            return
+        for ref in block_variables(proc.block, app):
+            self.m.refs.append(ref)
+            self.m.ref_process[id(ref)] = proc.name
+            if ref.role == PUBLISH:
+                self.add(ref.name, proc.name, "config", ref.line, proc.name)
+
+    def _helm(self, proc: Process) -> None:
+        folder = os.path.dirname(self.m.path)
+        for param in proc.block.get("behaviors"):
+            paths, ok = behavior_paths(param.value, folder)
+            if not ok:
+                self.m.unresolved_behaviors.append(param.value.strip())
+            for path in paths:
+                if any(p == path for p, _ in self.m.behavior_files):
+                    continue
+                bf = self._parse_bhv(path)
+                if bf is None:
+                    continue
+                self.m.behavior_files.append((path, bf))
+                for ref in bhv_variables(bf):
+                    self.m.refs.append(ref)
+                    self.m.ref_process[id(ref)] = proc.name
+                    if ref.role == PUBLISH:
+                        who = f"{proc.name}: {ref.app}"
+                        self.add(ref.name, who, "behavior", ref.line, proc.name)
+                for bhv in bf.behaviors:
+                    info = self.cat.behavior(bhv.kind)
+                    if info is not None:
+                        for var in info.posts:
+                            who = f"{proc.name}: {bhv.kind}"
+                            self.add(var, who, "behavior", process=proc.name)
+
+    def _parse_bhv(self, path: str) -> BehaviorFile | None:
+        from moos_lint.parsers.bhv import parse_bhv
+
+        pre = getattr(self.run, "preprocessor", None)
+        if pre is None:
+            return None
+        exp = pre.expand(path)
+        if exp.read_problem is not None:
+            return None
+        return _parsed(self.run, pre, exp, parse_bhv)
+
+    def _siblings(self, folder: str) -> None:
+        from moos_lint.parsers.moos import parse_moos
+
+        pre = getattr(self.run, "preprocessor", None)
+        if pre is None:
+            return
+        me = _norm(self.m.path)
+        for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos"))):
+            if _norm(cand) == me or os.path.basename(cand).startswith("targ_"):
+                continue
+            exp = pre.expand(cand)
+            if exp.read_problem is not None:
+                continue
+            moos = _parsed(self.run, pre, exp, parse_moos)
+            if not moos.is_mission:
+                continue
+            self.m.sibling_missions.append(_norm(cand))
+            sub = _sibling_model(self.run, _norm(cand), moos)
+            who = f"{os.path.basename(cand)} (another community)"
+            for var, pubs in sub.publishers.items():
+                for p in pubs:
+                    self.add(var, who, "external", p.line)
+            for ref in sub.refs:
+                # uFldShoreBroker ``qbridge = X`` posts X_ALL and X_<VNAME> to the vehicles as X
+                if ref.param == "qbridge":
+                    self.add(ref.name, who, "external", ref.line)
+            for proc in sub.processes:
+                if proc.app is not None:
+                    for var in proc.app.publishes:
+                        self.add(var, who, "external")
+                    for pre_ in proc.app.publish_prefixes:
+                        self.add(pre_ + "*", who, "external")
+                    for suf in proc.app.publish_suffixes:
+                        self.add("*" + suf, who, "external")
+
+
+def _run_memo(run: Any, name: str) -> dict:
+    """A dict kept on the lint run (a fresh one when the run takes no attributes)."""
+    memo = getattr(run, name, None)
+    if memo is None:
+        memo = {}
+        with contextlib.suppress(AttributeError):
+            setattr(run, name, memo)
+    return memo
+
+
+def _parsed(run: Any, pre: Any, exp: Any, parse: Any) -> Any:
+    """``parse(exp)``, once per run when the run's preprocessor shares its expansions.
+
+    Rules only read models, so a behavior file used by many missions, or a
+    sibling mission, is parsed once.
+    """
+    if getattr(pre, "memo", None) is None:
+        return parse(exp)
+    memo = _run_memo(run, "_parsed_models")
+    key = (exp.path, parse.__name__)
+    if key not in memo:
+        memo[key] = parse(exp)
+    return memo[key]
+
+
+def _sibling_model(run: Any, path: str, moos: MoosFile) -> MissionModel:
+    """The model of another mission of the folder, without its own siblings; once per run."""
+    memo = _run_memo(run, "_sibling_models")
+    if path not in memo:
+        other = _Builder(run, path, moos)
+        other.m.inbound = []  # do not recurse
+        memo[path] = _build_without_siblings(other)
+    return memo[path]
+
+
+def _build_without_siblings(b: _Builder) -> MissionModel:
+    m = b.m
+    for run in m.moos.runs:
+        if not run.name or has_macro(run.name) or has_macro(run.binary):
+            continue
+        binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1].strip()
+        proc = Process(run.name, binary, run, _block_for(m.moos, run.name), b.cat.app(binary))
+        m.processes.append(proc)
+    for proc in m.processes:
+        b._process(proc)
+        if proc.binary.lower() == "phelmivp" and proc.block is not None:
+            b._helm(proc)
+    return m
+
+
+def mission_model(ctx_or_run: Any, path: str | None = None, moos: MoosFile | None = None):
+    """The model of a mission, built once per lint run.
+
+    Call with a rule's context (``mission_model(ctx)``) or with a run, a path
+    and its parsed file.
+    """
+    run = getattr(ctx_or_run, "run", ctx_or_run)
+    if path is None:
+        path = ctx_or_run.unit.path
+        moos = ctx_or_run.moos
+    cache = getattr(run, "_mission_models", None)
+    if cache is None:
+        cache = {}
+        with contextlib.suppress(AttributeError):
+            run._mission_models = cache
+    key = _norm(path)
+    if key not in cache:
+        cache[key] = _Builder(run, path, moos).build()
+    return cache[key]
+
+
+__all__ = ["MissionModel", "Process", "Publisher", "behavior_paths", "mission_model"]

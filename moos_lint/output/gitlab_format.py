@@ -1,0 +1,54 @@
+"""GitLab Code Quality report (a JSON array, the ``codequality`` artifact).
+
+A fingerprint identifies a finding across commits, so it must not change when
+unrelated lines move: it hashes the rule code, the file's path, the message
+with any line numbers taken out, and the text of the finding's line (without
+its indentation). Identical findings in one file are told apart by their rank.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+
+from moos_lint.diagnostics import Severity
+from moos_lint.output import display_path
+
+SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
+_LINE_REFS = re.compile(r"(?i)(?::\d+(?::\d+)?\b|\blines?\s+\d+)")
+
+
+def line_text(result, d) -> str:
+    src = getattr(result, "sources", {}).get(d.span.path)
+    if src is None:
+        return ""
+    return src.line(d.span.line).strip()
+
+
+def fingerprint_key(code: str, path: str, message: str, text: str) -> str:
+    return "\x1f".join((code, path, _LINE_REFS.sub(":#", message), text))
+
+
+def render(result, cwd: str, **_kw) -> str:
+    seen: dict[str, int] = {}
+    out = []
+    for d in result.diagnostics:
+        path = display_path(d.span.path, cwd).replace("\\", "/")
+        key = fingerprint_key(d.code, path, d.message, line_text(result, d))
+        rank = seen.get(key, 0)
+        seen[key] = rank + 1
+        digest = hashlib.sha256(f"{key}\x1f{rank}".encode("utf-8", "surrogatepass")).hexdigest()
+        out.append(
+            {
+                "description": f"{d.code} [{d.name}] {d.message}",
+                "check_name": d.code,
+                "fingerprint": digest[:32],
+                "severity": SEVERITIES[d.severity],
+                "location": {
+                    "path": path,
+                    "lines": {"begin": d.span.line, "end": max(d.span.end_line, d.span.line)},
+                },
+            }
+        )
+    return json.dumps(out, indent=2) + "\n"

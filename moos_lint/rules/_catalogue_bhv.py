@@ -1,0 +1,65 @@
+"""Helpers for the behavior-catalogue rules: known behavior kinds, the repo's own classes."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+
+from moos_lint.catalogue import catalogue_for
+
+_SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
+_CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp")
+
+
+def repo_classes(ctx) -> set[str]:
+    """Lower-case names of the C++ files under the project root (``BHV_Pulse.cpp`` -> bhv_pulse).
+
+    MOOS-IvP behaviors live in a file named after their class, so a kind with
+    such a file is the repo's own behavior. Cached on the run.
+    """
+    run = ctx.run
+    cached = getattr(run, "_repo_cpp_stems", None)
+    if cached is not None:
+        return cached
+    stems: set[str] = set()
+    for unit in getattr(run, "units", []):
+        app = getattr(unit, "cpp", None)
+        for f in getattr(app, "files", []) or []:
+            for c in f.classes:
+                stems.add(c.name.lower())
+    root = _root(ctx)
+    for count, (_dirpath, dirs, files) in enumerate(os.walk(root)):
+        dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
+        for f in files:
+            if f.endswith(_CPP):
+                stems.add(os.path.splitext(f)[0].lower())
+        if count > 20000:  # a huge tree: stop looking
+            break
+    with contextlib.suppress(AttributeError):
+        run._repo_cpp_stems = stems
+    return stems
+
+
+def _root(ctx) -> str:
+    """The project: the config's folder, else the nearest VCS root, else the file's folder."""
+    from moos_lint.context import VCS_MARKERS
+
+    if ctx.settings.config_path:
+        return os.path.dirname(os.path.abspath(ctx.settings.config_path))
+    start = os.path.dirname(os.path.abspath(ctx.unit.path))
+    here = start
+    while True:
+        if any(os.path.exists(os.path.join(here, m)) for m in VCS_MARKERS):
+            return here
+        parent = os.path.dirname(here)
+        if parent == here:
+            return start
+        here = parent
+
+
+def lookup(ctx, kind: str):
+    """(catalogue entry or None, known at all)."""
+    info = catalogue_for(ctx.run).behavior(kind)
+    if info is not None:
+        return info, True
+    return None, kind.lower() in repo_classes(ctx)

@@ -1,0 +1,88 @@
+"""A radian angle outside [-π, π].
+
+## What it does
+Reports a literal value given to a radian angle field (a name ending in the
+word `YAW`, `PITCH`, `ROLL` or `RADIANS`, see `yaw-in-degrees` for
+where values are found) whose magnitude is larger than π but not larger than
+2π. Larger values look like degrees and are left to `yaw-in-degrees` and
+`angle-in-degrees`. A fix replaces the literal with the wrapped value,
+rounded to 4 decimals.
+
+
+In C++, it reports a yaw published (`Notify("NAV_YAW", ...)`) after
+arithmetic with no wrap to ±π between the arithmetic and the `Notify`:
+`MOOS_ANGLE_WRAP`, the IvP helper `radAngleWrap`, a function named like
+`wrapToPi`, or a `while (yaw > M_PI) yaw -= 2*M_PI;` loop. A wrap into
+[0, 2π) (`fmod(yaw, 2*M_PI)`, or loops on `< 0` only) is reported too. Local
+variables are followed; opaque calls (`record.getYaw()`) are trusted.
+
+## Why is this bad?
+The MOOS Conventions wrap every angle to ±π, and the code that reads these
+variables assumes it: a yaw of `4.71` and one of `-1.57` are the same
+direction, but comparisons, differences and averages between an unwrapped
+and a wrapped value are off by a full turn. It can also be a degree value
+that happens to be small (`5` meaning 5°).
+
+Deliberately not reported:
+- heading fields, which MOOS-IvP keeps in degrees, [0, 360);
+- a rounded π such as `3.1416` (values within 0.001 of ±π count as wrapped);
+- pMarinePID's `maxpitch`, a configuration key in degrees;
+- values that are not one plain number (`$(MACRO)`, `$[MACRO]`, strings).
+
+## Example
+```moos
+ProcessConfig = uTimerScript
+{
+  event = var=NAV_YAW, val=4.71, time=10
+}
+```
+
+## How to fix
+Wrap the angle to ±π:
+```moos
+  event = var=NAV_YAW, val=-1.5732, time=10
+```
+
+## Options
+None.
+"""
+
+import math
+
+from moos_lint.angles import WRAP_TOLERANCE, angle_values, format_rad, wrap_pi
+from moos_lint.diagnostics import Severity
+from moos_lint.registry import Kind, Scope, rule
+
+
+@rule(
+    code="U002",
+    name="angle-not-wrapped",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
+    fixable=True,
+)
+def check(ctx):
+    if ctx.unit.kind is Kind.CPP:
+        yield from cpp_check(ctx)
+        return
+    for av in angle_values(ctx):
+        mag = abs(av.value)
+        if not (math.pi + WRAP_TOLERANCE < mag <= 2 * math.pi):
+            continue
+        new = format_rad(wrap_pi(av.value))
+        yield ctx.report(
+            av.span,
+            f"`{av.name}` = {av.literal} is outside [-π, π]: MOOS wraps radian angles "
+            f"to ±π; wrapped it is {new} (or is it in degrees?)",
+            line=av.line,
+            fix=av.fix(new, f"wrap the angle to ±π: {new}"),
+        )
+
+
+def cpp_check(ctx):
+    """The C++ check, on the app model (see :mod:`moos_lint.cpp.checks`)."""
+    from moos_lint.cpp.checks import angle_not_wrapped
+    from moos_lint.cpp.rulekit import cpp_findings
+
+    yield from cpp_findings(ctx, angle_not_wrapped)

@@ -1,0 +1,47 @@
+"""A radian value published to a HEADING variable without conversion.
+
+## What it does
+Reports `Notify` of a variable whose last word is `HEADING` or `HDG`
+(`NAV_HEADING`, `DESIRED_HEADING`, `GPS_HDG`) with a value in radians: an
+`atan2`/`atan`/`asin`/`acos` result, a degrees-to-radians conversion, a
+variable named yaw or `*_rad`, or an expression in π, with no conversion back
+to degrees (`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`).
+Local variables are followed to what they were assigned.
+
+## Why is this bad?
+In MOOS and MOOS-IvP a heading is in degrees, clockwise from north: the helm,
+pMarinePID, pNodeReporter and pMarineViewer all read NAV_HEADING that way. A
+heading of 1.57 is read as 1.57° instead of 90°: the vehicle steers north
+while it is heading east.
+
+## Example
+```cpp
+double hdg = atan2(dx, dy);
+Notify("NAV_HEADING", hdg);
+```
+
+## How to fix
+```cpp
+double hdg = angle360(MOOSRad2Deg(atan2(dx, dy)));
+Notify("NAV_HEADING", hdg);
+```
+
+## Options
+None.
+"""
+
+from moos_lint.cpp.checks import heading_in_radians
+from moos_lint.cpp.rulekit import cpp_findings
+from moos_lint.diagnostics import Severity
+from moos_lint.registry import Kind, Scope, rule
+
+
+@rule(
+    code="C004",
+    name="heading-in-radians",
+    severity=Severity.WARNING,
+    scope=Scope.CPP,
+    kinds=(Kind.CPP,),
+)
+def check(ctx):
+    yield from cpp_findings(ctx, heading_in_radians)

@@ -1,0 +1,154 @@
+"""A parameter value the app or behavior rejects or misreads (`verbose = 1`, `AppTick = .5`).
+
+## What it does
+Checks the values of parameters whose form the app's own parser enforces,
+as recorded in the catalogue with the source line that enforces it:
+
+- a boolean read with MOOS-IvP's `setBooleanOnString` accepts only `true`,
+  `false`, `on`, `off`, `yes`, `no` and `toggle` (any case): `verbose = 1`
+  is rejected;
+- a number read with `setDoubleOnString` and friends must pass MOOS-IvP's
+  `isNumber`: digits, at most one `.`, a `-` only in front (no exponent, no
+  units: `speed = 2m/s` is rejected); `setNonNegDoubleOnString` and
+  `setUIntOnString` also reject negative values, `setPosDoubleOnString`
+  rejects zero, `setPosUIntOnString` values below 1;
+- `AppTick` and `MaxAppTick` (every MOOS app) are read with
+  `GetConfigurationParam(double)`, which ignores a value that does not start
+  with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
+
+The message names the parser's source line in moos-ivp.
+
+## Why is this bad?
+An IvP app reports the line as "Unhandled config line" and keeps its default;
+a behavior's `setParam` fails, and the helm rejects the whole behavior set
+(`IVPHELM_STATE = MALCONFIG`). `AppTick = .5` is ignored without a word, and
+the app runs at 4 Hz instead of 0.5 Hz.
+
+## Example
+```moos
+ProcessConfig = pMarinePIDV22
+{
+  AppTick        = .5       // 0.5
+  ignore_nav_yaw = 1        // true
+}
+```
+
+## How to fix
+Write the value in the form the parser reads: `0.5`, `true`.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- values holding an nsplug macro;
+- parameters whose parser the catalogue does not tie to one of these
+  setters (enums, polygons and point lists are parsed in many different
+  ways and are not judged);
+- apps the catalogue does not know.
+"""
+
+import re
+
+from moos_lint.diagnostics import Severity
+from moos_lint.model import has_macro
+from moos_lint.registry import Kind, Scope, rule
+from moos_lint.rules._catalogue_bhv import lookup
+from moos_lint.rules.unknown_parameter import block_apps
+
+BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
+_MOOS_DOUBLE = re.compile(r"^[0-9-]")
+
+
+def is_number(s: str) -> bool:
+    """MOOS-IvP's ``isNumber`` (lib_mbutil/MBUtils.cpp)."""
+    s = s.strip()
+    if len(s) > 1 and s[0] == "+":
+        s = s[1:]
+    if not s:
+        return False
+    digits = dots = 0
+    for c in s:
+        if c.isdigit() and c.isascii():
+            digits += 1
+        elif c == ".":
+            dots += 1
+            if dots > 1:
+                return False
+        elif c == "-":
+            if digits or dots:
+                return False
+        else:
+            return False
+    return digits > 0
+
+
+def _atof(s: str) -> float:
+    m = re.match(r"^[+-]?(\d+\.?\d*|\.\d+)", s.strip())
+    try:
+        return float(m.group(0)) if m else 0.0
+    except ValueError:
+        return 0.0
+
+
+def problem(form: str, value: str) -> str | None:
+    """Why ``value`` does not have the ``form``, or None."""
+    if form == "bool":
+        if value.lower() not in BOOLS:
+            return "is not a boolean (true/false, on/off, yes/no)"
+        return None
+    if form == "moos_double":
+        if not _MOOS_DOUBLE.match(value):
+            return "does not start with a digit or `-`"
+        return None
+    if form in ("number", "nonneg", "positive", "uint", "posuint", "int"):
+        if not is_number(value):
+            return "is not a number (digits, one `.`, a leading `-`)"
+        v = _atof(value)
+        if form in ("nonneg", "uint") and v < 0:
+            return "is negative (the parser takes values >= 0)"
+        if form == "positive" and v <= 0:
+            return "is not greater than 0"
+        if form == "posuint" and v < 1:
+            return "is less than 1"
+    return None
+
+
+@rule(
+    code="M002",
+    name="invalid-parameter-value",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    if ctx.moos is not None:
+        for _block, app in block_apps(ctx):
+            for p in _block.params:
+                got = app.forms.get(p.lkey)
+                if got is None:
+                    continue
+                value = "".join(p.value.split())  # MOOS drops every blank of a config line
+                yield from _judge(ctx, p, value, got, app.name)
+    if ctx.bhv is not None:
+        for bhv in ctx.bhv.behaviors:
+            info, _known = lookup(ctx, bhv.kind.strip())
+            if info is None:
+                continue
+            for p in bhv.params:
+                got = info.forms.get(p.lkey)
+                if got is not None:
+                    yield from _judge(ctx, p, p.value.strip(), got, info.name)
+
+
+def _judge(ctx, p, value, got, owner):
+    form, at = got
+    if not value or has_macro(value) or has_macro(p.key):
+        return
+    why = problem(form, value)
+    if why is None:
+        return
+    where = f" ({at})" if at else ""
+    effect = "ignores it and keeps its default" if form == "moos_double" else "rejects it"
+    yield ctx.report(
+        p.value_span, f"`{p.key.strip()} = {value}` {why}: {owner} {effect}{where}", line=p.line
+    )

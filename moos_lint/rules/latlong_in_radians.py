@@ -1,0 +1,43 @@
+"""Latitude or longitude published from a radian value.
+
+## What it does
+Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
+`LATITUDE` or `LONGITUDE` with a value in radians: converted to radians
+(`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, or a variable
+named `*_rad`, with no conversion back to degrees.
+
+## Why is this bad?
+MOOS and MOOS-IvP carry positions as decimal degrees (`NAV_LAT`, `NAV_LONG`,
+`LatOrigin`, `LongOrigin`): the geodesy, pMarineViewer and the log tools read
+them that way. A latitude of 0.76 (radians) puts the vehicle off the coast of
+Africa instead of at 43.8° N.
+
+## Example
+```cpp
+Notify("NAV_LAT", MOOSDeg2Rad(lat));
+```
+
+## How to fix
+```cpp
+Notify("NAV_LAT", lat);
+```
+
+## Options
+None.
+"""
+
+from moos_lint.cpp.checks import latlong_in_radians
+from moos_lint.cpp.rulekit import cpp_findings
+from moos_lint.diagnostics import Severity
+from moos_lint.registry import Kind, Scope, rule
+
+
+@rule(
+    code="C006",
+    name="latlong-in-radians",
+    severity=Severity.WARNING,
+    scope=Scope.CPP,
+    kinds=(Kind.CPP,),
+)
+def check(ctx):
+    yield from cpp_findings(ctx, latlong_in_radians)

@@ -1,0 +1,112 @@
+"""A process launched by Antler with no ProcessConfig block.
+
+## What it does
+In a mission (a `.moos` file with an ANTLER block, after nsplug expansion, its
+includes included), reports a `Run` line whose process has no
+`ProcessConfig = NAME` block. `NAME` is the Run line's `~ alias` when there is
+one (or `--alias=` passed through `ExtraProcessParams`), otherwise the program
+name; MOOS compares it with block names without regard to case.
+
+## Why is this bad?
+The process starts on its built-in defaults. MOOS-IvP apps built on
+AppCastingMOOSApp then post the configuration warning "No mission config block
+found for NAME"; core MOOS apps (pLogger, pShare) say nothing and silently log
+or share nothing. The usual causes are a forgotten `#include plug_X.moos`, an
+`#include plugs.moos <tag>` naming a section the plug file lacks, or an alias
+(`~ pShare_B`) whose block was never written.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB  @ NewConsole = false
+  Run = pLogger @ NewConsole = false
+}
+// no "ProcessConfig = pLogger" anywhere
+```
+
+## How to fix
+Add the block (or the `#include` that brings it in), or fix the alias so that
+it names the existing block.
+
+## Options
+- `needs-no-config` (list of strings, default `["MOOSDB", "pAntler", "pRealm",
+  "pMissionHash", "iSay", "uLoadWatch", "uMACView", "uMayFinish", "uQueryDB",
+  "uXMS", "uMAC", "uPokeDB", "uHelmScope", "uMS"]`): programs that run
+  correctly without a block. They are compared with the program of the Run
+  line (not its alias). The IvP apps in the list declare
+  `must_have_moosblock=false` at start-up (pRealm, pMissionHash, iSay,
+  uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS) or read their block only
+  when there is one (uMAC, uPokeDB, uHelmScope); MOOSDB and the uMS scope read
+  the top-of-file settings only. In MOOS-IvP's own missions none of the 109
+  MOOSDB Run lines and 45 of the 49 pRealm Run lines have a block, by design.
+
+MOOS-IvP caveats, deliberately not reported:
+- a mission with an `#include` that could not be followed (a macro in its path
+  or a missing file): the block may be in that file;
+- a Run name or block name holding an unexpanded `$(X)` macro (may be any name);
+- a Run line with `InhibitMOOSParams = true`: pAntler does not pass the
+  mission file, so the process reads no block at all;
+- a process whose only block has `{` on its header line: MOOS never finds that
+  block, and brace-on-header (R003) reports it.
+A Run line and a block in mutually exclusive `#ifdef` branches do not count as
+a match: in the branch that launches the process, the block is missing.
+"""
+
+from moos_lint.diagnostics import Severity
+from moos_lint.model import has_macro
+from moos_lint.registry import Scope, rule
+from moos_lint.rules._hygiene import app_of, exclusive, names_match
+
+NEEDS_NO_CONFIG = [
+    "MOOSDB",
+    "pAntler",
+    "pRealm",
+    "pMissionHash",
+    "iSay",
+    "uLoadWatch",
+    "uMACView",
+    "uMayFinish",
+    "uQueryDB",
+    "uXMS",
+    "uMAC",
+    "uPokeDB",
+    "uHelmScope",
+    "uMS",
+]
+
+
+@rule(
+    code="H002",
+    name="missing-process-config",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    options={"needs-no-config": NEEDS_NO_CONFIG},
+)
+def check(ctx):
+    moos = ctx.moos
+    if ctx.expansion.incomplete:
+        return
+    exempt = {str(a).lower() for a in ctx.options.get("needs-no-config", NEEDS_NO_CONFIG)}
+    blocks = [b for b in moos.blocks if b.header is not None and b.name]
+    for run in moos.runs:
+        name = run.name
+        if not name or has_macro(name) or has_macro(run.binary):
+            continue
+        if not run.has_at and "~" in run.param.value:
+            continue  # not a program pAntler can start: run-alias-without-at
+        if app_of(run.binary).lower() in exempt:
+            continue
+        if run.options.get("inhibitmoosparams", "").lower() == "true":
+            continue
+        if any(
+            names_match(b.name, name) and not exclusive(b.header, run.param.line, ctx.expansion)
+            for b in blocks
+        ):
+            continue
+        yield ctx.report(
+            run.name_span,
+            f"`{name}` is launched but has no `ProcessConfig = {name}` block: "
+            "it runs on its defaults",
+            line=run.param.line,
+        )

@@ -1,0 +1,130 @@
+"""A variable the mission's configuration publishes that nothing in the mission reads.
+
+## What it does
+In a mission (after nsplug expansion, with its behavior files), takes the
+variables that configuration values publish: behavior flags (`endflag`,
+`runflag`, ...), `initialize` and `set MODE` variables, uTimerScript events,
+pMarineViewer buttons and actions, pEchoVar targets, and so on. It reports
+(once per variable, at its first publication) a variable that no launched
+app subscribes to (the catalogue's `Register` calls: pMarineViewer draws
+the `VIEW_*` it registers for), no condition or `updates` line reads, and no
+share or bridge route carries away. Names that only an observer's
+configuration lists (pLogger `log`, uXMS `var`, a viewer's `scope`) do not
+count as read.
+
+It is off by default and an `info`: a flag posted for the log or for a person
+watching is fine. Use it to find dead configuration and misspelled names
+(the reading side spelled `RETURN_HOME`, the flag `RETURN_HOM`).
+
+## Why is this bad?
+A posting that nobody reads is either dead configuration or the half of a
+hand-off whose other half is spelled differently.
+
+## Example
+```bhv
+Behavior = BHV_Waypoint
+{
+  name    = transit
+  endflag = RETURN_HOM = true    // the return behavior waits for RETURN_HOME
+}
+```
+
+## How to fix
+Correct the name, or delete the posting.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- variables published by apps themselves (their C++): most are status for
+  the log;
+- names with run-time placeholders (`$[OWNSHIP]`) or nsplug macros;
+- missions that launch an app the catalogue does not know or that
+  subscribes to names it builds at run time (it may read anything): the
+  pHelmIvP, pShare and broker apps are modelled through their
+  configuration instead;
+- variables the other missions of the folder read, when the mission shares
+  variables with them.
+"""
+
+from moos_lint.diagnostics import Severity
+from moos_lint.mission_model import mission_model
+from moos_lint.registry import Kind, Scope, rule
+from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name
+
+#: apps whose subscriptions only observe (log, display)
+OBSERVERS = {"plogger", "uxms", "uhelmscope", "pmarineviewer", "umacview", "prealm", "ufldscope"}
+#: apps whose run-time subscriptions come from their configuration (modelled there)
+CONFIG_DRIVEN = {
+    "phelmivp",
+    "pshare",
+    "ufldnodebroker",
+    "ufldshorebroker",
+    "pmoosbridge",
+    "utimerscript",
+    "pechovar",
+    "pnodereporter",
+    "uprocesswatch",
+    "pcontactmgrv20",
+    "pbasiccontactmgr",
+}
+
+
+def readers(model) -> tuple[set[str], bool]:
+    """Names read in the mission, and whether some process may read any name."""
+    names: set[str] = set()
+    open_ended = bool(model.unknown_apps or model.unresolved_behaviors)
+    for ref in model.refs:
+        if ref.role != SUBSCRIBE:
+            continue
+        app = ref.app.lower()
+        if any(app.startswith(o) for o in OBSERVERS) and ref.param not in ("condition",):
+            continue
+        name = bare_name(ref.name)
+        if name:
+            names.add(name)
+    for _path, bf in model.behavior_files:
+        for bhv in bf.behaviors:
+            info = model.catalogue.behavior(bhv.kind)
+            if info is not None:
+                names |= info.reads
+    for proc in model.processes:
+        if proc.app is None:
+            continue
+        low = proc.binary.lower()
+        names |= proc.app.subscribes  # a viewer that registers for VIEW_POINT draws it
+        if proc.app.subscribes and low not in CONFIG_DRIVEN:
+            raw = proc.app
+            if getattr(raw, "subscribes_dynamic", False):
+                open_ended = True
+    return names, open_ended
+
+
+@rule(
+    code="M006",
+    name="unread-publication",
+    severity=Severity.INFO,
+    scope=Scope.MISSION,
+    kinds=(Kind.MOOS,),
+    default_enabled=False,
+)
+def check(ctx):
+    model = mission_model(ctx)
+    names, open_ended = readers(model)
+    if open_ended or model.sibling_missions:
+        return
+    seen: set[str] = set()
+    for ref in model.refs:
+        if ref.role != PUBLISH:
+            continue
+        name = bare_name(ref.name)
+        if not name or name != ref.name or "*" in name or name in seen:
+            continue
+        seen.add(name)
+        if name in names:
+            continue
+        yield ctx.report(
+            ref.span,
+            f"`{name}` is published ({ref.app}: {ref.param}) but nothing in the mission reads it",
+            line=ref.line,
+        )

@@ -1,0 +1,129 @@
+"""The C++ app model: what tree-sitter extracts from one folder of a MOOS app."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("tree_sitter")
+pytest.importorskip("tree_sitter_cpp")
+
+from moos_lint.config import Settings
+from moos_lint.cpp.app import build_apps, read_relevant
+from moos_lint.cpp.cmake import executable_name
+from moos_lint.cpp.prefilter import mentions_moos
+from moos_lint.engine import lint_files
+
+APP = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "model_app"
+
+
+def _app(folder: Path = APP):
+    files = sorted(str(p) for p in folder.iterdir() if p.suffix in (".cpp", ".h"))
+    apps = build_apps(read_relevant(files))
+    assert len(apps) == 1
+    return apps[0]
+
+
+def test_class_chain_and_process_name_from_cmake():
+    app = _app()
+    assert app.app_class is not None and app.app_class.name == "Survey"
+    assert app.base_chain == ["Survey", "SurveyBase", "AppCastingMOOSApp"]
+    assert (app.process_name, app.process_name_source) == ("pSurvey", "cmake")
+
+
+def test_names_resolved_from_members_defines_and_concatenation():
+    app = _app()
+    names = {p.name.source: p.name.text for p in app.publications}
+    assert names['m_prefix + "_STATUS"'] == "SURVEY_STATUS"  # member initialiser
+    assert names["REPORT_VAR"] == "SURVEY_REPORT"  # #define
+    assert names["m_out_var"] is None  # set from the configuration: dynamic
+    assert "OLD_REPORT" not in {p.name.text for p in app.publications}  # #if 0
+
+
+def test_subscriptions_mail_keys_and_config_params():
+    app = _app()
+    subs = {s.name.text: s.name.wildcard for s in app.subscriptions}
+    assert subs == {"SURVEY_START": False, "SURVEY_STOP": False, "NODE_*": True}
+    exact = {k.text for k in app.mail_keys if not k.prefix}
+    assert {"SURVEY_START", "SURVEY_STOP"} <= exact
+    assert "NODE_" in {k.text for k in app.mail_keys if k.prefix}
+    params = {c.text for c in app.config_params}
+    assert {"lanes", "spacing", "out_var", "speed"} <= params
+
+
+def test_device_io_is_found():
+    kinds = {(u.kind, u.detail) for u in _app().io}
+    assert ("device", "/dev/ttyS0") in kinds
+    assert ("serial", "cfsetispeed") in kinds
+    assert ("termios", "termios.h") in kinds
+
+
+def test_trailing_space_after_include_does_not_lose_facts():
+    # main.cpp has `#include <string> ` (a trailing space tree-sitter marks as an error)
+    main = next(f for f in _app().files if f.path.endswith("main.cpp"))
+    assert main.has_main
+
+
+def test_prefilter_skips_files_without_moos_api(tmp_path):
+    assert mentions_moos(b'Notify("X", 1);')
+    assert mentions_moos(b"class A : public CMOOSApp {};")
+    assert not mentions_moos(b"int notify_all(); // Registering\n")
+    (tmp_path / "plain.cpp").write_text("int f() { return 1; }\n")
+    assert read_relevant([str(tmp_path / "plain.cpp")]) == {}
+
+
+def test_cmake_names(tmp_path):
+    (tmp_path / "CMakeLists.txt").write_text(
+        "# add_executable(commented out)\nset(APP iDepth)\nadd_executable(${APP} main.cpp)\n"
+    )
+    assert executable_name(str(tmp_path))[0] == "iDepth"
+    (tmp_path / "CMakeLists.txt").write_text("add_executable(${UNSET} main.cpp)\n")
+    assert executable_name(str(tmp_path)) is None
+
+
+def test_process_name_falls_back_to_folder(tmp_path):
+    folder = tmp_path / "Gauge"
+    folder.mkdir()
+    (folder / "main.cpp").write_text(
+        "class G : public CMOOSApp {};\n"
+        "int main(int argc, char **argv) { G g; g.Run(argv[0], argv[1]); return 0; }\n"
+    )
+    app = _app(folder)
+    assert (app.process_name, app.process_name_source) == ("Gauge", "folder")
+
+
+def test_bad_input_never_raises(tmp_path):
+    (tmp_path / "broken.cpp").write_bytes(
+        b'#if\nclass : public CMOOSApp {\nNotify(\xff\xfe "X, ;;\n}}}}\nRegister(\n'
+    )
+    (tmp_path / "binary.h").write_bytes(b"\x00\x01Notify")
+    settings = Settings(root=str(tmp_path))
+    settings.select = ["ALL"]
+    result = lint_files([str(p) for p in sorted(tmp_path.iterdir())], settings)
+    assert result.internal_errors == 0
+
+
+def test_inline_suppression_in_cpp(tmp_path):
+    src = (
+        "class A : public CMOOSApp {\n"
+        " bool Iterate() {\n"
+        '  Notify("nav_x", 1.0); // moos-lint: ignore[N003]\n'
+        '  Notify("nav_y", 1.0);\n'
+        "  return true; }\n};\n"
+    )
+    (tmp_path / "A.cpp").write_text(src)
+    settings = Settings(root=str(tmp_path))
+    settings.select = ["N003"]
+    result = lint_files([str(tmp_path / "A.cpp")], settings)
+    assert [(d.code, d.span.line) for d in result.diagnostics] == [("N003", 4)]
+
+
+def test_directory_discovery_takes_cpp(tmp_path):
+    from moos_lint.discovery import discover
+
+    (tmp_path / "App.cpp").write_text("int x;\n")
+    (tmp_path / "notes.txt").write_text("x\n")
+    found = discover([tmp_path], [], str(tmp_path)).files
+    assert found == [os.path.join(str(tmp_path), "App.cpp")]

@@ -1,0 +1,315 @@
+"""The app catalogue, the mission model, the M-rules on the real corpus, and `moos-lint graph`."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+import pytest
+
+from moos_lint.catalogue import Catalogue, CatalogueError, load_user_catalogue, stock
+from moos_lint.catalogue.generate import _names
+from moos_lint.cli import main
+from moos_lint.config import ConfigError, Settings, load_config
+from moos_lint.engine import Run, lint_files
+from moos_lint.graph import build_graph, to_dot, to_html
+from moos_lint.mission_model import behavior_paths, mission_model
+from moos_lint.registry import select_rules
+from moos_lint.rules.invalid_parameter_value import is_number, problem
+
+CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "moos-ivp"
+FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "rules"
+
+
+def needs_corpus() -> Path:
+    if not CORPUS.is_dir():
+        pytest.skip("the MOOS-IvP corpus is not beside the repository")
+    return CORPUS
+
+
+# ------------------------------------------------------------------ catalogue
+def test_stock_catalogue_records_its_source_and_corrections():
+    cat = stock()
+    assert len(cat.source.get("commit", "")) == 40
+    assert len(cat.apps) >= 50 and len(cat.behaviors) >= 40
+    pid = cat.app("pmarinepidv22")
+    assert pid is not None and pid.strict
+    assert {"yaw_pid_kp", "maxrudder", "apptick", "comms_policy"} <= pid.params
+    assert pid.forms["ignore_nav_yaw"][0] == "bool"
+    assert "MarinePID.cpp" in pid.forms["ignore_nav_yaw"][1]
+    # core MOOS apps never reject a key: their lists are not used to judge
+    assert not cat.app("pLogger").strict
+    helm = cat.app("pHelmIvP")
+    assert {"DESIRED_HEADING", "IVPHELM_STATE"} <= helm.publishes
+    wpt = cat.behavior("bhv_waypoint")
+    assert {"points", "capture_radius", "name", "condition", "templating"} <= wpt.params
+
+
+def test_stock_json_says_which_entries_were_corrected():
+    path = Path(__file__).resolve().parents[1] / "moos_lint" / "catalogue" / "stock.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    corrected = [n for n, a in data["apps"].items() if a.get("corrected")]
+    assert {"pHelmIvP", "pShare", "uSimMarineV22", "pMOOSBridge"} <= set(corrected)
+    assert data["source"]["repository"].endswith("moos-ivp/moos-ivp")
+    assert all("source" in b for b in data["behaviors"].values())
+
+
+def test_dynamic_names_keep_their_known_suffix():
+    class N:
+        def __init__(self, text, prefix, source):
+            self.text, self.prefix, self.source = text, prefix, source
+
+    class P:
+        def __init__(self, n):
+            self.name = n
+
+    got = _names([P(N("A", "", '"A"')), P(N(None, "", 'prefix+"_X"')), P(N(None, "B_", "x"))])
+    assert got == (["A"], ["B_"], ["_X"], False)
+
+
+def test_user_catalogue_adds_apps_and_behaviors(tmp_path):
+    cat_file = tmp_path / "mine.toml"
+    cat_file.write_text(
+        '[apps.pMine]\nparams = ["speed"]\nstrict = true\npublishes = ["MINE_STATUS"]\n'
+        '[behaviors.BHV_Mine]\nparams = ["radius"]\n'
+    )
+    cat = Catalogue()
+    load_user_catalogue(str(cat_file), cat)
+    mine = cat.app("pmine")
+    assert mine.strict and "speed" in mine.params and "apptick" in mine.params
+    assert {"radius", "condition", "name"} <= cat.behavior("BHV_Mine").params
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[apps.pX]\nparms = ["a"]\n')
+    with pytest.raises(CatalogueError, match="parms"):
+        load_user_catalogue(str(bad), Catalogue())
+
+
+def test_config_catalogues_key_is_validated(tmp_path):
+    (tmp_path / "mine.json").write_text(
+        '{"apps": {"pMine": {"params": ["speed"], "strict": true}}}'
+    )
+    cfg = tmp_path / "moos-lint.toml"
+    cfg.write_text('catalogues = ["mine.json"]\n')
+    assert load_config(cfg).catalogues == [str((tmp_path / "mine.json").resolve())]
+    cfg.write_text('catalogues = ["missing.json"]\n')
+    with pytest.raises(ConfigError, match="not found"):
+        load_config(cfg)
+    cfg.write_text('catalogues = "mine.json"\n')
+    with pytest.raises(ConfigError, match="list of strings"):
+        load_config(cfg)
+
+
+def test_user_catalogue_drives_unknown_parameter(tmp_path):
+    (tmp_path / "mine.json").write_text(
+        '{"apps": {"pMine": {"params": ["speed"], "strict": true}}}'
+    )
+    (tmp_path / "moos-lint.toml").write_text('catalogues = ["mine.json"]\nselect = ["M001"]\n')
+    mission = tmp_path / "m.moos"
+    mission.write_text(
+        "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n"
+        "  Run = pMine @ NewConsole = false\n}\n\n"
+        "ProcessConfig = pMine\n{\n  speed = 2\n  speeed = 3\n}\n"
+    )
+    result = lint_files([str(mission)], load_config(tmp_path / "moos-lint.toml"))
+    assert [(d.code, d.span.line) for d in result.diagnostics] == [("M001", 10)]
+    assert result.diagnostics[0].fix is not None
+
+
+# ------------------------------------------------------------------ values
+def test_is_number_matches_moos_ivp():
+    for ok in ("1", "-2.5", ".5", "+3", "10."):
+        assert is_number(ok), ok
+    for bad in ("", "-", "1e3", "2m", "1.2.3", "3-", "+"):
+        assert not is_number(bad), bad
+    assert problem("positive", "0") and problem("nonneg", "-1") and not problem("uint", "0")
+    assert problem("moos_double", ".5") and not problem("moos_double", "-0.5")
+    assert problem("bool", "1") and not problem("bool", "Toggle")
+
+
+# ------------------------------------------------------------------ model
+def test_behavior_paths_find_the_template(tmp_path):
+    (tmp_path / "meta_vehicle.bhv").write_text("")
+    got, ok = behavior_paths("targ_$(VNAME).bhv", str(tmp_path))
+    assert ok and got == [str(tmp_path / "meta_vehicle.bhv")]
+    (tmp_path / "meta_shoreside.bhv").write_text("")
+    got, ok = behavior_paths("targ_shoreside.bhv", str(tmp_path))
+    assert ok and got == [str(tmp_path / "meta_shoreside.bhv")]
+    (tmp_path / "alpha.bhv").write_text("")
+    assert behavior_paths(" alpha.bhv ", str(tmp_path)) == ([str(tmp_path / "alpha.bhv")], True)
+    assert behavior_paths("gone.bhv", str(tmp_path)) == ([], True)
+
+
+def _model(path: Path):
+    run = Run(Settings(root=str(path.parent)), select_rules(["M005"], [], []))
+    unit = run.build_unit(str(path))
+    run.units.append(unit)
+    return mission_model(run, unit.path, unit.moos)
+
+
+def test_model_joins_processes_behaviors_and_siblings():
+    m = _model(FIXTURES / "unpublished-subscription" / "quiet" / "meta_vehicle.moos")
+    assert [p.name for p in m.processes][:3] == ["MOOSDB", "uSimMarineV22", "pHelmIvP"]
+    assert [os.path.basename(p) for p, _ in m.behavior_files] == ["meta_vehicle.bhv"]
+    assert [p.binary for p in m.inbound] == ["pShare", "uFldNodeBroker"]
+    assert [os.path.basename(s) for s in m.sibling_missions] == ["meta_shoreside.moos"]
+    assert m.published_by("DEPLOY") and m.published_by("NAV_X") and m.published_by("GO_HOME")
+    assert not m.published_by("NO_SUCH_THING")
+    assert m.complete
+
+
+# ------------------------------------------------------------------ corpus
+def _corpus_findings(rel: str, code: str) -> list[tuple[str, int, str]]:
+    corpus = needs_corpus()
+    path = corpus / rel
+    if not path.exists():
+        pytest.skip(f"{rel} is not in the corpus")
+    settings = Settings(root=str(corpus), select=[code])
+    result = lint_files([str(path)], settings)
+    assert result.internal_errors == 0
+    return sorted(
+        (os.path.relpath(d.span.path, corpus), d.span.line, d.message.split("`")[1])
+        for d in result.diagnostics
+    )
+
+
+@pytest.mark.parametrize(
+    ("rel", "code", "expected"),
+    [
+        (
+            "ivp/missions/berta_cmgr/meta_vehicle.moos",
+            "M001",
+            [
+                ("ivp/missions/berta_cmgr/meta_vehicle.moos", 102, "early_warning_range"),
+                ("ivp/missions/berta_cmgr/meta_vehicle.moos", 104, "early_warning_ref_spd"),
+            ],
+        ),
+        (
+            "ivp/missions/x1_legs/alpha.bhv",
+            "M004",
+            [
+                ("ivp/missions/x1_legs/alpha.bhv", 43, "legflag"),
+                ("ivp/missions/x1_legs/alpha.bhv", 52, "mid_pct"),
+            ],
+        ),
+        (
+            "ivp/missions/s10_juliet/juliet.moos",
+            "M005",
+            [("ivp/missions/s10_juliet/juliet.moos", 207, "TIME_AT_SURFACE")],
+        ),
+        (
+            "ivp/missions/s6_foxtrot/foxtrot.moos",
+            "M005",
+            [("ivp/missions/s6_foxtrot/foxtrot.bhv", 53, "HSLINE")],
+        ),
+        ("ivp/missions/s1_alpha/alpha.moos", "M001", []),
+        ("ivp/missions/s1_alpha/alpha.moos", "M005", []),
+        ("ivp/missions/m2_berta/meta_vehicle.moos", "M005", []),
+        ("ivp/missions/m2_berta/meta_shoreside.moos", "M005", []),
+    ],
+)
+def test_corpus_missions_checked_by_hand(rel, code, expected):
+    assert _corpus_findings(rel, code) == expected
+
+
+def test_corpus_action_that_no_behavior_reads():
+    got = _corpus_findings("ivp/missions/s1_alpha/alpha.moos", "M006")
+    assert ("ivp/missions/s1_alpha/alpha.moos", 203, "UPDATES_RETURN") in got
+
+
+def test_corpus_runs_every_mission_without_internal_errors():
+    corpus = needs_corpus()
+    settings = Settings(root=str(corpus), select=["M"])
+    from moos_lint.discovery import discover
+
+    files = discover([corpus / "ivp" / "missions"], [], str(corpus)).files
+    result = lint_files(files, settings)
+    assert result.internal_errors == 0
+    by_code: dict[str, int] = {}
+    for d in result.diagnostics:
+        by_code[d.code] = by_code.get(d.code, 0) + 1
+    assert by_code.get("M003", 0) == 0  # every behavior kind in the corpus is a stock one
+    assert by_code.get("M005", 0) <= 12  # checked by hand: see the rule's docs
+
+
+# ------------------------------------------------------------------ graph
+GRAPH_MISSION = FIXTURES / "unpublished-subscription" / "fire" / "alpha.moos"
+
+
+def test_graph_json_and_dot(capsys):
+    assert main(["graph", str(GRAPH_MISSION), "--format", "json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    names = [p["name"] for p in data["processes"]]
+    assert names[:2] == ["MOOSDB", "uSimMarineV22"] and "pHelmIvP" in names
+    variables = {v["name"]: v for v in data["variables"]}
+    assert variables["DEPOLY"]["findings"][0]["code"] == "M005"
+    assert {"from": "p:pMarineViewer", "to": "v:DEPLOY", "kind": "publish", "how": "config"} in (
+        data["edges"]
+    )
+    dot = to_dot(build_graph(str(GRAPH_MISSION), Settings(root=str(GRAPH_MISSION.parent))))
+    assert dot.startswith("digraph mission {") and '"v:DEPOLY" [shape=ellipse, color=red' in dot
+
+
+def test_graph_refuses_a_non_mission(tmp_path, capsys):
+    f = tmp_path / "frag.moos"
+    f.write_text("ProcessConfig = pX\n{\n  a = 1\n}\n")
+    assert main(["graph", str(f)]) == 2
+    assert "not a mission" in capsys.readouterr().err
+
+
+def test_graph_html_is_self_contained(tmp_path):
+    out = tmp_path / "g.html"
+    assert main(["graph", str(GRAPH_MISSION), "-o", str(out)]) == 0
+    page = out.read_text(encoding="utf-8")
+    assert "<svg" in page and "http://" not in page.replace("http://www.w3.org/2000/svg", "")
+    assert "https://" not in page and "<script src" not in page
+
+
+def _chromium() -> str | None:
+    for name in ("chromium", "chromium-browser", "google-chrome"):
+        found = shutil.which(name)
+        if found:
+            return found
+    return None
+
+
+def test_graph_html_renders_in_headless_chromium(tmp_path):
+    browser = _chromium()
+    if browser is None:
+        pytest.skip("chromium is not installed")
+    g = build_graph(str(GRAPH_MISSION), Settings(root=str(GRAPH_MISSION.parent)))
+    page = tmp_path / "g.html"
+    page.write_text(to_html(g), encoding="utf-8")
+    with tempfile.TemporaryDirectory() as profile:
+        proc = subprocess.run(
+            [
+                browser,
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--disable-quic",
+                "--no-first-run",
+                "--disable-background-networking",
+                "--disable-component-update",
+                "--disable-sync",
+                f"--user-data-dir={profile}",
+                "--dump-dom",
+                page.as_uri(),
+            ],
+            capture_output=True,
+            text=True,
+            timeout=90,
+            check=False,
+        )
+    dom = proc.stdout
+    if not dom.strip():
+        pytest.skip(f"chromium rendered nothing: {proc.stderr[-300:]}")
+    # the script ran: it counted the drawn nodes into the body
+    n_nodes = len(g.processes) + len(g.variables)
+    assert f'data-rendered="{n_nodes}"' in dom
+    for p in g.processes:
+        assert f'id="p:{p["name"]}"' in dom
+    assert "DEPOLY" in dom and "M005" in dom
