@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from moos_lint.diagnostics import Edit, Fix, Span
 from moos_lint.nsplug import Line
+from moos_lint.parsers.bhv import split_commas
 
 #: the last word of a field name -> the kind of angle it holds
 ANGLE_WORDS = {
@@ -147,19 +148,6 @@ def _make(name, value_text, line, start, where, config_key) -> AngleValue | None
     return AngleValue(name.strip(), kind, literal, number, line, start + lead, where, config_key)
 
 
-def _split_commas(text: str) -> list[tuple[str, int]]:
-    """Split on commas outside double quotes: (piece, offset)."""
-    out, start, quoted = [], 0, False
-    for i, ch in enumerate(text):
-        if ch == '"':
-            quoted = not quoted
-        elif ch == "," and not quoted:
-            out.append((text[start:i], start))
-            start = i + 1
-    out.append((text[start:], start))
-    return out
-
-
 def _assignment(text: str, base: int, line: Line, where: str) -> AngleValue | None:
     """``VAR = VALUE`` (a flag or a posting), ``base`` = index of ``text`` in line.text."""
     var, eq, val = text.partition("=")
@@ -172,7 +160,7 @@ def _timer_event(text: str, base: int, line: Line) -> AngleValue | None:
     """uTimerScript ``var=NAME, val=VALUE, time=T``."""
     var = None
     val: tuple[str, int] | None = None
-    for piece, off in _split_commas(text):
+    for piece, off in split_commas(text):
         key, eq, value = piece.partition("=")
         if not eq:
             continue

@@ -36,6 +36,16 @@ def _defines(values: list[str] | None) -> dict[str, str]:
     return out
 
 
+def _jobs(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number of at least 1, not {text!r}")
+    return n
+
+
 def _usage_error(msg: str) -> int:
     print(f"moos-lint: error: {msg}", file=sys.stderr)
     return EXIT_ERROR
@@ -119,6 +129,19 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--show-settings", action="store_true", help="print the settings and exit")
     check.add_argument("--exit-zero", action="store_true", help="exit 0 even with findings")
     check.add_argument("--quiet", "-q", action="store_true", help="print findings only")
+    check.add_argument(
+        "--jobs",
+        "-j",
+        type=_jobs,
+        metavar="N",
+        help="worker processes (default: the CPU count; small inputs use one)",
+    )
+    check.add_argument(
+        "--no-cache",
+        action="store_true",
+        help="neither read nor write the result cache (.moos_lint_cache/ or `cache-dir`)",
+    )
+    check.add_argument("--cache-dir", type=Path, metavar="DIR", help="keep the result cache in DIR")
 
     expand = sub.add_parser("expand", help="print a file as nsplug would expand it")
     expand.add_argument("file", type=Path)
@@ -231,8 +254,23 @@ def _check(args: argparse.Namespace, settings) -> int:
     root = project_root(settings, args.paths, fallback)
     base = bl.load(str(args.baseline), root) if args.baseline else None
 
+    # --fix/--diff re-lint edited text in memory, and a baseline is written from a fresh run
+    use_cache = not (args.no_cache or args.fix or args.diff or args.write_baseline)
+    cache_dir = None
+    if use_cache:
+        from moos_lint.cache import cache_dir_for
+
+        cache_dir = os.path.abspath(args.cache_dir) if args.cache_dir else cache_dir_for(settings)
+
     def lint(cache=None, *, filtered: bool = True):
-        result = lint_paths(args.paths, settings, context=args.context, cache=cache)
+        result = lint_paths(
+            args.paths,
+            settings,
+            context=args.context,
+            cache=cache,
+            jobs=args.jobs,
+            cache_dir=cache_dir,
+        )
         for missing in result.missing:
             result.diagnostics.insert(
                 0,

@@ -30,6 +30,7 @@ KNOWN_KEYS = {
     "cpp-backend",
     "compile-commands",
     "catalogues",
+    "cache-dir",
 }
 CPP_BACKENDS = ("tree-sitter", "clang")
 DEFAULT_EXCLUDE = (
@@ -64,6 +65,8 @@ class Settings:
     compile_commands: str | None = None  # a compile_commands.json, or its folder
     #: app/behavior catalogue files (JSON or TOML) for apps whose C++ is elsewhere
     catalogues: list[str] = field(default_factory=list)
+    #: where the result cache lives (None: ``.moos_lint_cache`` in the root)
+    cache_dir: str | None = None
 
     def options_for(self, name: str) -> dict[str, Any]:
         """A rule's options: its defaults, overridden by the config."""
@@ -86,6 +89,7 @@ class Settings:
             "cpp-backend": self.cpp_backend,
             "compile-commands": self.compile_commands,
             "catalogues": self.catalogues,
+            "cache-dir": self.cache_dir,
             "rules": {r.name: self.options_for(r.name) for r in all_rules() if r.options},
         }
 
@@ -188,6 +192,11 @@ def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Se
         if not isinstance(cc, str):
             raise ConfigError(f"{path}: `{prefix}compile-commands` must be a path")
         s.compile_commands = str((root / cc).resolve())
+    if "cache-dir" in data:
+        cd = data["cache-dir"]
+        if not isinstance(cd, str) or not cd:
+            raise ConfigError(f"{path}: `{prefix}cache-dir` must be a path")
+        s.cache_dir = str((root / cd).resolve())
     if "catalogues" in data:
         s.catalogues = _check_catalogues(path, prefix + "catalogues", data["catalogues"], root)
     defines = data.get("defines", {})

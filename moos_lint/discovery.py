@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import fnmatch
+import functools
 import os
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,13 +36,23 @@ class Discovered:
 
 
 def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
+    """Whether ``name`` or ``rel`` matches a pattern (or ``rel`` lies under one)."""
+    m = _matcher(tuple(patterns))
+    if m is None:
+        return False
+    return bool(m.match(os.path.normcase(name)) or m.match(os.path.normcase(rel)))
+
+
+@functools.lru_cache(maxsize=16)
+def _matcher(patterns: tuple[str, ...]) -> re.Pattern | None:
+    """One regex for the patterns (``pat`` and ``pat/*``), as ``fnmatch`` reads them."""
+    parts = []
     for pat in patterns:
-        pat = pat.rstrip("/")
-        if fnmatch.fnmatch(name, pat) or fnmatch.fnmatch(rel, pat):
-            return True
-        if fnmatch.fnmatch(rel, pat + "/*"):
-            return True
-    return False
+        pat = os.path.normcase(pat.rstrip("/"))
+        parts += [fnmatch.translate(pat), fnmatch.translate(pat + "/*")]
+    if not parts:
+        return None
+    return re.compile("|".join(f"(?:{p})" for p in parts))
 
 
 def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:

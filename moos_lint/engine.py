@@ -124,6 +124,7 @@ class Run:
         self.included_elsewhere: set[str] = set()  # linted files that other files include
         self.units: list[Unit] = []
         self.suppressions: dict[str, list[Suppression]] = {}
+        self._options: dict[str, dict[str, Any]] = {}
 
     def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
         """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
@@ -143,6 +144,13 @@ class Run:
             if not hit:
                 kept.append(d)
         return kept
+
+    def _options_for(self, r: Rule) -> dict[str, Any]:
+        """The rule's options (resolved once per run; each check gets its own copy)."""
+        options = self._options.get(r.name)
+        if options is None:
+            options = self._options[r.name] = self.settings.options_for(r.name)
+        return dict(options)
 
     def file_ignored(self, d: Diagnostic) -> bool:
         return _per_file_ignored(d, self.settings)
@@ -181,7 +189,7 @@ class Run:
             mission = unit.kind is Kind.CPP or (unit.moos and unit.moos.is_mission)
             if r.scope is Scope.MISSION and not mission:
                 continue
-            ctx = Context(r, unit, self.settings, self, self.settings.options_for(r.name))
+            ctx = Context(r, unit, self.settings, self, self._options_for(r))
             try:
                 out.extend(r.check(ctx) or ())
             except Exception as exc:  # a rule bug must not stop the run
@@ -203,10 +211,27 @@ def internal_error(path: str, r: Rule, exc: BaseException) -> Diagnostic:
     )
 
 
-def _build_cpp_units(run: Run, files: list[str]) -> tuple[list[Unit], list[Diagnostic]]:
-    """The C++ units; a folder whose C++ cannot be analysed is an internal error, not a crash."""
+def _build_cpp_units(
+    run: Run, files: list[str], parsed: Iterable | None = None
+) -> tuple[list[Unit], list[Diagnostic]]:
+    """The C++ units; a folder whose C++ cannot be analysed is an internal error, not a crash.
+
+    ``parsed``: the folders worker processes read and parsed, in any order.
+    """
     from moos_lint.cpp.units import build_cpp_units
 
+    if parsed is not None:
+        by_folder: dict[str, Any] = {}
+        for paths, sources, cpp_files, _error in parsed:
+            if cpp_files is None:  # redo every folder here, where errors are reported
+                by_folder = {}
+                break
+            by_folder[os.path.dirname(paths[0])] = (sources, cpp_files)
+        if by_folder:
+            try:
+                return build_cpp_units(run, files, by_folder), []
+            except Exception:
+                pass
     try:
         return build_cpp_units(run, files), []
     except Exception:
@@ -236,27 +261,48 @@ def _build_cpp_units(run: Run, files: list[str]) -> tuple[list[Unit], list[Diagn
 
 
 def lint_files(
-    files: list[str], settings: Settings, rules: list[Rule] | None = None, cache=None
+    files: list[str],
+    settings: Settings,
+    rules: list[Rule] | None = None,
+    cache=None,
+    jobs: int | None = 1,
 ) -> Result:
-    """Lint the given files with the given settings."""
+    """Lint the given files with the given settings.
+
+    ``jobs``: worker processes (None: one per CPU); the result is the same as
+    with one (see :mod:`moos_lint.parallel`). Small inputs stay in one process.
+    """
+    from moos_lint import parallel
+
     if rules is None:
         rules = select_rules(settings.select, settings.extend_select, settings.ignore)
     run = Run(settings, rules, cache)
     result = Result(files=list(files))
+    jobs = parallel.effective_jobs(jobs, len(files))
     cpp_files = [p for p in files if kind_of(p) == "cpp"]
-    for path in files:
-        if kind_of(path) != "cpp":
-            run.units.append(run.build_unit(path))
-    cpp_errors: list[Diagnostic] = []
-    if cpp_files:
-        units, cpp_errors = _build_cpp_units(run, cpp_files)
-        run.units.extend(units)
-        result.internal_errors += len(cpp_errors)
+    workers = parallel.pool(jobs) if jobs > 1 and cpp_files else None
+    try:
+        # the workers read and parse the C++ while this process reads the missions
+        cpp_parsed = parallel.start_cpp(workers, cpp_files) if workers is not None else None
+        for path in files:
+            if kind_of(path) != "cpp":
+                run.units.append(run.build_unit(path))
+        cpp_errors: list[Diagnostic] = []
+        if cpp_files:
+            units, cpp_errors = _build_cpp_units(run, cpp_files, cpp_parsed)
+            run.units.extend(units)
+            result.internal_errors += len(cpp_errors)
+    finally:
+        if workers is not None:
+            parallel.stop(workers)
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
     found: dict[tuple, Diagnostic] = {d.identity: d for d in cpp_errors}
-    for unit in run.units:
-        diags, errors = run.run_rules(unit)
+    if jobs > 1 and len(run.units) > 1:
+        per_unit = parallel.run_rules_parallel(run, jobs)
+    else:
+        per_unit = (run.run_rules(unit) for unit in run.units)
+    for diags, errors in per_unit:
         result.internal_errors += errors
         for d in diags:
             found.setdefault(d.identity, d)
@@ -300,24 +346,33 @@ def lint_paths(
     *,
     context: bool = False,
     cache: FileCache | None = None,
+    jobs: int | None = 1,
+    cache_dir: str | None = None,
 ) -> Result:
     """Discover files under ``paths`` and lint them.
 
     With ``context``, the missions under the project root that use one of the
     files (see :mod:`moos_lint.context`) are linted too, and only findings in
-    the given files or in those missions are kept.
+    the given files or in those missions are kept. ``jobs``: see
+    :func:`lint_files`. With ``cache_dir`` (and no ``cache``), a run whose files
+    have not changed since it was last linted returns the stored result
+    (:mod:`moos_lint.cache`).
     """
     paths = list(paths) or [Path(".")]
+    if cache_dir is not None and cache is None:
+        from moos_lint.cache import cached_lint
+
+        return cached_lint(paths, settings, context=context, jobs=jobs, cache_dir=cache_dir)
     found = discover(paths, settings.exclude, settings.root)
     if not context:
-        result = lint_files(found.files, settings, cache=cache)
+        result = lint_files(found.files, settings, cache=cache, jobs=jobs)
         result.missing = found.missing
         return result
     from moos_lint.context import related_missions
 
     cache = cache or FileCache()
     missions = related_missions(found.files, settings, cache)
-    result = lint_files([*found.files, *missions], settings, cache=cache)
+    result = lint_files([*found.files, *missions], settings, cache=cache, jobs=jobs)
     keep = {os.path.normpath(p) for p in (*found.files, *missions)}
     result.diagnostics = [
         d

@@ -383,7 +383,14 @@ def _parsed(run: Any, pre: Any, exp: Any, parse: Any) -> Any:
     """
     if getattr(pre, "memo", None) is None:
         return parse(exp)
-    memo = _run_memo(run, "_parsed_models")
+    memo = getattr(run, "_parsed_models", None)
+    if memo is None:  # the linted files are parsed already
+        memo = _run_memo(run, "_parsed_models")
+        for unit in getattr(run, "units", ()):
+            if getattr(unit, "moos", None) is not None:
+                memo[(unit.path, "parse_moos")] = unit.moos
+            if getattr(unit, "bhv", None) is not None:
+                memo[(unit.path, "parse_bhv")] = unit.bhv
     key = (exp.path, parse.__name__)
     if key not in memo:
         memo[key] = parse(exp)

@@ -173,6 +173,10 @@ class FileCache:
     def __init__(self, reader: Callable[[Path], SourceFile | ReadProblem] = read_source):
         self._reader = reader
         self._cache: dict[str, SourceFile | ReadProblem] = {}
+        #: the folders searched for an ``#include`` (a file created there changes the result)
+        self.probed: set[str] = set()
+        #: files read for this run by worker processes
+        self.read_elsewhere: set[str] = set()
 
     def get(self, path: str) -> SourceFile | ReadProblem:
         hit = self._cache.get(path)
@@ -180,6 +184,10 @@ class FileCache:
             hit = self._reader(Path(path))
             self._cache[path] = hit
         return hit
+
+    def paths(self) -> set[str]:
+        """Every file this cache was asked for (read or not), here or in worker processes."""
+        return {*self._cache, *self.read_elsewhere}
 
 
 def _norm(path: str | Path) -> str:
@@ -303,9 +311,11 @@ class Preprocessor:
     def resolve_include(self, name: str, top_dir: str, including_dir: str) -> str | None:
         """nsplug's search: its working folder, then ``--path`` folders, then the includer's."""
         if os.path.isabs(name):
+            self.cache.probed.add(os.path.dirname(_norm(name)))
             return _norm(name) if os.path.exists(name) else None
         for folder in (top_dir, *self.include_paths, including_dir):
             candidate = os.path.join(folder, name)
+            self.cache.probed.add(os.path.dirname(_norm(candidate)))
             if os.path.exists(candidate):
                 return _norm(candidate)
         return None

@@ -589,12 +589,26 @@ def bare_name(name: str) -> str | None:
     return _PLACEHOLDER.sub("", name)
 
 
+_last_unit: tuple = (None, None, ())
+
+
 def unit_variables(moos: MoosFile | None = None, bhv: BehaviorFile | None = None):
-    """The variables of one linted unit (a ``.moos`` or a ``.bhv`` file)."""
-    if moos is not None:
-        yield from moos_variables(moos)
-    if bhv is not None:
-        yield from bhv_variables(bhv)
+    """The variables of one linted unit (a ``.moos`` or a ``.bhv`` file).
+
+    The engine runs every rule on a unit before the next, and several rules ask
+    for the same unit's variables: the last unit's are kept (refs are frozen).
+    """
+    global _last_unit
+    last_moos, last_bhv, refs = _last_unit
+    if last_moos is not moos or last_bhv is not bhv or (moos is None and bhv is None):
+        found: list[VarRef] = []
+        if moos is not None:
+            found.extend(moos_variables(moos))
+        if bhv is not None:
+            found.extend(bhv_variables(bhv))
+        refs = tuple(found)
+        _last_unit = (moos, bhv, refs)
+    return iter(refs)
 
 
 __all__ = [

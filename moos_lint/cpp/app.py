@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import os
+from collections import OrderedDict
 from collections.abc import Iterable
+from typing import Any
 
 from moos_lint.cpp.cmake import executable_name
 from moos_lint.cpp.model import APP_BASES, AppModel, CppClass, CppFile
@@ -39,10 +41,32 @@ def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
         # a bare CR ends a line for moos-lint (and for the spans), not for tree-sitter
         text = src.text.replace("\r\n", "\n").replace("\r", "\n")
         data = text.encode("utf-8", "replace")
-        tree = be.parse(data)
-        parsed.append(ParsedFile(path, data, tree, be.matches(tree)))
+        tree, matches = _parse(be, path, data)
+        parsed.append(ParsedFile(path, data, tree, matches))
     tables = collect_tables(parsed)
     return [Extractor(pf, tables).run() for pf in parsed]
+
+
+#: How many parsed files (tree and query matches, by path and bytes) a process keeps. The
+#: language server turns it on: re-linting one file then reparses only the files that
+#: changed, not every neighbour. A command-line run parses each file once and keeps none.
+PARSE_MEMO_SIZE = 0
+_parse_memo: OrderedDict[tuple[str, bytes], tuple[Any, Any]] = OrderedDict()
+
+
+def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+    key = (path, data)
+    hit = _parse_memo.get(key) if PARSE_MEMO_SIZE else None
+    if hit is not None:
+        _parse_memo.move_to_end(key)
+        return hit
+    tree = be.parse(data)
+    hit = (tree, be.matches(tree))
+    if PARSE_MEMO_SIZE:
+        _parse_memo[key] = hit
+        while len(_parse_memo) > PARSE_MEMO_SIZE:
+            _parse_memo.popitem(last=False)
+    return hit
 
 
 def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:

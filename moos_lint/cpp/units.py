@@ -9,19 +9,31 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from moos_lint.cpp.app import build_apps, read_relevant
+from moos_lint.cpp.app import build_apps, link_apps, read_relevant
 from moos_lint.cpp.model import AppModel
 
 
-def build_cpp_units(run: Any, paths: list[str]) -> list[Any]:
-    """Units for the C++ files in ``paths``: one per folder, in folder order."""
+def build_cpp_units(run: Any, paths: list[str], parsed: dict[str, Any] | None = None) -> list[Any]:
+    """Units for the C++ files in ``paths``: one per folder, in folder order.
+
+    ``parsed`` (folder -> (relevant sources, extracted files)) is what worker
+    processes already read and parsed (:mod:`moos_lint.parallel`).
+    """
     from moos_lint.engine import Unit
     from moos_lint.nsplug import Expansion
     from moos_lint.registry import Kind
 
-    sources = read_relevant(paths)
-    run.sources.update(sources)
-    apps = {a.folder: a for a in build_apps(sources)}
+    if parsed is None:
+        sources = read_relevant(paths)
+        run.sources.update(sources)
+        apps = {a.folder: a for a in build_apps(sources)}
+    else:
+        found = {p: s for srcs, _ in parsed.values() for p, s in srcs.items()}
+        sources = {p: found[p] for p in paths if p in found}  # in the order of ``paths``
+        run.sources.update(sources)
+        linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
+        link_apps(linked)
+        apps = {a.folder: a for a in linked}
     if getattr(run.settings, "cpp_backend", "tree-sitter") == "clang" and apps:
         from moos_lint.cpp.clang import enrich
 

@@ -15,11 +15,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from moos_lint.config import ConfigError, Settings, resolve_settings
+from moos_lint.cpp import app as cpp_app
 from moos_lint.diagnostics import Diagnostic, IncludeSite, Span
 from moos_lint.discovery import DEFAULT_EXCLUDE, _excluded, kind_of
 from moos_lint.engine import Unit, lint_files
 from moos_lint.lsp.documents import memory_reader, norm
 from moos_lint.nsplug import FileCache
+
+# re-linting a C++ file reparses only the files of its folder that changed
+cpp_app.PARSE_MEMO_SIZE = 96  # a document and its neighbours (MAX_NEIGHBOURS)
 
 #: At most this many neighbouring files are linted with a document.
 MAX_NEIGHBOURS = 64

@@ -201,7 +201,7 @@ def _bhv_param(line: Line, text: str, offset: int) -> BhvParam | None:
     return BhvParam(key, value, line, key_start, base + vrel, base + vrel + len(value))
 
 
-def _split_pairs(text: str) -> list[tuple[str, int]]:
+def split_commas(text: str) -> list[tuple[str, int]]:
     """Split on commas outside double quotes; returns (piece, offset)."""
     out, start, quoted = [], 0, False
     for i, ch in enumerate(text):
@@ -219,7 +219,7 @@ def _initialize(bf: BehaviorFile, line: Line, m: re.Match, offset: int) -> None:
     body = m.group(3)
     base = line.text.find(body, offset) if body else -1
     base = offset if base < 0 else base
-    for piece, rel in _split_pairs(body):
+    for piece, rel in split_commas(body):
         var, eq, value = piece.partition("=")
         if not eq or not var.strip() or not value.strip() or any(c.isspace() for c in var.strip()):
             bf.invalid.append((line, f"`initialize` needs `VAR=VALUE` pairs: `{piece.strip()}`"))

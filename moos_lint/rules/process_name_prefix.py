@@ -159,7 +159,8 @@ _LAUNCHED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 def _launched_in_run(run) -> tuple[set[str], set[str]]:
     """Names (lower case) launched by any file of this lint run, and those that are aliases."""
-    key = tuple(id(unit) for unit in run.units)
+    units = run.units  # the key is cheap: this runs once per unit of the run
+    key = (id(units), len(units), id(units[0]) if units else 0, id(units[-1]) if units else 0)
     cached = _LAUNCHED.get(run)
     if cached is None or cached[0] != key:
         names: set[str] = set()

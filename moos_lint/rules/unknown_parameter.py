@@ -53,6 +53,7 @@ MOOS-IvP caveats, deliberately not reported:
 """
 
 import difflib
+import functools
 
 from moos_lint.catalogue import catalogue_for
 from moos_lint.diagnostics import Edit, Fix, Severity
@@ -76,7 +77,13 @@ def block_apps(ctx):
 
 
 def suggestions(key: str, known) -> list[str]:
-    return difflib.get_close_matches(key, sorted(known), n=3, cutoff=0.75)
+    # a plug included by many missions asks the same question many times
+    return list(_close_matches(key, tuple(sorted(known))))
+
+
+@functools.lru_cache(maxsize=4096)
+def _close_matches(key: str, known: tuple[str, ...]) -> tuple[str, ...]:
+    return tuple(difflib.get_close_matches(key, known, n=3, cutoff=0.75))
 
 
 @rule(

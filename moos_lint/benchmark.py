@@ -1,0 +1,201 @@
+"""How fast moos-lint is on a tree: ``python3 -m moos_lint.benchmark TREE [--runs N]``.
+
+Prints each figure as the median (or the 95th percentile, for the editor
+re-lint) of ``N`` runs (default 5, at least 5):
+
+- ``cold``: ``moos-lint check TREE --no-cache`` (default rules, default jobs), and with ``-j 1``;
+- ``warm``: the same with the result cache filled and nothing changed;
+- ``--version``: ``moos-lint --version``, beside ``python3 -c pass`` (the interpreter alone);
+- ``re-lint``: one file linted as the language server does it (with its
+  neighbours, from the editor's text), on the largest mission files of the tree
+  and on the C++ file of the tree closest to 2,000 lines: p95 over the runs;
+- ``peak memory``: the largest resident set of the whole-tree run (any of its processes);
+- ``ruff``: ``ruff check`` (no cache) over as many bytes of Python, copied from the
+  installed packages into a temporary folder, and the ratio moos-lint / ruff.
+
+The cache of the warm runs lives in a temporary folder (``--cache-dir``): the
+benchmark writes nothing into the tree.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import sysconfig
+import tempfile
+import time
+from pathlib import Path
+
+MIN_RUNS = 5
+
+
+def _cli(*args: str) -> list[str]:
+    return [sys.executable, "-m", "moos_lint", *args]
+
+
+def _timed(cmd: list[str], env: dict[str, str] | None = None) -> float:
+    start = time.perf_counter()
+    subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env, check=False)
+    return time.perf_counter() - start
+
+
+def _median(cmd: list[str], runs: int, env: dict[str, str] | None = None) -> float:
+    return statistics.median(_timed(cmd, env) for _ in range(runs))
+
+
+def _p95(values: list[float]) -> float:
+    values = sorted(values)
+    return values[min(len(values) - 1, round(0.95 * (len(values) - 1)))]
+
+
+def _peak_rss_mb(cmd: list[str]) -> float:
+    """The largest resident set of ``cmd`` or any of its worker processes, in MB."""
+    probe = (
+        "import resource, subprocess, sys;"
+        "subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL);"
+        "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", probe, *cmd], capture_output=True, text=True, check=False
+    )
+    kb = int(out.stdout.strip() or 0)
+    scale = 1024 * 1024 if sys.platform == "darwin" else 1024  # bytes on macOS, KB on Linux
+    return kb / scale
+
+
+def _lintable(tree: str) -> list[str]:
+    from moos_lint.config import resolve_settings
+    from moos_lint.discovery import discover
+
+    settings = resolve_settings([Path(tree)], None)
+    return discover([Path(tree)], settings.exclude, settings.root).files
+
+
+def _python_sample(n_bytes: int, dest: str) -> int:
+    """Copy installed ``.py`` files into ``dest`` until ``n_bytes``; return the bytes copied."""
+    total = 0
+    site = sysconfig.get_paths()["purelib"]
+    for dirpath, dirnames, filenames in os.walk(site):
+        dirnames.sort()
+        for name in sorted(filenames):
+            if not name.endswith(".py") or total >= n_bytes:
+                continue
+            src = os.path.join(dirpath, name)
+            try:
+                size = os.path.getsize(src)
+                shutil.copyfile(src, os.path.join(dest, f"f{total:010d}_{name}"))
+            except OSError:
+                continue
+            total += size
+        if total >= n_bytes:
+            break
+    return total
+
+
+def _relint_times(path: str, runs: int) -> list[float]:
+    from moos_lint.lsp.analysis import analyse
+
+    text = Path(path).read_text(encoding="utf-8", errors="replace")
+    analyse(path, {path: text})  # warm: imports, the parser, the catalogue
+    times = []
+    for _ in range(runs):
+        start = time.perf_counter()
+        analyse(path, {path: text})
+        times.append(time.perf_counter() - start)
+    return times
+
+
+def _cpp_near(files: list[str], lines: int) -> str | None:
+    from moos_lint.cpp.prefilter import mentions_moos
+
+    best, best_gap = None, None
+    for p in files:
+        if not p.endswith((".cpp", ".cc", ".cxx")):
+            continue
+        try:
+            data = Path(p).read_bytes()
+        except OSError:
+            continue
+        if not mentions_moos(data):
+            continue
+        gap = abs(data.count(b"\n") - lines)
+        if best_gap is None or gap < best_gap:
+            best, best_gap = p, gap
+    return best
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python3 -m moos_lint.benchmark", description=__doc__)
+    ap.add_argument("tree", help="the folder to lint (a MOOS-IvP checkout, say)")
+    ap.add_argument("--runs", type=int, default=MIN_RUNS, help="runs per figure (at least 5)")
+    args = ap.parse_args(argv)
+    runs = max(MIN_RUNS, args.runs)
+    tree = os.path.abspath(args.tree)
+    if not os.path.isdir(tree):
+        print(f"benchmark: {args.tree}: not a folder", file=sys.stderr)
+        return 2
+    files = _lintable(tree)
+    n_bytes = sum(os.path.getsize(p) for p in files if os.path.isfile(p))
+    print(f"tree: {tree}: {len(files)} files, {n_bytes / 1e6:.1f} MB; median of {runs} runs")
+    print(f"cpus: {os.cpu_count()}, python {sys.version.split()[0]}")
+    out = []
+
+    def show(name: str, value: str) -> None:
+        out.append((name, value))
+        print(f"  {name:34s} {value}", flush=True)
+
+    with tempfile.TemporaryDirectory(prefix="moos-lint-bench-") as tmp:
+        report = os.path.join(tmp, "report.json")
+        cache = os.path.join(tmp, "cache")
+        check = ["check", tree, "--output-format", "json", "-o", report, "--exit-zero"]
+        cold = _median(_cli(*check, "--no-cache"), runs)
+        show("cold (default jobs)", f"{cold:.3f} s")
+        show("cold (-j 1)", f"{_median(_cli(*check, '--no-cache', '-j', '1'), runs):.3f} s")
+        _timed(_cli(*check, "--cache-dir", cache))  # fill the cache
+        show(
+            "warm (cache, nothing changed)",
+            f"{_median(_cli(*check, '--cache-dir', cache), runs):.3f} s",
+        )
+        show("moos-lint --version", f"{_median(_cli('--version'), runs) * 1000:.0f} ms")
+        show("python3 -c pass", f"{_median([sys.executable, '-c', 'pass'], runs) * 1000:.0f} ms")
+        rss = max(_peak_rss_mb(_cli(*check, "--no-cache")) for _ in range(2))
+        show("peak memory (whole tree)", f"{rss:.0f} MB")
+
+        missions = sorted(
+            (p for p in files if p.endswith(".moos")), key=lambda p: -os.path.getsize(p)
+        )[:3]
+        for p in missions:
+            t = _relint_times(p, max(runs, 20))
+            name = f"re-lint {os.path.basename(p)}"
+            show(
+                name[:34], f"p95 {_p95(t) * 1000:.1f} ms (median {statistics.median(t) * 1000:.1f})"
+            )
+        cpp = _cpp_near(files, 2000)
+        if cpp is not None:
+            n = Path(cpp).read_bytes().count(b"\n")
+            t = _relint_times(cpp, max(runs, 20))
+            name = f"re-lint {os.path.basename(cpp)} ({n} lines)"
+            show(
+                name[:34], f"p95 {_p95(t) * 1000:.1f} ms (median {statistics.median(t) * 1000:.1f})"
+            )
+
+        sample = os.path.join(tmp, "python-sample")
+        os.mkdir(sample)
+        got = _python_sample(n_bytes, sample)
+        ruff = shutil.which("ruff")
+        if ruff is None:
+            show("ruff", "not installed (pip install ruff)")
+        else:
+            cmd = [ruff, "check", "--no-cache", "--isolated", "--exit-zero", "-q", sample]
+            r = _median(cmd, runs)
+            show(f"ruff over {got / 1e6:.1f} MB of Python", f"{r:.3f} s")
+            show("ratio moos-lint cold / ruff", f"{cold / r:.1f}x")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,271 @@
+"""The result cache: a re-run over files that have not changed costs a few stat calls.
+
+**What is stored.** One entry per *run*: the result of linting a given list of
+files with given settings (the findings, the count of internal errors, and the
+text of the files the findings point into, for the text output and
+baselines). It lives in ``.moos_lint_cache/`` in the project root (the
+config's folder, else the linted folder), or in the folder the ``cache-dir``
+setting names; ``--no-cache`` neither reads nor writes it.
+
+**The key** is a hash of the moos-lint version (and, for a development
+install, the size and mtime of each of its own source files), the settings
+(``--show-settings``: selection, options, defines, include paths, ...), the
+paths given, ``--context``, and the sorted list of files the run lints (after
+discovery, so a new or deleted mission file is a different key).
+
+**When an entry is valid.** The entry records every file the run read: the
+linted files, every file an ``#include`` pulled in, behavior files and sibling
+missions the mission model opened, the C++ files (also the ones the prefilter
+skipped), the shell scripts beside the missions (``uPokeDB`` lines), the
+``CMakeLists.txt`` that names a C++ app's process, and user catalogues. For
+each it keeps the modification time, the size and a hash of the content. An
+entry is used only when every file still has the same (mtime, size), or, when
+that changed (a ``touch``, a checkout), the same content hash. It also records
+the modification time of every folder those files sit in, of the include
+paths, and of the folders nsplug searched for an include: a file created or
+deleted there (an include that was missing now exists) invalidates it too.
+Not seen: a file created outside those folders that only a project-wide
+search finds (the repository's C++ file names for ``unknown-behavior``);
+run once with ``--no-cache`` after such a change.
+
+There is no finer, per-file reuse: findings cross files (a mission joins the
+C++ apps it launches, its behavior files and its sibling missions;
+``unused-suppression`` needs every finding), so a changed file re-lints the
+whole run. The language server does not use this cache.
+
+**Safety.** An entry is written to a temporary file and moved into place with
+:func:`os.replace`, so two runs that overlap never see half an entry; an entry
+that cannot be read or decoded (partial, corrupt, from another version) is
+ignored and rewritten, never an error; a cache folder that cannot be written
+is silently not used. Nothing is written outside the cache folder.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import glob
+import hashlib
+import json
+import os
+import pickle
+import tempfile
+from pathlib import Path
+from typing import Any
+
+from moos_lint import __version__
+
+CACHE_DIR = ".moos_lint_cache"
+ENV_VAR = "MOOS_LINT_CACHE_DIR"
+#: bump when the entry layout changes
+FORMAT = 1
+#: entries kept (one per distinct run: paths, settings, moos-lint version)
+KEEP = 8
+_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+
+
+def cache_dir_for(settings: Any) -> str:
+    """The cache folder: ``$MOOS_LINT_CACHE_DIR``, the ``cache-dir`` setting, else
+    ``.moos_lint_cache`` in the root (``--cache-dir`` overrides them all)."""
+    configured = os.environ.get(ENV_VAR) or getattr(settings, "cache_dir", None)
+    if configured:
+        return os.path.abspath(configured)
+    return os.path.join(os.path.abspath(settings.root), CACHE_DIR)
+
+
+def _code_fingerprint() -> list:
+    """The version, and each of moos-lint's own files' (name, size, mtime)."""
+    out: list = [__version__, FORMAT]
+    for dirpath, dirnames, filenames in os.walk(_PACKAGE):
+        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+        for f in sorted(filenames):
+            if f.endswith((".py", ".json")):
+                with contextlib.suppress(OSError):
+                    st = os.stat(os.path.join(dirpath, f))
+                    out.append((os.path.relpath(os.path.join(dirpath, f), _PACKAGE), st.st_size))
+                    out.append(st.st_mtime_ns)
+    return out
+
+
+def run_key(settings: Any, paths: list[Path], files: list[str], context: bool) -> str:
+    # the selected rules follow from the selection settings and moos-lint's own code
+    data = {
+        "code": _code_fingerprint(),
+        "settings": _settings_dict(settings),
+        "paths": [os.path.abspath(p) for p in paths],
+        "context": context,
+        "files": files,
+    }
+    text = json.dumps(data, sort_keys=True, default=str)
+    return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:40]
+
+
+def _settings_dict(settings: Any) -> dict:
+    """Every setting (rule option defaults come with the code), without loading the rules."""
+    return {k: v for k, v in vars(settings).items() if not k.startswith("_")}
+
+
+def _digest(path: str) -> str:
+    """A hash of the file's bytes; for a file that cannot be read (a FIFO, a device, a
+    file too large, a missing one), why it cannot: the safe reader never blocks."""
+    from moos_lint.source import read_bytes
+
+    data = read_bytes(Path(path))
+    if not isinstance(data, bytes):
+        return f"unread:{data.kind}"
+    return hashlib.blake2b(data, digest_size=20).hexdigest()
+
+
+def _stat(path: str) -> tuple[int, int] | None:
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_mtime_ns, st.st_size
+
+
+def _dir_mtime(path: str) -> int | None:
+    try:
+        return os.stat(path).st_mtime_ns
+    except OSError:
+        return None
+
+
+def _side_files(result: Any, settings: Any) -> set[str]:
+    """Files the analysis opens outside the nsplug reader."""
+    out: set[str] = set(getattr(settings, "catalogues", []) or [])
+    cc = getattr(settings, "compile_commands", None)
+    if cc:
+        out.add(os.path.join(cc, "compile_commands.json") if os.path.isdir(cc) else cc)
+    moos_dirs = {os.path.dirname(p) for p in result.files if not p.endswith(_CPP)}
+    for d in moos_dirs:
+        out.update(glob.glob(os.path.join(glob.escape(d), "*.sh")))
+    cpp_dirs = {os.path.dirname(p) for p in result.files if p.endswith(_CPP)}
+    for d in cpp_dirs:
+        for cm in (
+            os.path.join(d, "CMakeLists.txt"),
+            os.path.join(os.path.dirname(d), "CMakeLists.txt"),
+        ):
+            out.add(cm)
+    return out
+
+
+_CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".CPP", ".CC", ".CXX", ".H", ".HPP")
+
+
+def _dependencies(result: Any, settings: Any, read: set[str], probed: set[str]) -> dict[str, Any]:
+    files = set(read) | set(result.files) | set(result.sources) | _side_files(result, settings)
+    deps = {}
+    for path in sorted(files):
+        deps[path] = (_stat(path), _digest(path))
+    dirs = {os.path.dirname(p) for p in files}
+    dirs.update(getattr(settings, "include_paths", []) or [])
+    dirs.update(probed)
+    return {"files": deps, "dirs": {d: _dir_mtime(d) for d in sorted(dirs)}}
+
+
+def _valid(entry: dict) -> bool:
+    deps = entry["deps"]
+    for d, mtime in deps["dirs"].items():
+        if _dir_mtime(d) != mtime:
+            return False
+    for path, (st, digest) in deps["files"].items():
+        now = _stat(path)
+        if now == st:
+            continue
+        if _digest(path) != digest:
+            return False
+    return True
+
+
+def load(folder: str, key: str) -> Any | None:
+    """The stored result for ``key`` when it is still valid, else None (never raises)."""
+    path = os.path.join(folder, f"run-{key}.pickle")
+    try:
+        with open(path, "rb") as fh:
+            entry = pickle.load(fh)
+        if not isinstance(entry, dict) or entry.get("key") != key:
+            return None
+        if not _valid(entry):
+            return None
+        return entry["result"]
+    except Exception:  # a missing, partial or corrupt entry is a cache miss
+        return None
+
+
+def store(
+    folder: str, key: str, result: Any, settings: Any, read: set[str], probed: set[str]
+) -> None:
+    """Write the entry for ``key`` atomically; a folder that cannot be written is skipped."""
+    from moos_lint.engine import Result
+
+    keep = {d.span.path for d in result.diagnostics}
+    for d in result.diagnostics:
+        keep.update(site.path for site in d.chain)
+    slim = Result(
+        diagnostics=result.diagnostics,
+        files=result.files,
+        internal_errors=result.internal_errors,
+        missing=result.missing,
+        sources={p: s for p, s in result.sources.items() if p in keep},
+    )
+    try:
+        # first the folder: creating it changes its parent's mtime, which the entry records
+        os.makedirs(folder, exist_ok=True)
+        ignore = os.path.join(folder, ".gitignore")
+        if not os.path.exists(ignore):
+            _atomic_write(folder, ignore, b"# created by moos-lint\n*\n")
+        entry = {"key": key, "deps": _dependencies(result, settings, read, probed)}
+        entry["result"] = slim
+        data = pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL)
+        _atomic_write(folder, os.path.join(folder, f"run-{key}.pickle"), data)
+        _prune(folder)
+    except Exception:
+        return
+
+
+def _prune(folder: str) -> None:
+    """Keep the :data:`KEEP` most recently written entries."""
+    entries = []
+    for name in os.listdir(folder):
+        if name.startswith("run-") and name.endswith(".pickle"):
+            with contextlib.suppress(OSError):
+                entries.append((os.stat(os.path.join(folder, name)).st_mtime_ns, name))
+    for _, name in sorted(entries, reverse=True)[KEEP:]:
+        with contextlib.suppress(OSError):
+            os.unlink(os.path.join(folder, name))
+
+
+def _atomic_write(folder: str, path: str, data: bytes) -> None:
+    fd, tmp = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=".part")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+def cached_lint(
+    paths: list[Path], settings: Any, *, context: bool, jobs: int | None, cache_dir: str
+) -> Any:
+    """:func:`moos_lint.engine.lint_paths` through the cache."""
+    from moos_lint.discovery import discover
+    from moos_lint.engine import lint_paths
+    from moos_lint.nsplug import FileCache
+
+    found = discover(paths, settings.exclude, settings.root)
+    key = run_key(settings, paths, found.files, context)
+    hit = load(cache_dir, key)
+    if hit is not None:
+        hit.missing = list(found.missing)
+        return hit
+    reader = FileCache()
+    result = lint_paths(paths, settings, context=context, cache=reader, jobs=jobs)
+    if not result.internal_errors:  # a crash is never replayed from the cache
+        store(cache_dir, key, result, settings, reader.paths(), reader.probed)
+    return result
+
+
+__all__ = ["CACHE_DIR", "cache_dir_for", "cached_lint", "load", "run_key", "store"]

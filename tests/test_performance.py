@@ -1,0 +1,313 @@
+"""The speed-ups keep their promises: without timing anything.
+
+- the C++ prefilter keeps parsing to the files that mention the MOOS API;
+- a run expands and parses a shared behavior file once;
+- the result cache skips unchanged files, and notices a changed include, a new
+  include, a touched-but-equal file, a corrupt entry; ``--no-cache`` writes nothing;
+- ``--jobs 2`` gives the output of ``--jobs 1``;
+- ``moos-lint --version`` imports no parser, no libclang and no language server.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from moos_lint import cache as result_cache
+from moos_lint import engine, parallel
+from moos_lint.cli import main
+from moos_lint.config import Settings, resolve_settings
+from moos_lint.discovery import _excluded
+from moos_lint.output import render
+from tests.fixture_expect import FIXTURES
+
+MISSION = """\
+ServerPort = 9000
+Community = alpha
+
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB @ NewConsole = false
+  Run = pHelmIvP @ NewConsole = false
+}
+
+ProcessConfig = pHelmIvP
+{
+  behaviors = shared.bhv
+}
+#include plug.moos
+"""
+PLUG = "ProcessConfig = pLogger\n{\n  AppTick = 4\n}\n"
+BEHAVIORS = "initialize DEPLOY = false\n\nBehavior = BHV_Waypoint\n{\n  name = go\n}\n"
+
+
+def _tree(root: Path) -> Path:
+    (root / "a.moos").write_text(MISSION)
+    (root / "b.moos").write_text(MISSION.replace("alpha", "bravo"))
+    (root / "plug.moos").write_text(PLUG)
+    (root / "shared.bhv").write_text(BEHAVIORS)
+    return root
+
+
+def _settings(root: Path) -> Settings:
+    return resolve_settings([root], None)
+
+
+def _json(result) -> list[dict]:
+    return json.loads(render("json", result))
+
+
+# ------------------------------------------------------------------ prefilter and sharing
+def test_the_prefilter_keeps_parsing_to_files_that_mention_moos(tmp_path, monkeypatch):
+    from moos_lint.cpp import app, parse
+
+    app_dir = tmp_path / "pApp"
+    app_dir.mkdir()
+    (app_dir / "App.cpp").write_text('bool App::OnStartUp() { Notify("X", 1); return true; }\n')
+    (app_dir / "Util.cpp").write_text("int add(int a, int b) { return a + b; }\n")
+    (app_dir / "Util.h").write_text("int add(int a, int b);\n")
+    decoded, parsed = [], []
+    real_decode, real_parse = app.decode, parse.Backend.parse
+    monkeypatch.setattr(app, "decode", lambda data, p: decoded.append(p) or real_decode(data, p))
+    monkeypatch.setattr(
+        parse.Backend, "parse", lambda self, data: parsed.append(data) or real_parse(self, data)
+    )
+    engine.lint_paths([tmp_path], _settings(tmp_path))
+    assert [os.path.basename(p) for p in decoded] == ["App.cpp"]
+    assert len(parsed) == 1 and b"Notify" in parsed[0]
+
+
+def test_the_language_server_reparses_only_changed_cpp(tmp_path, monkeypatch):
+    from moos_lint.cpp import app, parse
+
+    monkeypatch.setattr(app, "PARSE_MEMO_SIZE", 8)
+    monkeypatch.setattr(app, "_parse_memo", app.OrderedDict())
+    folder = tmp_path / "pApp"
+    folder.mkdir()
+    (folder / "A.cpp").write_text('void a() { Notify("A", 1); }\n')
+    (folder / "B.cpp").write_text('void b() { Notify("B", 2); }\n')
+    parsed: list[bytes] = []
+    real = parse.Backend.parse
+    monkeypatch.setattr(
+        parse.Backend, "parse", lambda self, data: parsed.append(data) or real(self, data)
+    )
+    files = [str(folder / "A.cpp"), str(folder / "B.cpp")]
+    first = _json(engine.lint_files(files, _settings(tmp_path)))
+    assert len(parsed) == 2
+    assert _json(engine.lint_files(files, _settings(tmp_path))) == first
+    assert len(parsed) == 2  # nothing changed: nothing reparsed
+    (folder / "B.cpp").write_text('void b() { Notify("B", 3); }\n')
+    engine.lint_files(files, _settings(tmp_path))
+    assert len(parsed) == 3 and b'"B", 3' in parsed[-1]
+
+
+def test_a_run_expands_a_shared_behavior_file_once(tmp_path, monkeypatch):
+    from moos_lint.nsplug import Preprocessor
+
+    _tree(tmp_path)
+    expanded: list[str] = []
+    real = Preprocessor._expand
+    monkeypatch.setattr(
+        Preprocessor, "_expand", lambda self, p, m: expanded.append(p) or real(self, p, m)
+    )
+    settings = _settings(tmp_path)
+    settings.select = ["ALL"]  # the mission rules read both missions' behavior files
+    result = engine.lint_paths([tmp_path], settings)
+    assert any(d.code.startswith("M") for d in result.diagnostics)  # the models were built
+    assert sorted(os.path.basename(p) for p in expanded) == [
+        "a.moos",
+        "b.moos",
+        "plug.moos",
+        "shared.bhv",
+    ]
+
+
+def test_the_exclude_matcher_agrees_with_fnmatch():
+    def reference(rel, name, patterns):
+        for pat in patterns:
+            pat = pat.rstrip("/")
+            if fnmatch.fnmatch(name, pat) or fnmatch.fnmatch(rel, pat):
+                return True
+            if fnmatch.fnmatch(rel, pat + "/*"):
+                return True
+        return False
+
+    patterns = [["build", "*.bak", "docs/", "a/b", "x?z", "[ab]*c", "**/gen"], [], [".git"]]
+    rels = ["build", "src/build", "build/x.moos", "a/b/c.moos", "xyz", "ab/c", "bc", "q/gen/a"]
+    for pats in patterns:
+        for rel in rels:
+            name = rel.rsplit("/", 1)[-1]
+            assert _excluded(rel, name, pats) == reference(rel, name, pats), (rel, pats)
+
+
+# ------------------------------------------------------------------ the result cache
+@pytest.fixture
+def tree(tmp_path):
+    root = tmp_path / "tree"
+    root.mkdir()
+    return _tree(root)
+
+
+@pytest.fixture
+def counted(monkeypatch):
+    """How many times the engine really lints (the cache did not answer)."""
+    calls: list[int] = []
+    real = engine.lint_files
+
+    def lint_files(files, *a, **kw):
+        calls.append(len(files))
+        return real(files, *a, **kw)
+
+    monkeypatch.setattr(engine, "lint_files", lint_files)
+    return calls
+
+
+def _cached(tree: Path, cache_dir: Path):
+    return engine.lint_paths([tree], _settings(tree), cache_dir=str(cache_dir))
+
+
+def test_the_cache_skips_an_unchanged_run(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    first = _json(_cached(tree, store))
+    assert counted == [4]
+    second = _json(_cached(tree, store))
+    assert counted == [4], "an unchanged run was linted again"
+    assert second == first
+    assert [p.name for p in store.glob("run-*.pickle")]
+
+
+def test_the_cache_notices_a_changed_include(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    before = _json(_cached(tree, store))
+    # an include of both missions gets a stray brace: a finding appears in plug.moos
+    (tree / "plug.moos").write_text(PLUG + "}\n")
+    after = _json(_cached(tree, store))
+    assert len(counted) == 2
+    fresh = _json(engine.lint_paths([tree], _settings(tree)))
+    assert after == fresh != before
+    assert any(d["path"].endswith("plug.moos") for d in after if d not in before)
+
+
+def test_the_cache_notices_an_include_that_now_exists(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    (tree / "a.moos").write_text(MISSION + "#include extra/more.plug\n")
+    before = _json(_cached(tree, store))
+    assert any(d["code"] == "P001" for d in before)  # include-not-found
+    (tree / "extra").mkdir()
+    (tree / "extra" / "more.plug").write_text("// nothing\n")  # not a linted suffix
+    after = _json(_cached(tree, store))
+    assert len(counted) == 2
+    assert not any(d["code"] == "P001" for d in after)
+
+
+def test_a_touched_file_with_the_same_text_keeps_the_entry(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    first = _json(_cached(tree, store))
+    st = os.stat(tree / "shared.bhv")
+    os.utime(tree / "shared.bhv", ns=(st.st_atime_ns, st.st_mtime_ns + 5_000_000_000))
+    assert _json(_cached(tree, store)) == first
+    assert len(counted) == 1
+
+
+def test_a_changed_setting_is_another_entry(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    _cached(tree, store)
+    settings = _settings(tree)
+    settings.ignore = ["R"]
+    engine.lint_paths([tree], settings, cache_dir=str(store))
+    assert len(counted) == 2
+
+
+def test_a_corrupt_or_partial_entry_is_ignored(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    first = _json(_cached(tree, store))
+    (entry,) = store.glob("run-*.pickle")
+    data = entry.read_bytes()
+    for broken in (b"", data[: len(data) // 2], b"not a pickle at all", b"\x80\x04K\x01."):
+        entry.write_bytes(broken)
+        assert _json(_cached(tree, store)) == first
+    assert len(counted) == 5
+    # a partial temporary file left by a killed run is harmless too
+    (store / ".tmp-x.part").write_bytes(data[:10])
+    assert _json(_cached(tree, store)) == first
+    assert len(counted) == 5
+
+
+def test_the_cache_writes_only_its_folder_and_no_cache_writes_nothing(tree, monkeypatch, capsys):
+    monkeypatch.delenv(result_cache.ENV_VAR, raising=False)
+    monkeypatch.chdir(tree)
+
+    def listing():
+        return sorted(str(p.relative_to(tree)) for p in tree.rglob("*"))
+
+    before = listing()
+    main(["check", ".", "--no-cache", "--output-format", "json"])
+    assert listing() == before
+    main(["check", ".", "--output-format", "json"])
+    added = sorted(set(listing()) - set(before))
+    assert added[0] == ".moos_lint_cache" and all(
+        p.startswith(".moos_lint_cache/") for p in added[1:]
+    )
+    assert (tree / ".moos_lint_cache" / ".gitignore").read_text().strip().endswith("*")
+    capsys.readouterr()
+
+
+def test_cache_dir_in_the_config(tree, tmp_path, monkeypatch):
+    monkeypatch.delenv(result_cache.ENV_VAR, raising=False)
+    (tree / "moos-lint.toml").write_text('cache-dir = "../elsewhere"\n')
+    settings = _settings(tree)
+    assert settings.cache_dir == str((tmp_path / "elsewhere").resolve())
+    assert result_cache.cache_dir_for(settings) == settings.cache_dir
+
+
+# ------------------------------------------------------------------ --jobs
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+def test_jobs_2_gives_the_output_of_jobs_1():
+    settings = resolve_settings([FIXTURES], None)
+    files = engine.discover([FIXTURES], settings.exclude, settings.root).files
+    assert parallel.effective_jobs(2, len(files)) == 2  # the pool really runs
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    assert json.loads(two) == json.loads(one)
+    assert two == one
+
+
+def test_small_inputs_stay_in_one_process():
+    assert parallel.effective_jobs(8, parallel.MIN_FILES - 1) == 1
+    assert parallel.effective_jobs(1, 10_000) == 1
+
+
+def test_jobs_must_be_positive(capsys):
+    with pytest.raises(SystemExit):
+        main(["check", ".", "--jobs", "0"])
+    assert "--jobs" in capsys.readouterr().err
+
+
+# ------------------------------------------------------------------ --version
+def test_version_imports_no_parser_and_no_server():
+    code = (
+        "import sys\n"
+        "from moos_lint.cli import main\n"
+        "try:\n    main(['--version'])\nexcept SystemExit:\n    pass\n"
+        "heavy = ('tree_sitter', 'tree_sitter_cpp', 'clang', 'pygls', 'lsprotocol')\n"
+        "print([m for m in sys.modules if m.split('.')[0] in heavy])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip().endswith("[]"), out.stdout
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+@pytest.mark.parametrize("phase", ["_cpp_folder", "_unit_rules"])
+def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
+    settings = resolve_settings([FIXTURES], None)
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    monkeypatch.setattr(parallel, phase, lambda *a: os._exit(3))  # as a crash in a parser would
+    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    assert two == one
