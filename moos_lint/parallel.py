@@ -21,9 +21,11 @@ worker processes:
 
 Workers are forked, which shares the run with them for free; where ``fork``
 is not available (Windows, macOS, where it is unsafe) a run stays in one
-process. A small input (fewer than :data:`MIN_FILES` files) also stays in one
+process, and so does a process that runs other threads (forking it could
+deadlock). A small input (fewer than :data:`MIN_FILES` files) also stays in one
 process: starting a pool costs more than it saves, and editors re-lint one
-file at a time.
+file at a time. A worker that dies breaks the pool; the main process then does
+the rest of the work itself, so a run never waits forever.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ import contextlib
 import multiprocessing
 import os
 import sys
+import threading
 from collections.abc import Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Any
@@ -60,6 +63,8 @@ def effective_jobs(jobs: int | None, n_files: int) -> int:
     if jobs is None:
         jobs = default_jobs()
     if jobs <= 1 or n_files < MIN_FILES or not can_fork():
+        return 1
+    if threading.active_count() > 1:  # forking a threaded process (an embedding host) can deadlock
         return 1
     return jobs
 
