@@ -205,6 +205,11 @@ def _corpus_findings(rel: str, code: str) -> list[tuple[str, int, str]]:
             "M005",
             [("ivp/missions/s6_foxtrot/foxtrot.bhv", 53, "HSLINE")],
         ),
+        (
+            "ivp/missions/u6_alpha/meta_vehicle.moos",
+            "M002",
+            [("ivp/missions/u6_alpha/plug_uFldNodeBroker.moos", 14, "BRIDGE = scr=VIEW_POINT")],
+        ),
         ("ivp/missions/s1_alpha/alpha.moos", "M001", []),
         ("ivp/missions/s1_alpha/alpha.moos", "M005", []),
         ("ivp/missions/m2_berta/meta_vehicle.moos", "M005", []),

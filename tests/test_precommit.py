@@ -183,3 +183,30 @@ def test_manifest_declares_the_hook():
         assert pattern.search(f"dir/file{ext}"), ext
     for other in ("notes.txt", "file.moos.bak", "x.py", "plug"):
         assert not pattern.search(other), other
+
+
+def test_try_repo_runs_the_hook_from_this_repository(env):
+    """`pre-commit try-repo`, the way a user tries the hook before adding it to a config."""
+    project = env["project"]
+    (project / "try_bad.moos").write_text("ProcessConfig = pHelmIvP {\n}\n")
+    res = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pre_commit",
+            "try-repo",
+            str(env["hook_repo"]),
+            "moos-lint",
+            "--color=never",
+            "--files",
+            "try_bad.moos",
+        ],
+        cwd=project,
+        env=env["environ"],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    out = res.stdout + res.stderr
+    assert res.returncode == 1, out
+    assert "R003" in out and "try_bad.moos:1:" in out, out

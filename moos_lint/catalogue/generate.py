@@ -124,6 +124,23 @@ CORRECTIONS: dict[str, dict] = {
         "publishes": ["NODE_REPORT_LOCAL"],
         "why": "the node report variable defaults to NODE_REPORT_LOCAL (NodeReporter.cpp:714)",
     },
+    "uFldNodeBroker": {
+        "param_forms": {
+            "bridge": {"form": "fields:src", "at": "ivp/src/uFldNodeBroker/NodeBroker.cpp:337-352"}
+        },
+        "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
+        "(handleConfigBridge)",
+    },
+    "uFldShoreBroker": {
+        "param_forms": {
+            "bridge": {
+                "form": "fields:src",
+                "at": "ivp/src/uFldShoreBroker/ShoreBroker.cpp:592-614",
+            }
+        },
+        "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
+        "(handleConfigBridge)",
+    },
     "pHelmIvP": {
         "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
         "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "
@@ -333,6 +350,8 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
                     continue
                 if isinstance(vals, bool):
                     entry[key] = vals
+                elif isinstance(vals, dict):
+                    entry[key] = {**entry.get(key, {}), **vals}
                 else:
                     entry[key] = sorted(set(entry.get(key, [])) | set(vals))
             entry.setdefault("corrected", []).append(corr["why"])

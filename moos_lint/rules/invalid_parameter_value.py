@@ -12,6 +12,9 @@ as recorded in the catalogue with the source line that enforces it:
   units: `speed = 2m/s` is rejected); `setNonNegDoubleOnString` and
   `setUIntOnString` also reject negative values, `setPosDoubleOnString`
   rejects zero, `setPosUIntOnString` values below 1;
+- a route such as uFldNodeBroker's and uFldShoreBroker's
+  `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
+  rejected and nothing is bridged;
 - `AppTick` and `MaxAppTick` (every MOOS app) are read with
   `GetConfigurationParam(double)`, which ignores a value that does not start
   with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
@@ -92,6 +95,17 @@ def _atof(s: str) -> float:
 
 def problem(form: str, value: str) -> str | None:
     """Why ``value`` does not have the ``form``, or None."""
+    if form.startswith("fields:"):
+        # `key=value` pairs separated by commas; the listed fields must be there
+        pairs = {}
+        for item in value.split(","):
+            left, eq, right = item.partition("=")
+            if eq:
+                pairs[left.strip().lower()] = right.strip()
+        missing = [f for f in form[len("fields:") :].split("+") if not pairs.get(f)]
+        if missing:
+            return "has no " + " or ".join(f"`{f}=` field" for f in missing)
+        return None
     if form == "bool":
         if value.lower() not in BOOLS:
             return "is not a boolean (true/false, on/off, yes/no)"
