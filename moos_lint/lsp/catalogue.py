@@ -67,6 +67,20 @@ class Catalogue:
 EMPTY = Catalogue()
 
 
+#: How the value forms the catalogue records read in a hover.
+FORM_TEXT = {
+    "bool": "a boolean: true/false, on/off, yes/no",
+    "number": "a number",
+    "nonneg": "a number, 0 or more",
+    "positive": "a number greater than 0",
+    "uint": "a whole number, 0 or more",
+    "posuint": "a whole number, 1 or more",
+    "int": "a whole number",
+    "moos_double": "a number starting with a digit or `-` (`0.5`, not `.5`)",
+    "fields:src": "`key=value` fields, `src=` required",
+}
+
+
 def from_app_catalogue(cat: object) -> Catalogue:
     """Adapt the rules' app catalogue (``moos_lint.catalogue.Catalogue``).
 
@@ -79,10 +93,17 @@ def from_app_catalogue(cat: object) -> Catalogue:
         name = str(getattr(info, "name", ""))
         where = str(getattr(info, "provenance", "") or "")
         doc = f"{what} `{name}`" + (f" (from {where})" if where else "")
-        params = {
-            str(p): ParamInfo(str(p), f"a configuration key that `{name}` reads")
-            for p in sorted(getattr(info, "params", ()) or ())
-        }
+        forms = dict(getattr(info, "forms", {}) or {})
+        params = {}
+        for p in sorted(getattr(info, "params", ()) or ()):
+            text = f"a configuration key that `{name}` reads"
+            form = forms.get(str(p).lower())
+            if form:
+                kind, at = form
+                text += f"; its value is {FORM_TEXT.get(kind, kind)}"
+                if at:
+                    text += f" (parsed at {at})"
+            params[str(p)] = ParamInfo(str(p), text)
         return Component(name, doc, params)
 
     apps = [component(i, "MOOS app") for i in dict(getattr(cat, "apps", {}) or {}).values()]
