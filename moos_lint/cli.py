@@ -303,13 +303,9 @@ def _check(args: argparse.Namespace, settings) -> int:
         result = outcome.result
     fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
-    if args.output_file:
-        try:
-            args.output_file.write_text(text, encoding="utf-8")
-        except OSError as exc:
-            return _usage_error(f"cannot write {args.output_file}: {exc.strerror or exc}")
-    else:
-        sys.stdout.write(text)
+    failed = _emit(args, text)
+    if failed is not None:
+        return failed
     if result.internal_errors:
         print(
             f"moos-lint: {result.internal_errors} internal error(s); please report them",
@@ -319,6 +315,18 @@ def _check(args: argparse.Namespace, settings) -> int:
     if result.diagnostics and not args.exit_zero:
         return EXIT_FINDINGS
     return EXIT_CLEAN
+
+
+def _emit(args: argparse.Namespace, text: str) -> int | None:
+    """Write a report to ``--output-file`` or stdout; an exit status when that fails."""
+    if not args.output_file:
+        sys.stdout.write(text)
+        return None
+    try:
+        args.output_file.write_text(text, encoding="utf-8")
+    except OSError as exc:
+        return _usage_error(f"cannot write {args.output_file}: {exc.strerror or exc}")
+    return None
 
 
 def _write_baseline(args: argparse.Namespace, settings, root: str, result) -> int:
@@ -353,13 +361,9 @@ def _show_diff(args: argparse.Namespace, outcome) -> int:
     from moos_lint.output import display_path
 
     text = "".join(unified_diff(doc, display_path(doc.path)) for doc in outcome.changed)
-    if args.output_file:
-        try:
-            args.output_file.write_text(text, encoding="utf-8")
-        except OSError as exc:
-            return _usage_error(f"cannot write {args.output_file}: {exc.strerror or exc}")
-    else:
-        sys.stdout.write(text)
+    failed = _emit(args, text)
+    if failed is not None:
+        return failed
     if not args.quiet:
         n, files = outcome.fixed, len(outcome.changed)
         print(f"moos-lint: would fix {n} finding(s) in {files} file(s)", file=sys.stderr)

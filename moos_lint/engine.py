@@ -194,11 +194,12 @@ class Run:
                 out.extend(r.check(ctx) or ())
             except Exception as exc:  # a rule bug must not stop the run
                 errors += 1
-                out.append(internal_error(unit.path, r, exc))
+                out.append(internal_error(unit.path, f"in rule {r.code} ({r.name})", exc))
         return out, errors
 
 
-def internal_error(path: str, r: Rule, exc: BaseException) -> Diagnostic:
+def internal_error(path: str, what: str, exc: BaseException) -> Diagnostic:
+    """A finding that says moos-lint itself failed (``what``: where), so the run goes on."""
     where = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
     at = f" at {os.path.basename(where.filename)}:{where.lineno}" if where else ""
     return Diagnostic(
@@ -206,8 +207,7 @@ def internal_error(path: str, r: Rule, exc: BaseException) -> Diagnostic:
         name="internal-error",
         severity=Severity.ERROR,
         span=Span(path, 1, 1),
-        message=f"internal error in rule {r.code} ({r.name}): {type(exc).__name__}: {exc}{at}; "
-        "please report it",
+        message=f"internal error {what}: {type(exc).__name__}: {exc}{at}; please report it",
     )
 
 
@@ -245,17 +245,8 @@ def _build_cpp_units(
         try:
             units.extend(build_cpp_units(run, paths))
         except Exception as exc:  # one folder's C++ must not stop the run
-            where = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
-            at = f" at {os.path.basename(where.filename)}:{where.lineno}" if where else ""
             errors.append(
-                Diagnostic(
-                    code=INTERNAL_ERROR,
-                    name="internal-error",
-                    severity=Severity.ERROR,
-                    span=Span(sorted(paths)[0], 1, 1),
-                    message=f"internal error reading the C++ files of this folder: "
-                    f"{type(exc).__name__}: {exc}{at}; please report it",
-                )
+                internal_error(sorted(paths)[0], "reading the C++ files of this folder", exc)
             )
     return units, errors
 
@@ -314,7 +305,8 @@ def lint_files(
                 kept.extend(d for d in r.check(ctx) or () if not run.file_ignored(d))
             except Exception as exc:
                 result.internal_errors += 1
-                kept.append(internal_error(files[0] if files else ".", r, exc))
+                where = files[0] if files else "."
+                kept.append(internal_error(where, f"in rule {r.code} ({r.name})", exc))
     kept.sort(key=lambda d: d.sort_key)
     result.diagnostics = kept
     result.sources = run.sources
