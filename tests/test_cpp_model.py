@@ -127,3 +127,20 @@ def test_directory_discovery_takes_cpp(tmp_path):
     (tmp_path / "notes.txt").write_text("x\n")
     found = discover([tmp_path], [], str(tmp_path)).files
     assert found == [os.path.join(str(tmp_path), "App.cpp")]
+
+
+@pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"])
+def test_positions_hold_for_every_line_ending(tmp_path, newline):
+    app = tmp_path / "pFoo"
+    app.mkdir()
+    lines = [
+        '#include "MOOS/libMOOS/App/MOOSApp.h"',
+        "// two",
+        "bool Foo::Iterate() {",
+        '  Notify("nav_yaw", 3);',
+        "  return true;",
+        "}",
+    ]
+    (app / "Foo.cpp").write_bytes(newline.join(lines).encode() + newline.encode())
+    result = lint_files([str(app / "Foo.cpp")], Settings(select=["N003"]))
+    assert [(d.span.line, d.span.col) for d in result.diagnostics] == [(4, 10)]
