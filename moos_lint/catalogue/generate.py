@@ -38,6 +38,8 @@ _POST = re.compile(
 _LINK = re.compile(r"TARGET_LINK_LIBRARIES\s*\(([^)]*)\)", re.IGNORECASE | re.DOTALL)
 _NAME = re.compile(r"^[A-Za-z0-9_]+$")
 
+_APPCAST = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Thirdparty/AppCasting/AppCastingMOOSApp.cpp"
+
 #: Parameters read by base classes (``CMOOSApp``, ``AppCastingMOOSApp``): every app accepts them.
 BASE_PARAMS = {
     "CMOOSApp": {
@@ -92,6 +94,13 @@ BASE_PARAMS = {
             "MOOS_Jul2724/MOOSCore/Core/libMOOS/Thirdparty/AppCasting/"
             "AppCastingMOOSApp.cpp:233-275,384-420,455-458 (by hand)"
         ),
+        # preOnStartUp compares the lower-cased value with a fixed set and warns
+        # "Invalid ..." for any other, keeping the default
+        "param_forms": {
+            "comms_policy": {"form": "enum:open|lean|dire", "at": _APPCAST + ":251-253"},
+            "app_logging": {"form": "enum:true|log|file|off", "at": _APPCAST + ":259-265"},
+            "deprecated_ok": {"form": "enum:true|false", "at": _APPCAST + ":268-274"},
+        },
     },
 }
 
@@ -145,6 +154,34 @@ CORRECTIONS: dict[str, dict] = {
         "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
         "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "
         "the behavior file's set blocks",
+    },
+}
+
+#: Hand corrections for behaviors: class -> value forms its ``setParam`` enforces, and why.
+#: ``enum:a|b`` values are compared lower-cased, as these ``setParam`` do.
+BEHAVIOR_CORRECTIONS: dict[str, dict] = {
+    "BHV_Waypoint": {
+        "param_forms": {
+            "capture_line": {
+                "form": "enum:true|false|absolute",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Waypoint.cpp:437-440",
+            },
+            "efficiency_measure": {
+                "form": "enum:all|off",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Waypoint.cpp:405-411",
+            },
+        },
+        "why": "capture_line and efficiency_measure return false for a value outside a fixed "
+        "set, compared after tolower",
+    },
+    "BHV_Loiter": {
+        "param_forms": {
+            "clockwise": {
+                "form": "enum:best|true|false|on|off|yes|no|toggle",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Loiter.cpp:148-155",
+            },
+        },
+        "why": "clockwise takes `best` or a setBooleanOnString value, else returns false",
     },
 }
 
@@ -395,6 +432,10 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
             "params_from_members": delegated,
             "param_forms": dict(sorted(forms.items())),
         }
+        corr = BEHAVIOR_CORRECTIONS.get(cls)
+        if corr:
+            entry["param_forms"] = dict(sorted({**forms, **corr["param_forms"]}.items()))
+            entry["corrected"] = [corr["why"]]
         behaviors[cls] = entry
     return {
         "source": {

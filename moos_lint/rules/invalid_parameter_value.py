@@ -12,6 +12,12 @@ as recorded in the catalogue with the source line that enforces it:
   units: `speed = 2m/s` is rejected); `setNonNegDoubleOnString` and
   `setUIntOnString` also reject negative values, `setPosDoubleOnString`
   rejects zero, `setPosUIntOnString` values below 1;
+- a parameter the parser compares with a fixed set of words (any case),
+  rejecting any other: `comms_policy` (every AppCasting app: `open`, `lean`,
+  `dire`), `app_logging` (`true`, `log`, `file`, `off`), `deprecated_ok`
+  (`true`, `false`); the Waypoint behavior's `capture_line` (`true`,
+  `false`, `absolute`) and `efficiency_measure` (`all`, `off`); the Loiter
+  behavior's `clockwise` (`best` or a boolean);
 - a route such as uFldNodeBroker's and uFldShoreBroker's
   `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
   rejected and nothing is bridged;
@@ -45,8 +51,8 @@ None.
 MOOS-IvP caveats, deliberately not reported:
 - values holding an nsplug macro;
 - parameters whose parser the catalogue does not tie to one of these
-  setters (enums, polygons and point lists are parsed in many different
-  ways and are not judged);
+  setters or fixed word sets (other enums, polygons and point lists are
+  parsed in many different ways and are not judged);
 - apps the catalogue does not know.
 """
 
@@ -105,6 +111,12 @@ def problem(form: str, value: str) -> str | None:
         missing = [f for f in form[len("fields:") :].split("+") if not pairs.get(f)]
         if missing:
             return "has no " + " or ".join(f"`{f}=` field" for f in missing)
+        return None
+    if form.startswith("enum:"):
+        # compared lower-cased with a fixed set, as the parser does
+        allowed = form[len("enum:") :].split("|")
+        if value.lower() not in allowed:
+            return "is not one of " + ", ".join(f"`{a}`" for a in allowed)
         return None
     if form == "bool":
         if value.lower() not in BOOLS:
