@@ -303,7 +303,7 @@ def _check(args: argparse.Namespace, settings) -> int:
         result = outcome.result
     fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
-    failed = _emit(args, text)
+    failed = _emit(args.output_file, text)
     if failed is not None:
         return failed
     if result.internal_errors:
@@ -317,15 +317,15 @@ def _check(args: argparse.Namespace, settings) -> int:
     return EXIT_CLEAN
 
 
-def _emit(args: argparse.Namespace, text: str) -> int | None:
-    """Write a report to ``--output-file`` or stdout; an exit status when that fails."""
-    if not args.output_file:
+def _emit(path: Path | None, text: str) -> int | None:
+    """Write a report to ``path`` (stdout when None); an exit status when that fails."""
+    if path is None:
         sys.stdout.write(text)
         return None
     try:
-        args.output_file.write_text(text, encoding="utf-8")
+        path.write_text(text, encoding="utf-8")
     except OSError as exc:
-        return _usage_error(f"cannot write {args.output_file}: {exc.strerror or exc}")
+        return _usage_error(f"cannot write {path}: {exc.strerror or exc}")
     return None
 
 
@@ -361,7 +361,7 @@ def _show_diff(args: argparse.Namespace, outcome) -> int:
     from moos_lint.output import display_path
 
     text = "".join(unified_diff(doc, display_path(doc.path)) for doc in outcome.changed)
-    failed = _emit(args, text)
+    failed = _emit(args.output_file, text)
     if failed is not None:
         return failed
     if not args.quiet:
@@ -425,15 +425,7 @@ def cmd_graph(args: argparse.Namespace) -> int:
         g = build_graph(str(args.mission), settings, all_variables=args.all_variables)
     except (ConfigError, GraphError) as exc:
         return _usage_error(str(exc))
-    text = render(g, args.format)
-    if args.output is None:
-        sys.stdout.write(text)
-        return EXIT_CLEAN
-    try:
-        args.output.write_text(text, encoding="utf-8")
-    except OSError as exc:
-        return _usage_error(f"{args.output}: {exc}")
-    return EXIT_CLEAN
+    return _emit(args.output, render(g, args.format)) or EXIT_CLEAN
 
 
 def cmd_rule(args: argparse.Namespace) -> int:
