@@ -136,7 +136,7 @@ def _unit_rules(indices: list[int]) -> tuple[list[tuple[int, list[Any], int]], s
 
 def _unit_weight(unit: Any) -> int:
     if unit.cpp is not None:
-        return sum(len(f.strings) + len(f.publications) for f in unit.cpp.files) * 40
+        return sum(len(f.publications) + len(f.subscriptions) for f in unit.cpp.files) * 400
     n = len(unit.expansion.lines)
     if unit.moos is not None and unit.moos.is_mission:
         n *= 8  # a mission builds its model: the costliest unit by far

@@ -7,6 +7,7 @@ what each member or constant is assigned), then the facts themselves.
 
 from __future__ import annotations
 
+import bisect
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -37,6 +38,8 @@ SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: every call :meth:`Extractor._call` looks at (the query captures no other)
+CALLED = PUBLISH | SUBSCRIBE | {"Run"} | CONFIG_CALLS | BAUD_CALLS | SOCKET_CALLS | STRCMP
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
     "radAngleWrap",
@@ -209,6 +212,13 @@ class ParsedFile:
         self.namespaces: list[Any] = []
         self.classes: list[tuple[Any, Any]] = []
         self.functions: list[Any] = []
+        # the enclosing function of a node, by byte range (no walk up the tree)
+        fns = sorted(
+            (caps["fn"][0] for _idx, caps in matches if "fn" in caps), key=lambda n: n.start_byte
+        )
+        self._fn_starts = [f.start_byte for f in fns]
+        self._fns = fns
+        self._fn_names: dict[int, str] = {}
         for _idx, caps in matches:
             if "call" in caps:
                 self.calls.append((caps["call"][0], caps["call.fn"][0], caps["call.args"][0]))
@@ -219,7 +229,7 @@ class ParsedFile:
                 op = "="
                 if node.type == "assignment_expression":
                     op = text(node.child_by_field_name("operator")) or "="
-                fn = enclosing(node, ("function_definition",))
+                fn = self.function_of(node)
                 name = target_name(caps["asg.l"][0])
                 if name:
                     self.asgs.append(_Asg(name, op, caps["asg.r"][0], node, fn))
@@ -244,6 +254,27 @@ class ParsedFile:
         for a in self.asgs:
             key = a.fn.id if a.fn is not None else 0
             self.local.setdefault(key, {}).setdefault(a.target, []).append(a)
+
+    def function_of(self, n: Any) -> Any:
+        """The innermost function definition holding ``n`` (an ancestor: it holds its bytes)."""
+        start, end = n.start_byte, n.end_byte
+        i = bisect.bisect_right(self._fn_starts, start) - 1
+        while i >= 0:
+            f = self._fns[i]
+            if f.end_byte >= end and f.id != n.id:
+                return f
+            i -= 1
+        return None
+
+    def function_name_of(self, n: Any) -> str:
+        """``App::OnNewMail`` for the function holding ``n``, or ``""``."""
+        fn = self.function_of(n)
+        if fn is None:
+            return ""
+        name = self._fn_names.get(fn.id)
+        if name is None:
+            name = self._fn_names[fn.id] = function_name(fn)
+        return name
 
 
 def collect_tables(files: list[ParsedFile]) -> FolderTables:
@@ -327,7 +358,7 @@ class Extractor:
 
     def _local_before(self, n: Any, key: str) -> _Asg | None:
         """The last assignment to ``key`` before ``n`` in n's function (locals only)."""
-        fn = enclosing(n, ("function_definition",))
+        fn = self.pf.function_of(n)
         if fn is None:
             return None
         cands = self.pf.local.get(fn.id, {}).get(key, [])
@@ -481,12 +512,9 @@ class Extractor:
                         function_name(a.fn),
                     )
                 )
-        for s in pf.strings:
+        for s in pf.strings:  # the literals that mention /dev/
             v = string_value(s)
-            if v is None:
-                continue
-            out.strings.add(v)
-            if DEVICE_STRING.match(v):
+            if v is not None and DEVICE_STRING.match(v):
                 out.io.append(IOUse("device", v, pf.spans.of(s)))
         for inc in pf.includes:
             path = text(inc).strip('<>"')
@@ -511,8 +539,7 @@ class Extractor:
         return out
 
     def _fn_of(self, n: Any) -> str:
-        fn = enclosing(n, ("function_definition",))
-        return function_name(fn) if fn is not None else ""
+        return self.pf.function_name_of(n)
 
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)

@@ -131,7 +131,6 @@ class CppFile:
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)
     mail_generic: bool = False
     parse_errors: bool = False
-    strings: set[str] = field(default_factory=set)  # every string literal
 
 
 @dataclass(slots=True)

@@ -9,17 +9,20 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Any
 
-QUERY = r"""
+from moos_lint.cpp.extract import CALLED
+
+QUERY_TEMPLATE = r"""
 (class_specifier name: (_) @cls.name (base_class_clause) @cls.bases) @cls
 (struct_specifier name: (_) @cls.name (base_class_clause) @cls.bases) @cls
-(call_expression function: (_) @call.fn arguments: (argument_list) @call.args) @call
+(call_expression function: (_) @call.fn arguments: (argument_list) @call.args
+  (#match? @call.fn "CALLEES")) @call
 (binary_expression left: (_) @cmp.l operator: ["==" "!="] right: (string_literal) @cmp.r) @cmp
 (init_declarator declarator: (_) @asg.l value: (_) @asg.r) @asg
 (assignment_expression left: (_) @asg.l right: (_) @asg.r) @asg
 (field_declaration declarator: (_) @asg.l default_value: (_) @asg.r) @asg
 (field_initializer (field_identifier) @fi.name (argument_list) @fi.args) @fi
 (preproc_def name: (identifier) @def.name value: (preproc_arg) @def.val)
-(string_literal) @str
+((string_literal) @str (#match? @str "/dev/"))
 (preproc_include path: (_) @inc)
 ((type_identifier) @type
   (#match? @type "Serial|[Ss]ocket|CAN|[Uu]sb|USB|termios|TCP|UDP|Udp|Tcp"))
@@ -27,6 +30,9 @@ QUERY = r"""
 (function_definition declarator: (_) @fn.decl) @fn
 """
 
+#: Only calls whose function's text holds a name the extractor looks at are captured (the
+#: name it takes, ``callee()``, is always part of that text): most calls never leave C.
+QUERY = QUERY_TEMPLATE.replace("CALLEES", "|".join(sorted(CALLED)))
 
 #: Patterns are matched only on nodes at most this deep in the syntax tree.
 MAX_QUERY_DEPTH = 400
