@@ -157,7 +157,10 @@ CORRECTIONS: dict[str, dict] = {
     },
 }
 
+_MARINE = "ivp/src/lib_behaviors-marine/"
+
 #: Hand corrections for behaviors: class -> value forms its ``setParam`` enforces, and why.
+#: ``convex_polygon``, ``waypoints`` and ``point`` are judged by :mod:`moos_lint.geometry_forms`.
 #: ``enum:a|b`` values are compared lower-cased, as these ``setParam`` do.
 BEHAVIOR_CORRECTIONS: dict[str, dict] = {
     "BHV_Waypoint": {
@@ -180,10 +183,88 @@ BEHAVIOR_CORRECTIONS: dict[str, dict] = {
                 "form": "enum:best|true|false|on|off|yes|no|toggle",
                 "at": "ivp/src/lib_behaviors-marine/BHV_Loiter.cpp:148-155",
             },
+            "polygon": {"form": "convex_polygon", "at": _MARINE + "BHV_Loiter.cpp:98-103"},
         },
-        "why": "clockwise takes `best` or a setBooleanOnString value, else returns false",
+        "why": "clockwise takes `best` or a setBooleanOnString value, else returns false; "
+        "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_OpRegion": {
+        "param_forms": {
+            "polygon": {"form": "convex_polygon", "at": _MARINE + "BHV_OpRegion.cpp:124-127"},
+        },
+        "why": "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_OpRegionRecover": {
+        "param_forms": {
+            "polygon": {
+                "form": "convex_polygon",
+                "at": _MARINE + "BHV_OpRegionRecover.cpp:108-111",
+            },
+        },
+        "why": "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_AvoidObstacle": {
+        "param_forms": {
+            key: {
+                "form": "convex_polygon",
+                "at": "ivp/src/lib_dep_behaviors/BHV_AvoidObstacle.cpp:100-103",
+            }
+            for key in ("polygon", "points", "poly")
+        },
+        "why": "polygon, points and poly return false unless string2Poly gives a convex polygon",
+    },
+    "BHV_AbortToPoint": {
+        "param_forms": {
+            "point": {"form": "point", "at": _MARINE + "BHV_AbortToPoint.cpp:84-87"},
+        },
+        "why": "point returns false unless string2Point gives a valid point",
+    },
+    "BHV_StationKeep": {
+        "param_forms": {
+            key: {"form": "point", "at": _MARINE + "BHV_StationKeep.cpp:112-115"}
+            for key in ("station_pt", "point")
+        },
+        "why": "station_pt and point return false unless string2Point gives a valid point",
+    },
+    "BHV_BearingLine": {
+        "param_forms": {
+            "bearing_point": {"form": "point", "at": _MARINE + "BHV_BearingLine.cpp:59-77"},
+        },
+        "why": "bearing_point returns false unless string2Point gives a valid point",
+    },
+    "BHV_LegRun": {
+        "param_forms": {
+            key: {
+                "form": "point",
+                "at": "ivp/src/lib_bhvutil/LegRun.cpp:117-124,203-207,217-221",
+            }
+            for key in ("p1", "p2", "vx1", "vx2")
+        },
+        "why": "p1, p2 (and the deprecated vx1, vx2) go to LegRun::setParam "
+        "(BHV_LegRun.cpp:169), which returns false unless string2Point gives a valid point",
+    },
+    "BHV_HeadingBias": {
+        "param_forms": {
+            "bias": {"form": "enum:right|left", "at": _MARINE + "BHV_HeadingBias.cpp:51-63"},
+        },
+        "why": "bias returns false unless the lower-cased value is right or left",
     },
 }
+BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["param_forms"].update(
+    {
+        # `empty`/`start`, else string2SegList, else string2Poly; false when both are empty
+        **{
+            key: {"form": "waypoints", "at": _MARINE + "BHV_Waypoint.cpp:196-208"}
+            for key in ("polygon", "points", "xpoints")
+        },
+        "point": {"form": "point|start|empty", "at": _MARINE + "BHV_Waypoint.cpp:239-250"},
+        "newpt": {"form": "point", "at": _MARINE + "BHV_Waypoint.cpp:259-262"},
+    }
+)
+BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["why"] += (
+    "; polygon, points and xpoints return false when neither string2SegList nor string2Poly "
+    "reads a vertex, point and newpt when string2Point gives no valid point"
+)
 
 
 _NAV = [
@@ -207,6 +288,53 @@ for _sim in ("uSimMarine", "uSimMarineV22", "uSimMarineV23"):
         "why": 'NAV_* are posted as prefix + "_X" with the prefix NAV by default '
         "(uSimMarineV22/USM_MOOSApp.cpp:600-648)",
     }
+
+
+_USM_ENUMS = {
+    # key -> (form, USM_MOOSApp.cpp line V22, V23, USM_Model.cpp lines V22, V23)
+    "thrust_mode_diff": ("enum:differential|true|normal|false", 377, 354, "200-211", "199-210"),
+    "thrust_mode_reverse": ("enum:reverse|true|normal|false", 379, 356, "217-228", "216-227"),
+    "thrust_reflect": ("enum:true|false", 375, 352, "600-610", "601-611"),
+}
+for _sim, _col in (("uSimMarineV22", 1), ("uSimMarineV23", 2)):
+    CORRECTIONS[_sim]["param_forms"] = {
+        key: {
+            "form": f[0],
+            "at": f"ivp/src/{_sim}/USM_MOOSApp.cpp:{f[_col]}; USM_Model.cpp:{f[_col + 2]}",
+        }
+        for key, f in _USM_ENUMS.items()
+    }
+    CORRECTIONS[_sim]["why"] += (
+        "; thrust_mode_diff, thrust_mode_reverse and thrust_reflect go to USM_Model setters "
+        "that return false, keeping the default, for a value outside a fixed set"
+    )
+
+_BRS = "ivp/src/uFldBeaconRangeSensor/BRS_App.cpp:"
+CORRECTIONS["uFldBeaconRangeSensor"] = {
+    "param_forms": {
+        "report_vars": {"form": "enum:both|short|long", "at": _BRS + "156-157,662-671"},
+        "ping_payments": {
+            "form": "enum:upon_response|upon_request|upon_accept",
+            "at": _BRS + "154-155,646-657",
+        },
+        "ground_truth": {"form": "bool", "at": _BRS + "164-165"},
+        "verbose": {"form": "bool", "at": _BRS + "166-167"},
+    },
+    "why": "OnStartUp records `handled[param] = setter(value)` and reports unhandled lines; "
+    "report_vars and ping_payments take a fixed set (lower-cased), ground_truth and verbose "
+    "setBooleanOnString",
+}
+
+CORRECTIONS["pObstacleMgr"] = {
+    "param_forms": {
+        key: {
+            "form": "convex_polygon",
+            "at": "ivp/src/pObstacleMgr/ObstacleManager.cpp:202-203,489-491",
+        }
+        for key in ("given_obstacle", "given_obstable")
+    },
+    "why": "given_obstacle is rejected (unhandled) unless string2Poly gives a convex polygon",
+}
 
 
 #: apps the extractor does not see as apps (no CMOOSApp class), described by hand

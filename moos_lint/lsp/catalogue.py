@@ -78,6 +78,10 @@ FORM_TEXT = {
     "int": "a whole number",
     "moos_double": "a number starting with a digit or `-` (`0.5`, not `.5`)",
     "fields:src": "`key=value` fields, `src=` required",
+    "convex_polygon": "a convex polygon of 3 or more vertices (`x,y : x,y : x,y`)",
+    "waypoints": "a point list (`x,y : x,y`), a polygon, `empty` or `start`",
+    "point": "a point: `x,y`, `x:y` or `x=..,y=..`",
+    "point|start|empty": "a point (`x,y`), `start` or `empty`",
 }
 
 

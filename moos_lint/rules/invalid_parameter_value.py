@@ -18,6 +18,22 @@ as recorded in the catalogue with the source line that enforces it:
   (`true`, `false`); the Waypoint behavior's `capture_line` (`true`,
   `false`, `absolute`) and `efficiency_measure` (`all`, `off`); the Loiter
   behavior's `clockwise` (`best` or a boolean);
+- more fixed sets: the HeadingBias behavior's `bias` (`right`, `left`);
+  uSimMarineV22/V23's `thrust_mode_diff` (`differential`, `normal`, `true`,
+  `false`), `thrust_mode_reverse` (`reverse`, `normal`, `true`, `false`) and
+  `thrust_reflect` (`true`, `false`); uFldBeaconRangeSensor's `report_vars`
+  (`both`, `short`, `long`) and `ping_payments` (`upon_response`,
+  `upon_request`, `upon_accept`);
+- a polygon, point list or point, judged by a port of MOOS-IvP's own
+  `string2Poly`, `string2SegList` and `string2Point`, where the parser
+  rejects what they cannot read: the `polygon` of the Loiter, OpRegion and
+  OpRegionRecover behaviors and pObstacleMgr's `given_obstacle` must be a
+  convex polygon of at least 3 vertices (`60,-40 : 60` has no y, two
+  vertices are not a polygon); the Waypoint behavior's `points` and
+  `polygon` must hold at least one vertex (or be `empty` / `start`); points
+  (`point` of the Waypoint, StationKeep and AbortToPoint behaviors,
+  `station_pt`, `bearing_point`, the LegRun behavior's `p1` / `p2`) must read
+  as `x,y`, `x:y` or `x=..,y=..`;
 - a route such as uFldNodeBroker's and uFldShoreBroker's
   `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
   rejected and nothing is bridged;
@@ -42,8 +58,16 @@ ProcessConfig = pMarinePIDV22
 }
 ```
 
+```
+Behavior = BHV_Loiter
+{
+  polygon = 60,-40 : 60,-160 : 150    // the last vertex has no y
+}
+```
+
 ## How to fix
-Write the value in the form the parser reads: `0.5`, `true`.
+Write the value in the form the parser reads: `0.5`, `true`,
+`60,-40 : 60,-160 : 150,-160`.
 
 ## Options
 None.
@@ -51,14 +75,20 @@ None.
 MOOS-IvP caveats, deliberately not reported:
 - values holding an nsplug macro;
 - parameters whose parser the catalogue does not tie to one of these
-  setters or fixed word sets (other enums, polygons and point lists are
-  parsed in many different ways and are not judged);
+  setters, fixed word sets or geometry parsers (other enums, and polygons
+  read by other code, such as contact filters' regions, are not judged);
+- polygon and point-list forms the port does not follow exactly:
+  `format=radial`, `radial::`, `ellipse:`, `wedge:`, `pylon:`, `oval:`,
+  `zigzag:`, `lawnmower`, edge `tags=`; a polygon of more than 400
+  vertices; a polygon whose convexity rests on floating-point rounding (a
+  vertex all but on an edge's line);
 - apps the catalogue does not know.
 """
 
 import re
 
 from moos_lint.diagnostics import Severity
+from moos_lint.geometry_forms import INVALID, is_geometry_form, judge
 from moos_lint.model import has_macro
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._catalogue_bhv import lookup
@@ -99,8 +129,23 @@ def _atof(s: str) -> float:
         return 0.0
 
 
+#: what a value of each geometry form must be, for the message
+_GEOMETRY_WHAT = {
+    "convex_polygon": "is not a convex polygon",
+    "waypoints": "is not a point list or polygon",
+    "point": "is not a point",
+}
+
+
 def problem(form: str, value: str) -> str | None:
     """Why ``value`` does not have the ``form``, or None."""
+    if is_geometry_form(form):
+        # the app's own parser, ported; only a sure rejection is reported
+        verdict = judge(form, value)
+        if verdict.status != INVALID:
+            return None
+        what = _GEOMETRY_WHAT.get(form.split("|", 1)[0], "is not read")
+        return f"{what} ({verdict.reason})" if verdict.reason else what
     if form.startswith("fields:"):
         # `key=value` pairs separated by commas; the listed fields must be there
         pairs = {}
