@@ -15,6 +15,16 @@ re-lint) of ``N`` runs (default 5, at least 5):
 
 The cache of the warm runs lives in a temporary folder (``--cache-dir``): the
 benchmark writes nothing into the tree.
+
+**The installation measured.** The command-line figures run ``moos-lint`` as
+``pip install`` leaves it in a fresh virtual environment: the console script
+of the package, compiled bytecode (kept in a temporary folder), and no import
+hooks from ``.pth`` files. The environment is made in a temporary folder
+(``python3 -m venv --without-pip``) and reaches moos-lint and its dependencies
+where this interpreter has them; start-up hooks that a development machine may
+carry in its own site-packages (an editable-install finder, certificate
+injectors, ...) run before any program and are not moos-lint's. The
+interpreter's own start in that environment is shown beside ``--version``.
 """
 
 from __future__ import annotations
@@ -33,8 +43,61 @@ from pathlib import Path
 MIN_RUNS = 5
 
 
+#: the console script and the interpreter of the measured installation (see above)
+_SCRIPT: list[str] = [sys.executable, "-m", "moos_lint"]
+_PYTHON: str = sys.executable
+_ENV: dict[str, str] | None = None
+
+
 def _cli(*args: str) -> list[str]:
-    return [sys.executable, "-m", "moos_lint", *args]
+    return [*_SCRIPT, *args]
+
+
+def clean_install(folder: str) -> tuple[str, str, dict[str, str]]:
+    """A fresh virtual environment in ``folder`` that runs this moos-lint.
+
+    Returns the ``moos-lint`` console script, the environment's interpreter and
+    the process environment to run them with (bytecode written to a temporary
+    cache, as an installed package has it compiled).
+    """
+    import moos_lint
+
+    venv = os.path.join(folder, "venv")
+    subprocess.run(
+        [sys.executable, "-m", "venv", "--without-pip", venv], check=True, capture_output=True
+    )
+    bindir = os.path.join(venv, "Scripts" if os.name == "nt" else "bin")
+    python = os.path.join(bindir, "python.exe" if os.name == "nt" else "python")
+    site = subprocess.run(
+        [python, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
+        capture_output=True,
+        text=True,
+        check=True,
+    ).stdout.strip()
+    here = sysconfig.get_paths()
+    package_root = os.path.dirname(os.path.dirname(os.path.abspath(moos_lint.__file__)))
+    roots = list(dict.fromkeys([package_root, here["purelib"], here["platlib"]]))
+    with open(os.path.join(site, "moos_lint_benchmark.pth"), "w", encoding="utf-8") as fh:
+        fh.write("".join(f"{r}\n" for r in roots))  # paths only: no import lines run
+    script = os.path.join(bindir, "moos-lint")
+    with open(script, "w", encoding="utf-8") as fh:  # what pip writes for [project.scripts]
+        fh.write(
+            f"#!{python}\nimport sys\nfrom moos_lint.cli import main\n"
+            'if __name__ == "__main__":\n    sys.exit(main())\n'
+        )
+    os.chmod(script, 0o755)
+    env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    env["PYTHONPYCACHEPREFIX"] = os.path.join(folder, "bytecode")
+    subprocess.run([script, "--version"], env=env, capture_output=True, check=True)
+    # compile every module once, as pip does at install time
+    subprocess.run(
+        [python, "-m", "compileall", "-q", os.path.dirname(os.path.abspath(moos_lint.__file__))],
+        env=env,
+        capture_output=True,
+        check=False,
+    )
+    return script, python, env
 
 
 def _timed(cmd: list[str], env: dict[str, str] | None = None) -> float:
@@ -44,7 +107,7 @@ def _timed(cmd: list[str], env: dict[str, str] | None = None) -> float:
 
 
 def _median(cmd: list[str], runs: int, env: dict[str, str] | None = None) -> float:
-    return statistics.median(_timed(cmd, env) for _ in range(runs))
+    return statistics.median(_timed(cmd, env or _ENV) for _ in range(runs))
 
 
 def _p95(values: list[float]) -> float:
@@ -60,7 +123,11 @@ def _peak_rss_mb(cmd: list[str]) -> float:
         "print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)"
     )
     out = subprocess.run(
-        [sys.executable, "-c", probe, *cmd], capture_output=True, text=True, check=False
+        [sys.executable, "-c", probe, *cmd],
+        capture_output=True,
+        text=True,
+        check=False,
+        env=_ENV,
     )
     kb = int(out.stdout.strip() or 0)
     scale = 1024 * 1024 if sys.platform == "darwin" else 1024  # bytes on macOS, KB on Linux
@@ -148,7 +215,14 @@ def main(argv: list[str] | None = None) -> int:
         out.append((name, value))
         print(f"  {name:34s} {value}", flush=True)
 
+    global _SCRIPT, _PYTHON, _ENV
     with tempfile.TemporaryDirectory(prefix="moos-lint-bench-") as tmp:
+        try:
+            script, _PYTHON, _ENV = clean_install(os.path.join(tmp, "install"))
+            _SCRIPT = [script]
+            print("installation: a fresh virtual environment (see --help)")
+        except (OSError, subprocess.CalledProcessError) as exc:
+            print(f"installation: this interpreter (no virtual environment: {exc})")
         report = os.path.join(tmp, "report.json")
         cache = os.path.join(tmp, "cache")
         check = ["check", tree, "--output-format", "json", "-o", report, "--exit-zero"]
@@ -161,7 +235,10 @@ def main(argv: list[str] | None = None) -> int:
             f"{_median(_cli(*check, '--cache-dir', cache), runs):.3f} s",
         )
         show("moos-lint --version", f"{_median(_cli('--version'), runs) * 1000:.0f} ms")
-        show("python3 -c pass", f"{_median([sys.executable, '-c', 'pass'], runs) * 1000:.0f} ms")
+        show(
+            "python -c pass (same environment)",
+            f"{_median([_PYTHON, '-c', 'pass'], runs) * 1000:.0f} ms",
+        )
         rss = max(_peak_rss_mb(_cli(*check, "--no-cache")) for _ in range(2))
         show("peak memory (whole tree)", f"{rss:.0f} MB")
 

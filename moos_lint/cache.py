@@ -196,7 +196,7 @@ def store(
     folder: str, key: str, result: Any, settings: Any, read: set[str], probed: set[str]
 ) -> None:
     """Write the entry for ``key`` atomically; a folder that cannot be written is skipped."""
-    from moos_lint.engine import Result
+    from moos_lint.result import Result
 
     keep = {d.span.path for d in result.diagnostics}
     for d in result.diagnostics:
@@ -252,8 +252,6 @@ def cached_lint(
 ) -> Any:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
     from moos_lint.discovery import discover
-    from moos_lint.engine import lint_paths
-    from moos_lint.nsplug import FileCache
 
     found = discover(paths, settings.exclude, settings.root)
     key = run_key(settings, paths, found.files, context)
@@ -261,6 +259,9 @@ def cached_lint(
     if hit is not None:
         hit.missing = list(found.missing)
         return hit
+    from moos_lint.engine import lint_paths  # the parsers and rules: only on a miss
+    from moos_lint.nsplug import FileCache
+
     reader = FileCache()
     result = lint_paths(paths, settings, context=context, cache=reader, jobs=jobs)
     if not result.internal_errors:  # a crash is never replayed from the cache

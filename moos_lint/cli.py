@@ -7,14 +7,16 @@ Heavy modules are imported inside the commands that need them, so that
 
 from __future__ import annotations
 
-import argparse
-import json
 import os
 import sys
-from pathlib import Path
+from typing import TYPE_CHECKING
 
 from moos_lint import __version__
 from moos_lint.output import FORMATS
+
+if TYPE_CHECKING:
+    import argparse
+    from pathlib import Path
 
 EXIT_CLEAN, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -42,6 +44,8 @@ def _jobs(text: str) -> int:
     except ValueError:
         n = 0
     if n < 1:
+        import argparse
+
         raise argparse.ArgumentTypeError(f"must be a whole number of at least 1, not {text!r}")
     return n
 
@@ -69,6 +73,9 @@ def _add_preproc_args(p: argparse.ArgumentParser) -> None:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    import argparse
+    from pathlib import Path
+
     parser = argparse.ArgumentParser(
         prog="moos-lint",
         description="Lint MOOS and MOOS-IvP mission (.moos) and behavior (.bhv) files "
@@ -175,6 +182,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
+    if argv == ["--version"]:  # the one answer that needs no parser
+        print(f"moos-lint {__version__}")
+        return EXIT_CLEAN
     commands = {"check", "expand", "rule", "rules", "server", "graph"}
     if not argv or (argv[0] not in commands and argv[0] not in ("-h", "--help", "--version")):
         argv.insert(0, "check")
@@ -231,6 +241,8 @@ def cmd_check(args: argparse.Namespace) -> int:
     except ConfigError as exc:
         return _usage_error(str(exc))
     if args.show_settings:
+        import json
+
         print(json.dumps(settings.as_dict(), indent=2))
         return EXIT_CLEAN
     from moos_lint.baseline import BaselineError
@@ -242,10 +254,11 @@ def cmd_check(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace, settings) -> int:
+    from pathlib import Path
+
     from moos_lint import baseline as bl
     from moos_lint.context import project_root
     from moos_lint.diagnostics import Diagnostic, Severity, Span
-    from moos_lint.engine import lint_paths
     from moos_lint.output import render
 
     # A baseline outside any project (no config, no VCS) is relative to its own folder.
@@ -263,14 +276,22 @@ def _check(args: argparse.Namespace, settings) -> int:
         cache_dir = os.path.abspath(args.cache_dir) if args.cache_dir else cache_dir_for(settings)
 
     def lint(cache=None, *, filtered: bool = True):
-        result = lint_paths(
-            args.paths,
-            settings,
-            context=args.context,
-            cache=cache,
-            jobs=args.jobs,
-            cache_dir=cache_dir,
-        )
+        if cache_dir is not None and cache is None:
+            from moos_lint.cache import cached_lint  # the engine loads only on a cache miss
+
+            result = cached_lint(
+                list(args.paths) or [Path(".")],
+                settings,
+                context=args.context,
+                jobs=args.jobs,
+                cache_dir=cache_dir,
+            )
+        else:
+            from moos_lint.engine import lint_paths
+
+            result = lint_paths(
+                args.paths, settings, context=args.context, cache=cache, jobs=args.jobs
+            )
         for missing in result.missing:
             result.diagnostics.insert(
                 0,
@@ -456,6 +477,8 @@ def cmd_rules(args: argparse.Namespace) -> int:
             }
             for r in rules
         ]
+        import json
+
         print(json.dumps(data, indent=2))
         return EXIT_CLEAN
     for r in rules:

@@ -29,11 +29,11 @@ import os
 import re
 from collections.abc import Iterable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from moos_lint.config import Settings
-from moos_lint.discovery import discover, kind_of
-from moos_lint.nsplug import FileCache, Preprocessor
-from moos_lint.parsers.moos import parse_moos
+if TYPE_CHECKING:  # the parsers are imported by the functions that read missions
+    from moos_lint.config import Settings
+    from moos_lint.nsplug import FileCache
 
 VCS_MARKERS = (".git", ".hg", ".svn")
 _MACRO = re.compile(r"[$%]\([^)]*\)")
@@ -88,6 +88,10 @@ def related_missions(
     Files that are missions themselves are not looked up again; only
     fragments (files without an ANTLER block after expansion) are.
     """
+    from moos_lint.discovery import discover, kind_of
+    from moos_lint.nsplug import FileCache, Preprocessor
+    from moos_lint.parsers.moos import parse_moos
+
     cache = cache or FileCache()
     pre = Preprocessor(
         defines=settings.defines, include_paths=settings.include_paths, mode="lint", cache=cache

@@ -80,10 +80,11 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
                 dirnames[:] = []
                 continue
             seen_dirs.add(key)
-            rel_dir = os.path.relpath(dirpath, root)
+            rel_dir = os.path.relpath(dirpath, root)  # normalised: a name joins it as is
+            prefix = "" if rel_dir == "." else rel_dir + os.sep
             keep = []
             for d in sorted(dirnames):
-                rel = os.path.normpath(os.path.join(rel_dir, d))
+                rel = prefix + d
                 if _excluded(rel, d, patterns):
                     continue
                 if kind_of(d) in ("moos", "bhv"):
@@ -95,7 +96,7 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
             for f in filenames:
                 if kind_of(f) is None:
                     continue
-                rel = os.path.normpath(os.path.join(rel_dir, f))
+                rel = prefix + f
                 if _excluded(rel, f, patterns):
                     continue
                 files.add(os.path.join(dirpath, f))

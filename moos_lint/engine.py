@@ -22,6 +22,7 @@ from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
 from moos_lint.registry import Kind, Rule, Scope, select_rules
+from moos_lint.result import Result
 from moos_lint.source import ReadProblem, SourceFile
 from moos_lint.suppressions import Suppression, parse_suppressions
 
@@ -91,18 +92,6 @@ class Context:
 
     def at_line(self, line: Line, message: str, **kw: Any) -> Diagnostic:
         return self.report(line.span(), message, line=line, **kw)
-
-
-@dataclass
-class Result:
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    files: list[str] = field(default_factory=list)
-    internal_errors: int = 0
-    missing: list[str] = field(default_factory=list)
-    sources: dict[str, SourceFile] = field(default_factory=dict)
-    baselined: int = 0  # findings hidden by --baseline
-    #: the linted files' expansions and models, in the order given
-    units: list[Unit] = field(default_factory=list)
 
 
 class Run:

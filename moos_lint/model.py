@@ -39,11 +39,14 @@ class Param:
     value_start: int
     value_end: int
     block: Block | None = None
+    _lkey: str | None = field(default=None, init=False, repr=False, compare=False)
 
     @property
     def lkey(self) -> str:
         """The key as MOOS compares it: spaces removed, case folded."""
-        return "".join(self.key.split()).lower()
+        if self._lkey is None:
+            self._lkey = "".join(self.key.split()).lower()
+        return self._lkey
 
     @property
     def key_span(self) -> Span:
@@ -69,10 +72,13 @@ class Block:
     close: Line | None = None
     params: list[Param] = field(default_factory=list)
     brace_on_header: bool = False
+    _lname: str | None = field(default=None, init=False, repr=False, compare=False)
 
     @property
     def lname(self) -> str:
-        return self.name.lower()
+        if self._lname is None:
+            self._lname = self.name.lower()
+        return self._lname
 
     @property
     def name_span(self) -> Span:
@@ -140,10 +146,21 @@ class MoosFile:
     headers_without_block: list[Line] = field(default_factory=list)
     stray_closers: list[Line] = field(default_factory=list)
     malformed: list[Line] = field(default_factory=list)
+    # built on first use, again whenever blocks or Antler lines were added since
+    _by_name: tuple[int, dict[str, list[Block]]] | None = field(
+        default=None, init=False, repr=False, compare=False
+    )
+    _runs: tuple[tuple[int, ...], list[RunLine]] | None = field(
+        default=None, init=False, repr=False, compare=False
+    )
 
     def blocks_named(self, name: str) -> list[Block]:
-        n = name.lower()
-        return [b for b in self.blocks if b.lname == n]
+        if self._by_name is None or self._by_name[0] != len(self.blocks):
+            index: dict[str, list[Block]] = {}
+            for b in self.blocks:
+                index.setdefault(b.lname, []).append(b)
+            self._by_name = (len(self.blocks), index)
+        return list(self._by_name[1].get(name.lower(), ()))
 
     @property
     def antler_blocks(self) -> list[Block]:
@@ -158,7 +175,11 @@ class MoosFile:
     def runs(self) -> list[RunLine]:
         from moos_lint.parsers.moos import antler_runs
 
-        return [run for block in self.antler_blocks for run in antler_runs(block)]
+        blocks = self.antler_blocks
+        key = (len(self.blocks), *(len(b.params) for b in blocks))
+        if self._runs is None or self._runs[0] != key:
+            self._runs = (key, [run for block in blocks for run in antler_runs(block)])
+        return list(self._runs[1])
 
     def global_values(self, key: str) -> list[Param]:
         k = key.lower()

@@ -57,6 +57,7 @@ _PI = r"(?:M_PI|\bPI\b|3\.14\d*)"
 _TWO_PI = re.compile(r"(?:2(?:\.0*)?\s*\*\s*" + _PI + r"|M_2PI|TWO_PI|2PI|6\.28\d*)")
 _HALF_PI_BOUND = re.compile(r"[<>]=?\s*-?\s*" + _PI + r"(?!\s*/)")
 _ZERO_BOUND = re.compile(r"<\s*0(?:\.0*)?\b")
+_ANGLE_TARGET = re.compile(r"yaw|heading|hdg", re.I)
 _NUMBER = re.compile(r"^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[fFlL]?$")
 
 
@@ -502,7 +503,7 @@ class Extractor:
             if (
                 a.op in ("=", "+=", "-=", "*=", "/=")
                 and a.fn is not None
-                and re.search(r"yaw|heading|hdg", a.target, re.I)
+                and _ANGLE_TARGET.search(a.target)
             ):
                 out.assignments.append(
                     Assignment(

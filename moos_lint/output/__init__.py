@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import importlib
 import os
 
@@ -10,7 +11,11 @@ FORMATS = ("text", "concise", "json", "sarif", "github", "gitlab", "junit")
 
 def display_path(path: str, cwd: str | None = None) -> str:
     """``path`` relative to the working directory when it is under it."""
-    cwd = cwd or os.getcwd()
+    return _display_path(path, cwd or os.getcwd())
+
+
+@functools.lru_cache(maxsize=4096)
+def _display_path(path: str, cwd: str) -> str:
     try:
         rel = os.path.relpath(path, cwd)
     except ValueError:

@@ -44,4 +44,8 @@ def to_dict(d: Diagnostic, cwd: str) -> dict:
 
 
 def render(result, cwd: str, **_kw) -> str:
-    return json.dumps([to_dict(d, cwd) for d in result.diagnostics], indent=2) + "\n"
+    items = [to_dict(d, cwd) for d in result.diagnostics]
+    if not items:
+        return "[]\n"
+    # one finding per line: the same JSON, written by the C encoder (indent= is pure Python)
+    return "[\n" + ",\n".join("  " + json.dumps(item) for item in items) + "\n]\n"

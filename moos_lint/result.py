@@ -1,0 +1,26 @@
+"""The outcome of a lint run: what the output formats, the baseline and the cache read.
+
+Kept apart from the engine, so that a result replayed from the cache is
+shown without loading the parsers and the rules.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from moos_lint.diagnostics import Diagnostic
+    from moos_lint.source import SourceFile
+
+
+@dataclass
+class Result:
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+    files: list[str] = field(default_factory=list)
+    internal_errors: int = 0
+    missing: list[str] = field(default_factory=list)
+    sources: dict[str, SourceFile] = field(default_factory=dict)
+    baselined: int = 0  # findings hidden by --baseline
+    #: the linted files' expansions and models (engine units), in the order given
+    units: list[Any] = field(default_factory=list)
