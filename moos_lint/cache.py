@@ -50,9 +50,12 @@ import os
 import pickle
 import tempfile
 from pathlib import Path
-from typing import Any
 
 from moos_lint import __version__
+
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from typing import Any
 
 CACHE_DIR = ".moos_lint_cache"
 ENV_VAR = "MOOS_LINT_CACHE_DIR"
@@ -227,7 +230,7 @@ def _prune(folder: str) -> None:
     """Keep the :data:`KEEP` most recently written entries."""
     entries = []
     for name in os.listdir(folder):
-        if name.startswith("run-") and name.endswith(".pickle"):
+        if name.startswith(("run-", "files-")) and name.endswith(".pickle"):
             with contextlib.suppress(OSError):
                 entries.append((os.stat(os.path.join(folder, name)).st_mtime_ns, name))
     for _, name in sorted(entries, reverse=True)[KEEP:]:
@@ -247,13 +250,49 @@ def _atomic_write(folder: str, path: str, data: bytes) -> None:
         raise
 
 
+def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
+    """:func:`moos_lint.discovery.discover`, reused while no folder it looked in changed.
+
+    Adding, removing or renaming a file changes its folder's modification
+    time, so the stored list holds while every walked folder (and the folder of
+    every path given) keeps its own.
+    """
+    from moos_lint.discovery import Discovered, discover
+
+    data = json.dumps(
+        [
+            __version__,
+            FORMAT,
+            [os.path.abspath(p) for p in paths],
+            settings.exclude,
+            os.path.abspath(settings.root),
+        ]
+    )
+    key = hashlib.sha256(data.encode("utf-8", "surrogatepass")).hexdigest()[:40]
+    path = os.path.join(cache_dir, f"files-{key}.pickle")
+    try:
+        with open(path, "rb") as fh:
+            entry = pickle.load(fh)
+        if entry["key"] == key and all(_dir_mtime(d) == m for d, m in entry["folders"].items()):
+            return Discovered(list(entry["files"]), list(entry["missing"]), list(entry["folders"]))
+    except Exception:  # missing, partial or corrupt: walk the folders
+        pass
+    with contextlib.suppress(OSError):  # first: creating it changes its parent's mtime
+        os.makedirs(cache_dir, exist_ok=True)
+    found = discover(paths, settings.exclude, settings.root)
+    folders = {d: _dir_mtime(d) for d in found.folders}
+    if all(m is not None for m in folders.values()):
+        entry = {"key": key, "folders": folders, "files": found.files, "missing": found.missing}
+        with contextlib.suppress(Exception):
+            _atomic_write(cache_dir, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
+    return found
+
+
 def cached_lint(
     paths: list[Path], settings: Any, *, context: bool, jobs: int | None, cache_dir: str
 ) -> Any:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
-    from moos_lint.discovery import discover
-
-    found = discover(paths, settings.exclude, settings.root)
+    found = cached_discover(paths, settings, cache_dir)
     key = run_key(settings, paths, found.files, context)
     hit = load(cache_dir, key)
     if hit is not None:

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import TYPE_CHECKING
 
 from moos_lint import __version__
 from moos_lint.output import FORMATS
+
+TYPE_CHECKING = False  # typing itself is not imported at run time
 
 if TYPE_CHECKING:
     import argparse
@@ -213,11 +214,12 @@ def main(argv: list[str] | None = None) -> int:
 
 def _settings(args: argparse.Namespace):
     from moos_lint.config import ConfigError, resolve_settings
-    from moos_lint.registry import is_valid_selector
 
     settings = resolve_settings(list(args.paths), args.config)
     for opt in ("select", "extend_select", "ignore"):
         for sel in _csv(getattr(args, opt)):
+            from moos_lint.registry import is_valid_selector
+
             if not is_valid_selector(sel):
                 raise ConfigError(f"--{opt.replace('_', '-')}: unknown rule or code `{sel}`")
     if args.select:

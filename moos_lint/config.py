@@ -11,14 +11,20 @@ import os
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from typing import Any
 
-from moos_lint.registry import all_rules, get_rule, is_valid_selector
+
+def _toml():
+    """The TOML reader, imported when a config file is read (not on every run)."""
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover
+        import tomli as tomllib
+    return tomllib
+
 
 CONFIG_FILES = (".moos-lint.toml", "moos-lint.toml", "pyproject.toml")
 LIST_KEYS = ("select", "ignore", "extend-select", "exclude", "include-paths")
@@ -70,12 +76,16 @@ class Settings:
 
     def options_for(self, name: str) -> dict[str, Any]:
         """A rule's options: its defaults, overridden by the config."""
+        from moos_lint.registry import get_rule
+
         r = get_rule(name)
         out = dict(r.options) if r else {}
         out.update(self.rule_options.get(name, {}))
         return out
 
     def as_dict(self) -> dict[str, Any]:
+        from moos_lint.registry import all_rules
+
         return {
             "config": self.config_path,
             "root": self.root,
@@ -104,6 +114,7 @@ def find_config(start: Path) -> Path | None:
             if not candidate.is_file():
                 continue
             if name == "pyproject.toml":
+                tomllib = _toml()
                 try:
                     data = tomllib.loads(candidate.read_text(encoding="utf-8"))
                 except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
@@ -121,6 +132,8 @@ def _check_list(path: Path, key: str, value: Any) -> list[str]:
 
 
 def _check_selectors(path: Path, key: str, values: list[str]) -> None:
+    from moos_lint.registry import is_valid_selector
+
     for v in values:
         if not is_valid_selector(v):
             raise ConfigError(f"{path}: `{key}` names an unknown rule or code `{v}`")
@@ -144,6 +157,7 @@ def _check_catalogues(path: Path, key: str, value: Any, root: Path) -> list[str]
 
 
 def load_config(path: Path) -> Settings:
+    tomllib = _toml()
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError) as exc:
@@ -206,6 +220,8 @@ def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Se
     rules = data.get("rules", {})
     if not isinstance(rules, dict):
         raise ConfigError(f"{path}: `{prefix}rules` must be a table")
+    from moos_lint.registry import get_rule
+
     for name, opts in rules.items():
         r = get_rule(name)
         if r is None:

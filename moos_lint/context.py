@@ -29,7 +29,8 @@ import os
 import re
 from collections.abc import Iterable
 from pathlib import Path
-from typing import TYPE_CHECKING
+
+TYPE_CHECKING = False  # typing itself is not imported at run time
 
 if TYPE_CHECKING:  # the parsers are imported by the functions that read missions
     from moos_lint.config import Settings

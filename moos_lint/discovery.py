@@ -6,7 +6,7 @@ import fnmatch
 import functools
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from moos_lint.config import DEFAULT_EXCLUDE
@@ -33,6 +33,8 @@ def kind_of(path: str) -> str | None:
 class Discovered:
     files: list[str]  # absolute paths, sorted
     missing: list[str]  # paths given on the command line that do not exist
+    #: the folders whose listing decided ``files`` (walked, or holding a path given)
+    folders: list[str] = field(default_factory=list)
 
 
 def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
@@ -60,8 +62,10 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
     patterns = [*DEFAULT_EXCLUDE, *exclude]
     files: set[str] = set()
     missing: list[str] = []
+    folders: list[str] = []
     for given in paths:
         p = os.path.abspath(given)
+        folders.append(os.path.dirname(p))
         if not os.path.lexists(p):
             missing.append(str(given))
             continue
@@ -80,6 +84,7 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
                 dirnames[:] = []
                 continue
             seen_dirs.add(key)
+            folders.append(dirpath)
             rel_dir = os.path.relpath(dirpath, root)  # normalised: a name joins it as is
             prefix = "" if rel_dir == "." else rel_dir + os.sep
             keep = []
@@ -100,4 +105,4 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
                 if _excluded(rel, f, patterns):
                     continue
                 files.add(os.path.join(dirpath, f))
-    return Discovered(sorted(files), missing)
+    return Discovered(sorted(files), missing, folders)

@@ -7,9 +7,12 @@ shown without loading the parsers and the rules.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+
+TYPE_CHECKING = False  # typing itself is not imported at run time
 
 if TYPE_CHECKING:
+    from typing import Any
+
     from moos_lint.diagnostics import Diagnostic
     from moos_lint.source import SourceFile
 

@@ -35,6 +35,22 @@ class SourceFile:
     newline: str = "\n"
     lines: list[str] = field(default_factory=list)
 
+    # A stored result (the cache) keeps the text only: the lines are split again on first use.
+    def __getstate__(self) -> tuple:
+        lines = None if self.lines == split_lines(self.text) else self.lines
+        return (self.path, self.text, self.encoding, self.bom, self.newline, lines)
+
+    def __setstate__(self, state: tuple) -> None:
+        self.path, self.text, self.encoding, self.bom, self.newline, lines = state
+        if lines is not None:
+            self.lines = lines
+
+    def __getattr__(self, name: str):
+        if name == "lines":  # not restored yet
+            self.lines = split_lines(self.text)
+            return self.lines
+        raise AttributeError(name)
+
     def line(self, lineno: int) -> str:
         """The text of 1-based line ``lineno`` ('' when out of range)."""
         if 1 <= lineno <= len(self.lines):

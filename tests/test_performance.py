@@ -5,7 +5,9 @@
 - the result cache skips unchanged files, and notices a changed include, a new
   include, a touched-but-equal file, a corrupt entry; ``--no-cache`` writes nothing;
 - ``--jobs 2`` gives the output of ``--jobs 1``;
-- ``moos-lint --version`` imports no parser, no libclang and no language server.
+- ``moos-lint --version`` imports no parser, no libclang and no language server;
+- a warm run loads neither the parsers nor the rules, and the stored file list
+  notices a new or removed file.
 """
 
 from __future__ import annotations
@@ -206,6 +208,48 @@ def test_the_cache_notices_an_include_that_now_exists(tree, tmp_path, counted):
     assert not any(d["code"] == "P001" for d in after)
 
 
+def test_the_stored_file_list_notices_new_and_removed_files(tree, tmp_path, counted):
+    store = tmp_path / "cache"
+    _cached(tree, store)
+    assert list(store.glob("files-*.pickle")), "the discovered files were not kept"
+    (tree / "sub").mkdir()
+    (tree / "sub" / "c.moos").write_text(MISSION.replace("alpha", "charlie"))
+    found = _cached(tree, store).files
+    assert str(tree / "sub" / "c.moos") in found
+    (tree / "sub" / "deeper").mkdir()
+    (tree / "sub" / "deeper" / "d.bhv").write_text(BEHAVIORS)
+    assert str(tree / "sub" / "deeper" / "d.bhv") in _cached(tree, store).files
+    (tree / "b.moos").unlink()
+    found = _cached(tree, store).files
+    assert str(tree / "b.moos") not in found
+    assert counted == [4, 5, 6, 5]
+    # and an unchanged tree reuses the list and the result
+    assert _cached(tree, store).files == found
+    assert counted == [4, 5, 6, 5]
+
+
+def test_a_warm_run_loads_no_parser_and_no_rule(tree, tmp_path):
+    store = tmp_path / "cache"
+    code = (
+        "import sys\n"
+        "from moos_lint.cli import main\n"
+        f"args = ['check', {str(tree)!r}, '--cache-dir', {str(store)!r}, '-q', '--exit-zero']\n"
+        "main(args)\n"
+        "loaded = ('moos_lint.engine', 'moos_lint.nsplug', 'moos_lint.parsers', "
+        "'moos_lint.rules', 'moos_lint.mission_model', 'tree_sitter')\n"
+        "print([m for m in sys.modules if m.startswith(loaded)])\n"
+    )
+    run = [sys.executable, "-c", code]
+    first = subprocess.run(run, capture_output=True, text=True, timeout=120)
+    assert first.returncode == 0, first.stderr
+    assert "moos_lint.engine" in first.stdout  # a cold run lints
+    second = subprocess.run(run, capture_output=True, text=True, timeout=120)
+    assert second.returncode == 0, second.stderr
+    assert second.stdout.strip().endswith("[]"), second.stdout
+    # the findings are the same
+    assert second.stdout.splitlines()[:-1] == first.stdout.splitlines()[:-1]
+
+
 def test_a_touched_file_with_the_same_text_keeps_the_entry(tree, tmp_path, counted):
     store = tmp_path / "cache"
     first = _json(_cached(tree, store))
@@ -295,7 +339,7 @@ def test_version_imports_no_parser_and_no_server():
         "import sys\n"
         "from moos_lint.cli import main\n"
         "try:\n    main(['--version'])\nexcept SystemExit:\n    pass\n"
-        "heavy = ('tree_sitter', 'tree_sitter_cpp', 'clang', 'pygls', 'lsprotocol')\n"
+        "heavy = ('tree_sitter', 'tree_sitter_cpp', 'clang', 'pygls', 'lsprotocol', 'argparse')\n"
         "print([m for m in sys.modules if m.split('.')[0] in heavy])\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
