@@ -9,7 +9,7 @@ from __future__ import annotations
 import fnmatch
 import os
 import traceback
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -246,11 +246,16 @@ def lint_files(
     rules: list[Rule] | None = None,
     cache=None,
     jobs: int | None = 1,
+    checked: Callable[[Unit], bool] | None = None,
 ) -> Result:
     """Lint the given files with the given settings.
 
     ``jobs``: worker processes (None: one per CPU); the result is the same as
     with one (see :mod:`moos_lint.parallel`). Small inputs stay in one process.
+    ``checked``: when given, only the units it accepts are checked by the rules;
+    the others are still read, expanded and parsed (they include files, share
+    behavior files, are sibling missions). The language server uses it to keep
+    only the findings one document can show.
     """
     from moos_lint import parallel
 
@@ -278,7 +283,9 @@ def lint_files(
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
     found: dict[tuple, Diagnostic] = {d.identity: d for d in cpp_errors}
-    if jobs > 1 and len(run.units) > 1:
+    if checked is not None:
+        per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
+    elif jobs > 1 and len(run.units) > 1:
         per_unit = parallel.run_rules_parallel(run, jobs)
     else:
         per_unit = (run.run_rules(unit) for unit in run.units)

@@ -67,6 +67,16 @@ def _split(piece: Piece, sep: str, quotes: bool = True, braces: bool = False) ->
     """Split on ``sep`` outside double quotes (and ``{}`` when asked); pieces trimmed."""
     text, at = piece
     out: list[Piece] = []
+    if '"' not in text and not (braces and "{" in text):
+        # nothing to skip over (the common case): plain splitting, same pieces
+        start = 0
+        while True:
+            i = text.find(sep, start)
+            if i < 0:
+                out.append(_trim((text[start:], at + start)))
+                return out
+            out.append(_trim((text[start:i], at + start)))
+            start = i + len(sep)
     start, quoted, depth = 0, False, 0
     i = 0
     while i < len(text):

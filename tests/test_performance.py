@@ -360,3 +360,38 @@ def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
     monkeypatch.setattr(parallel, phase, _die)
     two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
     assert two == one
+
+
+def _shown(path: str) -> list[tuple]:
+    from moos_lint.lsp.analysis import analyse
+
+    text = Path(path).read_text(encoding="utf-8", errors="replace")
+    found = analyse(path, {path: text}).findings
+    return sorted((f.diagnostic.code, f.span.line, f.span.col, f.diagnostic.message) for f in found)
+
+
+def test_the_server_checks_only_units_that_can_report_in_the_document(monkeypatch):
+    """Re-linting a document checks its own unit and the units that include or use it, and
+    shows exactly what checking every neighbour shows."""
+    from moos_lint.lsp import analysis
+
+    folders = [FIXTURES / "example", *sorted((FIXTURES / "rules").glob("*/fire"))]
+    docs = [
+        str(p)
+        for folder in folders
+        for p in sorted(folder.rglob("*"))
+        if p.is_file() and analysis.lintable(str(p))
+    ]
+    assert len(docs) > 50
+    fast = {d: _shown(d) for d in docs}
+    checked_units: list[int] = []
+    real = analysis.lint_files
+
+    def every_unit(files, settings, **kw):
+        kw.pop("checked", None)
+        checked_units.append(len(files))
+        return real(files, settings, **kw)
+
+    monkeypatch.setattr(analysis, "lint_files", every_unit)
+    assert {d: _shown(d) for d in docs} == fast
+    assert sum(checked_units) > len(docs)  # the documents had neighbours to skip

@@ -113,7 +113,17 @@ def analyse(
         if other not in files:
             files.append(other)
     seen: set[str] = set()
-    result = lint_files(files, settings, cache=FileCache(reader=memory_reader(texts, seen)))
+    is_bhv = kind_of(path) == "bhv"
+
+    def can_report_here(unit: Unit) -> bool:
+        # A rule reports in its unit's own files (the unit, what it includes) and, for a
+        # mission, in the behavior files its helm reads: only those units are checked.
+        if unit.path == path or path in unit.expansion.sources:
+            return True
+        return is_bhv and unit.moos is not None and unit.moos.is_mission
+
+    reader = FileCache(reader=memory_reader(texts, seen))
+    result = lint_files(files, settings, cache=reader, checked=can_report_here)
     out.reads = seen | {path}
     for unit in result.units:
         if unit.path == path:
