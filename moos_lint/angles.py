@@ -207,7 +207,17 @@ def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[Angle
 
 
 def angle_values(ctx) -> Iterator[AngleValue]:
-    """Every literal angle value in the unit (``.moos`` or ``.bhv``)."""
+    """Every literal angle value in the unit (``.moos`` or ``.bhv``); found once per unit."""
+    memo = getattr(ctx.expansion, "models", None)
+    found = memo.get("angle_values") if memo is not None else None
+    if found is None:
+        found = tuple(_angle_values(ctx))
+        if memo is not None:
+            memo["angle_values"] = found
+    return iter(found)
+
+
+def _angle_values(ctx) -> Iterator[AngleValue]:
     if ctx.moos is not None:
         for p in ctx.moos.all_params:
             yield from _param_values(p.key, p.value, p.value_start, p.line)

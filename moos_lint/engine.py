@@ -18,7 +18,7 @@ from moos_lint.config import Settings
 from moos_lint.diagnostics import Diagnostic, Fix, IncludeSite, Severity, Span
 from moos_lint.discovery import discover, kind_of
 from moos_lint.model import BehaviorFile, MoosFile
-from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor
+from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
 from moos_lint.registry import Kind, Rule, Scope, select_rules
@@ -155,11 +155,11 @@ class Run:
         unit = Unit(path=exp.path, kind=kind, expansion=exp)
         if exp.read_problem is None:
             if kind is Kind.MOOS:
-                unit.moos = parse_moos(exp)
+                unit.moos = parsed(exp, parse_moos)
                 if unit.moos.is_mission:
                     self.mission_files.update(exp.sources)
             else:
-                unit.bhv = parse_bhv(exp)
+                unit.bhv = parsed(exp, parse_bhv)
         return unit
 
     def run_rules(self, unit: Unit) -> tuple[list[Diagnostic], int]:

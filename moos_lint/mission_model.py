@@ -376,25 +376,14 @@ def _run_memo(run: Any, name: str) -> dict:
 
 
 def _parsed(run: Any, pre: Any, exp: Any, parse: Any) -> Any:
-    """``parse(exp)``, once per run when the run's preprocessor shares its expansions.
+    """``parse(exp)``, once per expansion (see :func:`moos_lint.nsplug.parsed`).
 
     Rules only read models, so a behavior file used by many missions, or a
     sibling mission, is parsed once.
     """
-    if getattr(pre, "memo", None) is None:
-        return parse(exp)
-    memo = getattr(run, "_parsed_models", None)
-    if memo is None:  # the linted files are parsed already
-        memo = _run_memo(run, "_parsed_models")
-        for unit in getattr(run, "units", ()):
-            if getattr(unit, "moos", None) is not None:
-                memo[(unit.path, "parse_moos")] = unit.moos
-            if getattr(unit, "bhv", None) is not None:
-                memo[(unit.path, "parse_bhv")] = unit.bhv
-    key = (exp.path, parse.__name__)
-    if key not in memo:
-        memo[key] = parse(exp)
-    return memo[key]
+    from moos_lint.nsplug import parsed
+
+    return parsed(exp, parse)
 
 
 def _sibling_model(run: Any, path: str, moos: MoosFile) -> MissionModel:

@@ -73,6 +73,8 @@ class Block:
     params: list[Param] = field(default_factory=list)
     brace_on_header: bool = False
     _lname: str | None = field(default=None, init=False, repr=False, compare=False)
+    #: what readers work out from the block once (it never changes after parsing)
+    memo: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     @property
     def lname(self) -> str:

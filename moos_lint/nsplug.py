@@ -28,9 +28,12 @@ import difflib
 import itertools
 import os
 import re
+import threading
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from moos_lint.diagnostics import IncludeSite, Span
 from moos_lint.source import ReadProblem, SourceFile, read_source
@@ -44,6 +47,8 @@ DEFINED = "<defined>"
 #: whole include tree, so a deeper chain costs every file above it time and memory.
 MAX_INCLUDE_DEPTH = 100
 MAX_SUBS_PER_LINE = 100
+#: ``#ifdef`` group numbers, unique in the process (expansions may be kept across runs)
+_GROUPS = itertools.count(1)
 
 _MACRO_DEFAULT = re.compile(r"([$%])\(([^()=:$%]+?)(:?=)([^()]*)\)")
 _MACRO_REF = re.compile(r"[$%]\(([^()]*)\)")
@@ -109,6 +114,17 @@ class Expansion:
     #: the condition of each ``#ifdef`` branch, by ``(group, branch)`` as in ``Line.branches``:
     #: ``"ifdef A v"``, ``"ifndef A"`` or ``"else"``
     conditions: dict[tuple[int, int], str] = field(default_factory=dict)
+    #: the models parsed from this expansion, by parser name (see :func:`parsed`)
+    models: dict[str, Any] = field(default_factory=dict, repr=False, compare=False)
+
+
+def parsed(exp: Expansion, parse: Callable[[Expansion], Any]) -> Any:
+    """``parse(exp)``, once per expansion: models are only read once built."""
+    key = parse.__name__
+    model = exp.models.get(key)
+    if model is None:
+        model = exp.models[key] = parse(exp)
+    return model
 
 
 @dataclass(slots=True)
@@ -167,11 +183,75 @@ class _Work:
             self.branches = (*self.branches[:-1], (top.group, top.branch))
 
 
+class ExpansionStore:
+    """Expansions kept from one lint run to the next (the language server re-lints one
+    document at a time while its neighbours stay as they were).
+
+    A stored expansion is reused while every file it read reads the same text
+    and no folder it read from (nor an include path) has had a file added or
+    removed; an expansion that could not follow an include is never stored.
+    """
+
+    def __init__(self, size: int = 256) -> None:
+        self.size = size
+        self._lock = threading.Lock()
+        self._entries: OrderedDict[tuple, tuple[Expansion, dict[str, str], dict]] = OrderedDict()
+
+    @staticmethod
+    def _key(pre: Preprocessor, path: str) -> tuple:
+        defines = tuple(sorted(pre.defines.items()))
+        return (path, pre.mode, pre.lenient, defines, tuple(pre.include_paths))
+
+    def get(self, pre: Preprocessor, path: str) -> Expansion | None:
+        with self._lock:
+            return self._get(pre, path)
+
+    def _get(self, pre: Preprocessor, path: str) -> Expansion | None:
+        key = self._key(pre, path)
+        hit = self._entries.get(key)
+        if hit is None:
+            return None
+        exp, texts, folders = hit
+        for src, text in texts.items():
+            now = pre.cache.get(src)
+            if not isinstance(now, SourceFile) or now.text != text:
+                return None
+        if any(_mtime(d) != m for d, m in folders.items()):
+            return None
+        self._entries.move_to_end(key)
+        return exp
+
+    def put(self, pre: Preprocessor, path: str, exp: Expansion) -> None:
+        if exp.read_problem is not None or exp.incomplete:
+            return
+        texts = {src: sf.text for src, sf in exp.sources.items()}
+        folders = {d: _mtime(d) for d in {os.path.dirname(p) for p in texts} | {*pre.include_paths}}
+        if any(m is None for m in folders.values()):
+            return
+        with self._lock:
+            self._entries[self._key(pre, path)] = (exp, texts, folders)
+            while len(self._entries) > self.size:
+                self._entries.popitem(last=False)
+
+
+def _mtime(folder: str) -> int | None:
+    try:
+        return os.stat(folder).st_mtime_ns
+    except OSError:
+        return None
+
+
 class FileCache:
     """Reads each file at most once per run."""
 
-    def __init__(self, reader: Callable[[Path], SourceFile | ReadProblem] = read_source):
+    def __init__(
+        self,
+        reader: Callable[[Path], SourceFile | ReadProblem] = read_source,
+        store: ExpansionStore | None = None,
+    ):
         self._reader = reader
+        #: expansions kept across runs (None: every run expands afresh)
+        self.store = store
         self._cache: dict[str, SourceFile | ReadProblem] = {}
         #: the folders searched for an ``#include`` (a file created there changes the result)
         self.probed: set[str] = set()
@@ -211,7 +291,7 @@ class Preprocessor:
         self.mode = mode
         self.lenient = False  # nsplug --lenient: partial expansion in nsplug mode
         self.cache = cache or FileCache()
-        self._groups = itertools.count(1)
+        self._groups = _GROUPS
         #: when a dict, ``expand(path)`` (default macros) is computed once per path and shared:
         #: a lint run expands a behavior file or a sibling mission for each mission that uses it
         self.memo: dict[str, Expansion] | None = None
@@ -326,7 +406,13 @@ class Preprocessor:
         if macros is None and self.memo is not None:
             hit = self.memo.get(path)
             if hit is None:
-                hit = self.memo[path] = self._expand(path, None)
+                store = self.cache.store
+                hit = store.get(self, path) if store is not None else None
+                if hit is None:
+                    hit = self._expand(path, None)
+                    if store is not None:
+                        store.put(self, path, hit)
+                self.memo[path] = hit
             return hit
         return self._expand(path, macros)
 

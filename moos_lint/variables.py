@@ -24,6 +24,7 @@ variable, the right side a literal).
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
@@ -496,7 +497,14 @@ def _params_for(app: str, key: str) -> tuple[Syntax, bool] | None:
 
 
 def block_variables(block: Block, app: str) -> Iterator[VarRef]:
-    """The variables one block of a known app names."""
+    """The variables one block of a known app names (worked out once per block and app)."""
+    refs = block.memo.get(("variables", app))
+    if refs is None:
+        refs = block.memo[("variables", app)] = tuple(_block_variables(block, app))
+    return iter(refs)
+
+
+def _block_variables(block: Block, app: str) -> Iterator[VarRef]:
     for param in block.params:
         key = param.lkey
         spec = _params_for(app, key)
@@ -586,6 +594,7 @@ def bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
 _PLACEHOLDER = re.compile(r"\$\[[^\]]*\]|\$\{[^}]*\}|\$[A-Za-z_][A-Za-z0-9_]*")
 
 
+@functools.lru_cache(maxsize=8192)
 def bare_name(name: str) -> str | None:
     """``name`` with run-time placeholders removed, or None when it holds an nsplug macro.
 

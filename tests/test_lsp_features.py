@@ -13,7 +13,7 @@ from lsprotocol import types as lsp
 
 from moos_lint.diagnostics import Span
 from moos_lint.lsp import features
-from moos_lint.lsp.analysis import analyse
+from moos_lint.lsp.analysis import analyse, settings_for
 from moos_lint.lsp.catalogue import Catalogue, Component, ParamInfo, from_app_catalogue
 from moos_lint.lsp.documents import (
     DocumentStore,
@@ -203,7 +203,12 @@ def test_a_fragment_is_judged_with_the_mission_that_includes_it(mission):
     texts = {plug: (mission.parent / "plug_vehicle.moos").read_text()}
     result = analyse(plug, texts)
     assert [(f.span.line, f.diagnostic.code) for f in result.findings] == [(2, "R003")]
-    assert str(mission) in result.reads and str(mission.parent / "mission.bhv") in result.reads
+    assert str(mission) in result.reads
+    # the behavior file counts once a rule reads it (the mission model's, here)
+    settings, _error = settings_for(plug)
+    settings.select = ["M005"]
+    result = analyse(plug, texts, settings=settings)
+    assert str(mission.parent / "mission.bhv") in result.reads
 
 
 def test_files_the_engine_does_not_lint_get_no_findings(tmp_path: Path):

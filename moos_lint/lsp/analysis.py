@@ -20,13 +20,16 @@ from moos_lint.diagnostics import Diagnostic, IncludeSite, Span
 from moos_lint.discovery import DEFAULT_EXCLUDE, _excluded, kind_of
 from moos_lint.engine import Unit, lint_files
 from moos_lint.lsp.documents import memory_reader, norm
-from moos_lint.nsplug import FileCache
+from moos_lint.nsplug import ExpansionStore, FileCache
+from moos_lint.source import read_bytes
 
 # re-linting a C++ file reparses only the files of its folder that changed
 cpp_app.PARSE_MEMO_SIZE = 96  # a document and its neighbours (MAX_NEIGHBOURS)
 
 #: At most this many neighbouring files are linted with a document.
 MAX_NEIGHBOURS = 64
+#: re-linting a document re-expands only the files that changed (see ExpansionStore)
+_EXPANSIONS = ExpansionStore()
 
 
 @dataclass(slots=True)
@@ -94,6 +97,20 @@ def neighbours(path: str, settings: Settings) -> list[str]:
     return out
 
 
+def _may_include(path: str, name: bytes) -> bool:
+    """Whether the file at ``path`` may ``#include`` a file called ``name`` (by name, or
+    through a macro); a file that cannot be read is kept (the engine reports it)."""
+    data = read_bytes(Path(path))
+    if not isinstance(data, bytes):
+        return True
+    for line in data.splitlines():
+        if line.lstrip().startswith(b"#include") and (
+            name in line or b"$(" in line or b"%(" in line
+        ):
+            return True
+    return False
+
+
 def analyse(
     path: str,
     texts: dict[str, str],
@@ -109,7 +126,12 @@ def analyse(
         settings, config_error = settings_for(path)
     out = Analysis(path, settings=settings, config_error=config_error)
     files = [path]
-    for other in [*includers, *neighbours(path, settings)]:
+    nearby = neighbours(path, settings)
+    if kind_of(path) == "moos":
+        # only a file that includes a mission file can change what is found in it
+        name = os.path.basename(path).encode("utf-8", "surrogateescape")
+        nearby = [p for p in nearby if p in texts or _may_include(p, name)]
+    for other in [*includers, *nearby]:
         if other not in files:
             files.append(other)
     seen: set[str] = set()
@@ -122,7 +144,7 @@ def analyse(
             return True
         return is_bhv and unit.moos is not None and unit.moos.is_mission
 
-    reader = FileCache(reader=memory_reader(texts, seen))
+    reader = FileCache(reader=memory_reader(texts, seen), store=_EXPANSIONS)
     result = lint_files(files, settings, cache=reader, checked=can_report_here)
     out.reads = seen | {path}
     for unit in result.units:
