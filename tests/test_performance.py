@@ -395,3 +395,49 @@ def test_the_server_checks_only_units_that_can_report_in_the_document(monkeypatc
     monkeypatch.setattr(analysis, "lint_files", every_unit)
     assert {d: _shown(d) for d in docs} == fast
     assert sum(checked_units) > len(docs)  # the documents had neighbours to skip
+
+
+def test_expansions_kept_across_runs_follow_every_file_they_read(tmp_path, monkeypatch):
+    from moos_lint import nsplug
+    from moos_lint.nsplug import ExpansionStore, FileCache, Preprocessor
+
+    (tmp_path / "m.moos").write_text("#include plug.moos\nA = 1\n")
+    (tmp_path / "plug.moos").write_text("B = 2\n")
+    store = ExpansionStore()
+    expanded: list[str] = []
+    real = Preprocessor._expand
+
+    def counting(self, path, macros):
+        expanded.append(os.path.basename(path))
+        return real(self, path, macros)
+
+    monkeypatch.setattr(Preprocessor, "_expand", counting)
+
+    def run(texts=None, defines=None):
+        def reader(p):
+            text = (texts or {}).get(str(p))
+            if text is not None:
+                from moos_lint.source import SourceFile, split_lines
+
+                return SourceFile(path=p, text=text, lines=split_lines(text))
+            return nsplug.read_source(p)
+
+        pre = Preprocessor(defines=defines, cache=FileCache(reader=reader, store=store))
+        pre.memo = {}
+        return [line.text for line in pre.expand(tmp_path / "m.moos").lines]
+
+    first = run()
+    assert run() == first and expanded == ["m.moos"]  # kept
+    # an included file edited in the editor, then on disk
+    assert "B = 3" in run(texts={str(tmp_path / "plug.moos"): "B = 3\n"})
+    assert run() == first and expanded == ["m.moos"] * 3
+    (tmp_path / "plug.moos").write_text("B = 4\n")
+    assert "B = 4" in run() and len(expanded) == 4
+    # other defines are another expansion; a file added to a folder read from re-expands
+    run(defines={"X": "1"})
+    assert len(expanded) == 5
+    run()
+    assert len(expanded) == 5
+    (tmp_path / "new.txt").write_text("")
+    run()
+    assert len(expanded) == 6
