@@ -259,16 +259,17 @@ def lint_files(
     """
     from moos_lint import parallel
 
-    if rules is None:
-        rules = select_rules(settings.select, settings.extend_select, settings.ignore)
-    run = Run(settings, rules, cache)
-    result = Result(files=list(files))
     jobs = parallel.effective_jobs(jobs, len(files))
     cpp_files = [p for p in files if kind_of(p) == "cpp"]
     workers = parallel.pool(jobs) if jobs > 1 and cpp_files else None
     try:
-        # the workers read and parse the C++ while this process reads the missions
+        # the workers read and parse the C++ (started first: they need no rule) while this
+        # process loads the rules and reads the missions
         cpp_parsed = parallel.start_cpp(workers, cpp_files) if workers is not None else None
+        if rules is None:
+            rules = select_rules(settings.select, settings.extend_select, settings.ignore)
+        run = Run(settings, rules, cache)
+        result = Result(files=list(files))
         for path in files:
             if kind_of(path) != "cpp":
                 run.units.append(run.build_unit(path))

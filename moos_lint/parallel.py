@@ -7,9 +7,10 @@ worker processes:
    that mention the MOOS API are parsed) and parsed with tree-sitter in a
    worker; the largest folders go first, so that no big folder starts last.
    Meanwhile the main process expands and parses the mission and behavior
-   files. The workers send back plain facts (the relevant sources and the
-   extracted :class:`~moos_lint.cpp.model.CppFile` records); the main process
-   links them into apps exactly as a single process does.
+   files, then takes the folders no worker has started yet, smallest first.
+   The workers send back plain facts (the relevant sources and the extracted
+   :class:`~moos_lint.cpp.model.CppFile` records); the main process links them
+   into apps exactly as a single process does.
 2. **Running the rules.** Once every unit is built, a second pool is forked:
    each worker inherits the whole run (every unit, the cross-unit sets) and
    runs the rules on the units it is given, largest first. It sends back the
@@ -82,6 +83,11 @@ def stop(workers: Any) -> None:
 # ------------------------------------------------------------------ phase 1: C++
 def _cpp_folder(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
     """In a worker: read, prefilter and parse one folder of C++ files."""
+    return cpp_folder_facts(paths)
+
+
+def cpp_folder_facts(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
+    """Read, prefilter and parse one folder of C++ files: (paths, sources, facts, error)."""
     from moos_lint.cpp.app import parse_folder, read_relevant
 
     try:
@@ -107,15 +113,21 @@ def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
         folders.setdefault(os.path.dirname(p), []).append(p)
     tasks = sorted(folders.values(), key=lambda ps: (-_folder_weight(ps), ps[0]))
     futures = [workers.submit(_cpp_folder, t) for t in tasks]
-    return _completed(futures, tasks[0] if tasks else [])
+    return _completed(futures, tasks)
 
 
-def _completed(futures: list[Any], first: list[str]) -> Iterator[Any]:
+def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
+    """The results; the folders no worker has started yet are taken here, smallest first,
+    so that this process (done with the missions) shares the tail of the work."""
     try:
-        for fut in as_completed(futures):
+        for i in range(len(futures) - 1, -1, -1):
+            if not futures[i].cancel():  # a worker has it (or had it)
+                break
+            yield cpp_folder_facts(tasks[i])
+        for fut in as_completed([f for f in futures if not f.cancelled()]):
             yield fut.result()
     except Exception as exc:  # a worker died: the main process redoes the C++
-        yield first, {}, None, f"{type(exc).__name__}: {exc}"
+        yield tasks[0] if tasks else [], {}, None, f"{type(exc).__name__}: {exc}"
 
 
 # ------------------------------------------------------------------ phase 2: rules

@@ -441,3 +441,29 @@ def test_expansions_kept_across_runs_follow_every_file_they_read(tmp_path, monke
     (tmp_path / "new.txt").write_text("")
     run()
     assert len(expanded) == 6
+
+
+def _slow_worker(paths):
+    """In a worker: the work, late (picklable by name)."""
+    import time
+
+    time.sleep(0.2)
+    return parallel.cpp_folder_facts(paths)
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+def test_the_main_process_takes_the_cpp_folders_no_worker_started(monkeypatch):
+    settings = resolve_settings([FIXTURES], None)
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    here: list[str] = []
+    real = parallel.cpp_folder_facts
+
+    def counted(paths):
+        here.append(paths[0])
+        return real(paths)
+
+    monkeypatch.setattr(parallel, "_cpp_folder", _slow_worker)
+    monkeypatch.setattr(parallel, "cpp_folder_facts", counted)
+    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    assert two == one
+    assert here, "the main process left every C++ folder to the workers"
