@@ -24,6 +24,8 @@ import math
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from moos_lint.mbutil import bite, bite_x, is_number, parse_string, strip_blank_ends, tolower
+
 VALID = "valid"
 INVALID = "invalid"
 UNKNOWN = "unknown"
@@ -40,60 +42,7 @@ class _Unknown(Exception):
 
 
 # --------------------------------------------------------------- lib_mbutil
-
-
-def strip_blank_ends(s: str) -> str:
-    """``stripBlankEnds``: tabs and blanks in front; also CR, LF and NUL behind."""
-    return s.lstrip(" \t").rstrip(" \t\r\n\x00")
-
-
-def _lower(s: str) -> str:
-    return "".join(chr(ord(c) + 32) if "A" <= c <= "Z" else c for c in s)
-
-
-def bite(s: str, sep: str) -> tuple[str, str]:
-    """``biteString``: (front, rest) split at the first ``sep``."""
-    i = s.find(sep)
-    if i < 0:
-        return s, ""
-    return s[:i], s[i + 1 :]
-
-
-def bite_x(s: str, sep: str) -> tuple[str, str]:
-    """``biteStringX``: ``biteString`` with blank ends stripped from both parts."""
-    front, rest = bite(s, sep)
-    return strip_blank_ends(front), strip_blank_ends(rest)
-
-
-def parse_string(s: str, sep: str) -> list[str]:
-    """``parseString``: no trailing empty piece, an empty string gives none."""
-    if not s:
-        return []
-    parts = s.split(sep)
-    if parts[-1] == "":
-        parts.pop()
-    return parts
-
-
-def is_number(s: str) -> bool:
-    """``isNumber`` (blank ends allowed): digits, one ``.``, ``-`` only in front."""
-    s = strip_blank_ends(s)
-    if len(s) > 1 and s[0] == "+":
-        s = s[1:]
-    digits = dots = 0
-    for c in s:
-        if "0" <= c <= "9":
-            digits += 1
-        elif c == ".":
-            dots += 1
-            if dots > 1:
-                return False
-        elif c == "-":
-            if digits or dots:
-                return False
-        else:
-            return False
-    return digits > 0
+# (the ports live in moos_lint.mbutil)
 
 
 def atof(s: str) -> Fraction:
@@ -158,8 +107,8 @@ class _Shape:
         """``XYObject::set_param``: whether the key is one of its own."""
         if param in _OBJECT_PARAMS:
             return True
-        if param == "active" and _lower(value) in ("true", "false"):
-            self.active = _lower(value) == "true"
+        if param == "active" and tolower(value) in ("true", "false"):
+            self.active = tolower(value) == "true"
             return True
         return False
 
@@ -330,7 +279,7 @@ def _abbreviated_poly(s: str) -> _Poly:
     poly = _Poly()
     for n, piece in enumerate(parse_string(s, ":"), 1):
         left, rest = bite_x(strip_blank_ends(piece), ",")
-        left = _lower(left)
+        left = tolower(left)
         if poly.set_param(left, rest):
             continue
         ystr, zstr = bite_x(rest, ",")
@@ -439,7 +388,7 @@ def _abbreviated_segl(s: str) -> tuple[_Shape, str]:
     segl = _Shape()
     for n, piece in enumerate(parse_string(s, ":"), 1):
         left, rest = bite(strip_blank_ends(piece), ",")
-        left = _lower(strip_blank_ends(left))
+        left = tolower(strip_blank_ends(left))
         rest = strip_blank_ends(rest)
         if segl.set_param(left, rest):
             continue
@@ -484,7 +433,7 @@ def seglist_size(value: str) -> tuple[int, str] | None:
 
 def waypoints(value: str) -> Verdict:
     """BHV_Waypoint ``points``/``polygon``: ``empty``, ``start``, a point list or a polygon."""
-    if _lower(value) in ("empty", "start"):
+    if tolower(value) in ("empty", "start"):
         return Verdict(VALID)
     got = seglist_size(value)
     if got is None:
@@ -515,7 +464,7 @@ def _string2point(s: str) -> bool:
     x = y = ""
     for piece in parse_string(s, ","):
         param, value = bite_x(piece, "=")
-        param = _lower(param)
+        param = tolower(param)
         if param == "x":
             x = value
         elif param == "y":
@@ -538,7 +487,7 @@ def _string2point(s: str) -> bool:
 
 def point(value: str, words: tuple[str, ...] = ()) -> Verdict:
     """Whether ``string2Point(value).valid()`` (or ``value`` lower-cased is one of ``words``)."""
-    if words and _lower(value) in words:
+    if words and tolower(value) in words:
         return Verdict(VALID)
     try:
         ok = _string2point(value)

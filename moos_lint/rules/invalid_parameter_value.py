@@ -89,6 +89,7 @@ import re
 
 from moos_lint.diagnostics import Severity
 from moos_lint.geometry_forms import INVALID, is_geometry_form, judge
+from moos_lint.mbutil import is_number
 from moos_lint.model import has_macro
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._catalogue_bhv import lookup
@@ -96,29 +97,6 @@ from moos_lint.rules.unknown_parameter import block_apps
 
 BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
 _MOOS_DOUBLE = re.compile(r"^[0-9-]")
-
-
-def is_number(s: str) -> bool:
-    """MOOS-IvP's ``isNumber`` (lib_mbutil/MBUtils.cpp)."""
-    s = s.strip()
-    if len(s) > 1 and s[0] == "+":
-        s = s[1:]
-    if not s:
-        return False
-    digits = dots = 0
-    for c in s:
-        if c.isdigit() and c.isascii():
-            digits += 1
-        elif c == ".":
-            dots += 1
-            if dots > 1:
-                return False
-        elif c == "-":
-            if digits or dots:
-                return False
-        else:
-            return False
-    return digits > 0
 
 
 def _atof(s: str) -> float:
