@@ -271,7 +271,10 @@ class _Builder:
             if proc.binary.lower() == "phelmivp" and proc.block is not None:
                 self._helm(proc)
         folder = os.path.dirname(m.path)
-        for var, script in _pokes(folder).items():
+        pokes = _run_memo(self.run, "_pokes")
+        if folder not in pokes:
+            pokes[folder] = _pokes(folder)
+        for var, script in pokes[folder].items():
             self.add(var, f"uPokeDB ({script})", "poke")
         if m.inbound:
             self._siblings(folder)

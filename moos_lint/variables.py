@@ -107,8 +107,11 @@ def _bite(piece: Piece, sep: str) -> tuple[Piece, Piece] | None:
     return _trim((text[:idx], at)), _trim((text[idx + len(sep) :], at + idx + len(sep)))
 
 
+_SPACE = re.compile(r"\s")
+
+
 def _is_name(text: str) -> bool:
-    return bool(text) and not any(c.isspace() for c in text)
+    return bool(text) and _SPACE.search(text) is None
 
 
 # ------------------------------------------------------------------ syntaxes
@@ -566,7 +569,17 @@ BHV_PARAMS: dict[str, Syntax] = {
 
 
 def bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
-    """Every variable a ``.bhv`` file names."""
+    """Every variable a ``.bhv`` file names (worked out once per parsed file)."""
+    memo = getattr(bf.expansion, "models", None)
+    refs = memo.get("bhv_variables") if memo is not None else None
+    if refs is None:
+        refs = tuple(_bhv_variables(bf))
+        if memo is not None:
+            memo["bhv_variables"] = refs
+    return iter(refs)
+
+
+def _bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
     for init in bf.initializes:
         yield VarRef(init.var, init.line, init.var_start, PUBLISH, "helm", "initialize")
     cond = condition()
