@@ -156,9 +156,11 @@ class _Work:
     branches: tuple[tuple[int, int], ...] = ()
     n_false: int = 0
     n_unknown: int = 0
+    path: str = ""
 
     def __post_init__(self) -> None:
         self.branches = self.outer
+        self.path = str(self.src.path)
 
     def count(self, state: str | None, delta: int) -> None:
         if state == "F":
@@ -445,8 +447,9 @@ class Preprocessor:
         while stack:
             work = stack[-1]
             src = work.src
-            path = str(src.path)
-            exp.sources.setdefault(path, src)
+            path = work.path
+            if work.idx == 0:
+                exp.sources.setdefault(path, src)
             if work.idx >= len(src.lines):
                 self._close_file(exp, work.frames)
                 stack.pop()
@@ -457,7 +460,7 @@ class Preprocessor:
             here = Line(raw, raw, path, work.idx, work.chain)
             frames = work.frames
 
-            tag_match = _TAG_LINE.match(raw)
+            tag_match = _TAG_LINE.match(raw) if "<tag>" in raw else None
             if tag_match:  # <tag> lines are never written out
                 work.in_tag = tag_match.group(1).strip() == work.tag
                 continue
@@ -467,6 +470,12 @@ class Preprocessor:
                     exp.lines.append(self._out_line(here, macros, frames, work.outer))
                 continue
 
+            if not raw.lstrip().startswith("#"):  # not a directive: the common line
+                if not work.n_false:
+                    exp.lines.append(
+                        self._out_line(here, macros, frames, work.outer, work.branches)
+                    )
+                continue
             squeezed = raw.replace("\t", " ").strip()
             left, _, rest = squeezed.partition(" ")
             rest = rest.strip()
@@ -499,8 +508,7 @@ class Preprocessor:
                     stack.append(_Work(csrc, ctag, cchain, branches, branch_uncertain))
                     active.add(str(csrc.path))
                 continue
-            if raw.lstrip().startswith("#"):
-                self._unknown_directive(exp, here)
+            self._unknown_directive(exp, here)  # a line starting with '#', not a directive
             exp.lines.append(self._out_line(here, macros, frames, work.outer, branches))
 
     def _conditional(
