@@ -48,7 +48,6 @@ import hashlib
 import json
 import os
 import pickle
-import tempfile
 from pathlib import Path
 
 from moos_lint import __version__
@@ -239,6 +238,8 @@ def _prune(folder: str) -> None:
 
 
 def _atomic_write(folder: str, path: str, data: bytes) -> None:
+    import tempfile  # only when an entry is written
+
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=".part")
     try:
         with os.fdopen(fd, "wb") as fh:

@@ -247,6 +247,8 @@ def cmd_check(args: argparse.Namespace) -> int:
 
         print(json.dumps(settings.as_dict(), indent=2))
         return EXIT_CLEAN
+    if not (args.baseline or args.write_baseline):
+        return _check(args, settings)
     from moos_lint.baseline import BaselineError
 
     try:
@@ -258,7 +260,6 @@ def cmd_check(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace, settings) -> int:
     from pathlib import Path
 
-    from moos_lint import baseline as bl
     from moos_lint.context import project_root
     from moos_lint.diagnostics import Diagnostic, Severity, Span
     from moos_lint.output import render
@@ -267,7 +268,11 @@ def _check(args: argparse.Namespace, settings) -> int:
     baseline_file = args.write_baseline or args.baseline
     fallback = os.path.dirname(os.path.abspath(baseline_file)) if baseline_file else None
     root = project_root(settings, args.paths, fallback)
-    base = bl.load(str(args.baseline), root) if args.baseline else None
+    base = None
+    if args.baseline:
+        from moos_lint import baseline as bl
+
+        base = bl.load(str(args.baseline), root)
 
     # --fix/--diff re-lint edited text in memory, and a baseline is written from a fresh run
     use_cache = not (args.no_cache or args.fix or args.diff or args.write_baseline)
@@ -306,6 +311,8 @@ def _check(args: argparse.Namespace, settings) -> int:
                 ),
             )
         if base is not None and filtered:
+            from moos_lint import baseline as bl
+
             result.diagnostics, result.baselined = bl.new_findings(
                 result.diagnostics, base, result.sources
             )
