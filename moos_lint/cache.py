@@ -59,7 +59,7 @@ if TYPE_CHECKING:
 CACHE_DIR = ".moos_lint_cache"
 ENV_VAR = "MOOS_LINT_CACHE_DIR"
 #: bump when the entry layout changes
-FORMAT = 1
+FORMAT = 2
 #: entries kept (one per distinct run: paths, settings, moos-lint version)
 KEEP = 8
 _PACKAGE = os.path.dirname(os.path.abspath(__file__))
@@ -179,17 +179,25 @@ def _valid(entry: dict) -> bool:
     return True
 
 
+def _valid_header(fh: Any, key: str) -> dict | None:
+    """The entry's header (key, token, dependencies) when it is for ``key`` and still valid."""
+    header = pickle.load(fh)
+    if not isinstance(header, dict) or header.get("key") != key or not _valid(header):
+        return None
+    return header
+
+
 def load(folder: str, key: str) -> Any | None:
     """The stored result for ``key`` when it is still valid, else None (never raises)."""
     path = os.path.join(folder, f"run-{key}.pickle")
     try:
         with open(path, "rb") as fh:
-            entry = pickle.load(fh)
-        if not isinstance(entry, dict) or entry.get("key") != key:
-            return None
-        if not _valid(entry):
-            return None
-        return entry["result"]
+            header = _valid_header(fh, key)
+            if header is None:
+                return None
+            result = pickle.load(fh)
+        result.cache_token = header["token"]
+        return result
     except Exception:  # a missing, partial or corrupt entry is a cache miss
         return None
 
@@ -216,25 +224,75 @@ def store(
         ignore = os.path.join(folder, ".gitignore")
         if not os.path.exists(ignore):
             _atomic_write(folder, ignore, b"# created by moos-lint\n*\n")
-        entry = {"key": key, "deps": _dependencies(result, settings, read, probed)}
-        entry["result"] = slim
-        data = pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL)
+        token = os.urandom(12).hex()  # names this very entry (outputs refer to it)
+        header = {"key": key, "token": token, "deps": _dependencies(result, settings, read, probed)}
+        # the header first: a run that only validates the entry never unpickles the findings
+        data = pickle.dumps(header, protocol=pickle.HIGHEST_PROTOCOL)
+        data += pickle.dumps(slim, protocol=pickle.HIGHEST_PROTOCOL)
         _atomic_write(folder, os.path.join(folder, f"run-{key}.pickle"), data)
+        result.cache_token = token
         _prune(folder)
     except Exception:
         return
 
 
+def _output_path(folder: str, token: str, render_key: str, missing: list[str]) -> str:
+    data = json.dumps([render_key, sorted(missing)])
+    rkey = hashlib.sha256(data.encode("utf-8", "surrogatepass")).hexdigest()[:24]
+    return os.path.join(folder, f"out-{token}-{rkey}.pickle")
+
+
+def store_output(folder: str, result: Any, render_key: str, text: str, has_findings: bool) -> None:
+    """Keep the report rendered from a cached result (``render_key``: how it was rendered:
+    format, options, working folder), so that an unchanged run prints it again as is."""
+    token = getattr(result, "cache_token", None)
+    if not token:
+        return
+    entry = {"render_key": render_key, "text": text, "has_findings": has_findings}
+    with contextlib.suppress(Exception):
+        path = _output_path(folder, token, render_key, result.missing)
+        _atomic_write(folder, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
+        _prune(folder)
+
+
+def cached_output(
+    paths: list[Path], settings: Any, *, context: bool, cache_dir: str, render_key: str
+) -> tuple[str, bool] | None:
+    """The report an unchanged run printed, rendered the same way: (text, has findings).
+
+    The run's entry is validated as :func:`cached_lint` does; the findings are
+    never unpickled, nor is the report rendered again.
+    """
+    try:
+        found = cached_discover(paths, settings, cache_dir)
+        key = run_key(settings, paths, found.files, context)
+        with open(os.path.join(cache_dir, f"run-{key}.pickle"), "rb") as fh:
+            header = _valid_header(fh, key)
+        if header is None:
+            return None
+        with open(_output_path(cache_dir, header["token"], render_key, found.missing), "rb") as fh:
+            entry = pickle.load(fh)
+        if not isinstance(entry, dict) or entry.get("render_key") != render_key:
+            return None
+        return entry["text"], bool(entry["has_findings"])
+    except Exception:  # no entry, a changed run, or a corrupt file: render afresh
+        return None
+
+
 def _prune(folder: str) -> None:
-    """Keep the :data:`KEEP` most recently written entries."""
-    entries = []
+    """Keep the :data:`KEEP` most recently written entries of each kind (runs, file
+    lists, reports)."""
+    kinds: dict[str, list[tuple[int, str]]] = {}
     for name in os.listdir(folder):
-        if name.startswith(("run-", "files-")) and name.endswith(".pickle"):
+        kind = name.split("-", 1)[0]
+        if kind in ("run", "files", "out") and name.endswith(".pickle"):
             with contextlib.suppress(OSError):
-                entries.append((os.stat(os.path.join(folder, name)).st_mtime_ns, name))
-    for _, name in sorted(entries, reverse=True)[KEEP:]:
-        with contextlib.suppress(OSError):
-            os.unlink(os.path.join(folder, name))
+                mtime = os.stat(os.path.join(folder, name)).st_mtime_ns
+                kinds.setdefault(kind, []).append((mtime, name))
+    for entries in kinds.values():
+        for _, name in sorted(entries, reverse=True)[KEEP:]:
+            with contextlib.suppress(OSError):
+                os.unlink(os.path.join(folder, name))
 
 
 def _atomic_write(folder: str, path: str, data: bytes) -> None:
@@ -309,4 +367,13 @@ def cached_lint(
     return result
 
 
-__all__ = ["CACHE_DIR", "cache_dir_for", "cached_lint", "load", "run_key", "store"]
+__all__ = [
+    "CACHE_DIR",
+    "cache_dir_for",
+    "cached_lint",
+    "cached_output",
+    "load",
+    "run_key",
+    "store",
+    "store_output",
+]

@@ -73,7 +73,9 @@ def _add_preproc_args(p: argparse.ArgumentParser) -> None:
     )
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The command-line parser; ``only``: build just that command's arguments (a parser
+    costs time to build, and a run needs one)."""
     import argparse
     from pathlib import Path
 
@@ -85,99 +87,115 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"moos-lint {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
-    check = sub.add_parser("check", help="lint files and folders (the default command)")
-    check.add_argument("paths", nargs="*", type=Path, help="files or folders (default: .)")
-    check.add_argument(
-        "--select", action="append", help="rules to enable (codes, prefixes, names, ALL)"
-    )
-    check.add_argument(
-        "--extend-select", action="append", help="rules to enable on top of the selection"
-    )
-    check.add_argument("--ignore", action="append", help="rules to disable")
-    _add_preproc_args(check)
-    check.add_argument("--config", type=Path, help="use this config file instead of searching")
-    check.add_argument(
-        "--cpp-backend",
-        choices=("tree-sitter", "clang"),
-        help="how C++ apps are read: tree-sitter (fast, default) or clang (libclang deep mode)",
-    )
-    check.add_argument(
-        "--compile-commands",
-        type=Path,
-        metavar="PATH",
-        help="compile_commands.json (or its folder) for --cpp-backend clang",
-    )
-    check.add_argument(
-        "--output-format",
-        choices=FORMATS,
-        default=None,
-        help="output format (default: text; github when GITHUB_ACTIONS=true)",
-    )
-    check.add_argument("--output-file", "-o", type=Path, help="write the report to this file")
-    check.add_argument(
-        "--context",
-        action="store_true",
-        help="also lint the missions under the project root that include the given files; "
-        "report findings in the given files and those missions only (pre-commit)",
-    )
-    check.add_argument(
-        "--baseline", type=Path, metavar="FILE", help="report only findings not in this baseline"
-    )
-    check.add_argument(
-        "--write-baseline",
-        type=Path,
-        metavar="FILE",
-        help="record the current findings in FILE (per file and rule) and exit",
-    )
-    check.add_argument("--fix", action="store_true", help="apply the fixes findings offer")
-    check.add_argument(
-        "--diff", action="store_true", help="print the fixes as a unified diff; write nothing"
-    )
-    check.add_argument("--statistics", action="store_true", help="count findings per rule")
-    check.add_argument("--show-settings", action="store_true", help="print the settings and exit")
-    check.add_argument("--exit-zero", action="store_true", help="exit 0 even with findings")
-    check.add_argument("--quiet", "-q", action="store_true", help="print findings only")
-    check.add_argument(
-        "--jobs",
-        "-j",
-        type=_jobs,
-        metavar="N",
-        help="worker processes (default: the CPU count; small inputs use one)",
-    )
-    check.add_argument(
-        "--no-cache",
-        action="store_true",
-        help="neither read nor write the result cache (.moos_lint_cache/ or `cache-dir`)",
-    )
-    check.add_argument("--cache-dir", type=Path, metavar="DIR", help="keep the result cache in DIR")
+    if only in (None, "check"):
+        check = sub.add_parser("check", help="lint files and folders (the default command)")
+        check.add_argument("paths", nargs="*", type=Path, help="files or folders (default: .)")
+        check.add_argument(
+            "--select", action="append", help="rules to enable (codes, prefixes, names, ALL)"
+        )
+        check.add_argument(
+            "--extend-select", action="append", help="rules to enable on top of the selection"
+        )
+        check.add_argument("--ignore", action="append", help="rules to disable")
+        _add_preproc_args(check)
+        check.add_argument("--config", type=Path, help="use this config file instead of searching")
+        check.add_argument(
+            "--cpp-backend",
+            choices=("tree-sitter", "clang"),
+            help="how C++ apps are read: tree-sitter (fast, default) or clang (libclang deep mode)",
+        )
+        check.add_argument(
+            "--compile-commands",
+            type=Path,
+            metavar="PATH",
+            help="compile_commands.json (or its folder) for --cpp-backend clang",
+        )
+        check.add_argument(
+            "--output-format",
+            choices=FORMATS,
+            default=None,
+            help="output format (default: text; github when GITHUB_ACTIONS=true)",
+        )
+        check.add_argument("--output-file", "-o", type=Path, help="write the report to this file")
+        check.add_argument(
+            "--context",
+            action="store_true",
+            help="also lint the missions under the project root that include the given files; "
+            "report findings in the given files and those missions only (pre-commit)",
+        )
+        check.add_argument(
+            "--baseline",
+            type=Path,
+            metavar="FILE",
+            help="report only findings not in this baseline",
+        )
+        check.add_argument(
+            "--write-baseline",
+            type=Path,
+            metavar="FILE",
+            help="record the current findings in FILE (per file and rule) and exit",
+        )
+        check.add_argument("--fix", action="store_true", help="apply the fixes findings offer")
+        check.add_argument(
+            "--diff", action="store_true", help="print the fixes as a unified diff; write nothing"
+        )
+        check.add_argument("--statistics", action="store_true", help="count findings per rule")
+        check.add_argument(
+            "--show-settings", action="store_true", help="print the settings and exit"
+        )
+        check.add_argument("--exit-zero", action="store_true", help="exit 0 even with findings")
+        check.add_argument("--quiet", "-q", action="store_true", help="print findings only")
+        check.add_argument(
+            "--jobs",
+            "-j",
+            type=_jobs,
+            metavar="N",
+            help="worker processes (default: the CPU count; small inputs use one)",
+        )
+        check.add_argument(
+            "--no-cache",
+            action="store_true",
+            help="neither read nor write the result cache (.moos_lint_cache/ or `cache-dir`)",
+        )
+        check.add_argument(
+            "--cache-dir", type=Path, metavar="DIR", help="keep the result cache in DIR"
+        )
 
-    expand = sub.add_parser("expand", help="print a file as nsplug would expand it")
-    expand.add_argument("file", type=Path)
-    _add_preproc_args(expand)
-    expand.add_argument(
-        "--lenient",
-        action="store_true",
-        help="expand the defined macros of a line that also holds undefined ones",
-    )
+    if only in (None, "expand"):
+        expand = sub.add_parser("expand", help="print a file as nsplug would expand it")
+        expand.add_argument("file", type=Path)
+        _add_preproc_args(expand)
+        expand.add_argument(
+            "--lenient",
+            action="store_true",
+            help="expand the defined macros of a line that also holds undefined ones",
+        )
 
-    rule = sub.add_parser("rule", help="print the documentation of a rule")
-    rule.add_argument("rule", metavar="CODE-or-NAME")
+    if only in (None, "rule"):
+        rule = sub.add_parser("rule", help="print the documentation of a rule")
+        rule.add_argument("rule", metavar="CODE-or-NAME")
 
-    rules = sub.add_parser("rules", help="list every rule")
-    rules.add_argument("--output-format", choices=("text", "json"), default="text")
+    if only in (None, "rules"):
+        rules = sub.add_parser("rules", help="list every rule")
+        rules.add_argument("--output-format", choices=("text", "json"), default="text")
 
-    graph = sub.add_parser("graph", help="draw a mission's processes and variables")
-    graph.add_argument("mission", type=Path, help="a .moos mission file")
-    graph.add_argument("--format", choices=("html", "dot", "json"), default="html")
-    graph.add_argument("-o", "--output", type=Path, help="write to FILE (default: stdout)")
-    graph.add_argument(
-        "--all-variables", action="store_true", help="also draw variables no one else reads"
-    )
-    graph.add_argument("--config", type=Path, help="use this config file")
-    graph.add_argument("--define", "-D", action="append", metavar="NAME=VALUE")
+    if only in (None, "graph"):
+        graph = sub.add_parser("graph", help="draw a mission's processes and variables")
+        graph.add_argument("mission", type=Path, help="a .moos mission file")
+        graph.add_argument("--format", choices=("html", "dot", "json"), default="html")
+        graph.add_argument("-o", "--output", type=Path, help="write to FILE (default: stdout)")
+        graph.add_argument(
+            "--all-variables", action="store_true", help="also draw variables no one else reads"
+        )
+        graph.add_argument("--config", type=Path, help="use this config file")
+        graph.add_argument("--define", "-D", action="append", metavar="NAME=VALUE")
 
-    server = sub.add_parser("server", help="run the language server for editors (stdio)")
-    server.add_argument("--stdio", action="store_true", help="talk on stdin/stdout (the default)")
+    if only in (None, "server"):
+        server = sub.add_parser("server", help="run the language server for editors (stdio)")
+        server.add_argument(
+            "--stdio", action="store_true", help="talk on stdin/stdout (the default)"
+        )
+
     return parser
 
 
@@ -189,7 +207,7 @@ def main(argv: list[str] | None = None) -> int:
     commands = {"check", "expand", "rule", "rules", "server", "graph"}
     if not argv or (argv[0] not in commands and argv[0] not in ("-h", "--help", "--version")):
         argv.insert(0, "check")
-    parser = build_parser()
+    parser = build_parser(argv[0] if argv[0] in commands else None)
     args = parser.parse_args(argv)
     try:
         if args.command == "check":
@@ -261,7 +279,6 @@ def _check(args: argparse.Namespace, settings) -> int:
     from pathlib import Path
 
     from moos_lint.context import project_root
-    from moos_lint.diagnostics import Diagnostic, Severity, Span
     from moos_lint.output import render
 
     # A baseline outside any project (no config, no VCS) is relative to its own folder.
@@ -282,6 +299,27 @@ def _check(args: argparse.Namespace, settings) -> int:
 
         cache_dir = os.path.abspath(args.cache_dir) if args.cache_dir else cache_dir_for(settings)
 
+    fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
+    # an unchanged run prints the report it printed before, rendered the same way
+    replay = cache_dir is not None and not args.baseline
+    render_key = repr((fmt, bool(args.statistics), bool(args.quiet), os.getcwd()))
+    if replay:
+        from moos_lint.cache import cached_output
+
+        shown = cached_output(
+            list(args.paths) or [Path(".")],
+            settings,
+            context=args.context,
+            cache_dir=cache_dir,
+            render_key=render_key,
+        )
+        if shown is not None:
+            text, has_findings = shown
+            failed = _emit(args.output_file, text)
+            if failed is not None:
+                return failed
+            return EXIT_FINDINGS if has_findings and not args.exit_zero else EXIT_CLEAN
+
     def lint(cache=None, *, filtered: bool = True):
         if cache_dir is not None and cache is None:
             from moos_lint.cache import cached_lint  # the engine loads only on a cache miss
@@ -299,6 +337,8 @@ def _check(args: argparse.Namespace, settings) -> int:
             result = lint_paths(
                 args.paths, settings, context=args.context, cache=cache, jobs=args.jobs
             )
+        from moos_lint.diagnostics import Diagnostic, Severity, Span
+
         for missing in result.missing:
             result.diagnostics.insert(
                 0,
@@ -331,8 +371,11 @@ def _check(args: argparse.Namespace, settings) -> int:
         if status is not None:
             return status
         result = outcome.result
-    fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
+    if replay and not (args.fix or args.diff):
+        from moos_lint.cache import store_output
+
+        store_output(cache_dir, result, render_key, text, bool(result.diagnostics))
     failed = _emit(args.output_file, text)
     if failed is not None:
         return failed

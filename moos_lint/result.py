@@ -27,3 +27,5 @@ class Result:
     baselined: int = 0  # findings hidden by --baseline
     #: the linted files' expansions and models (engine units), in the order given
     units: list[Any] = field(default_factory=list)
+    #: the result cache entry this result is stored in (see :mod:`moos_lint.cache`)
+    cache_token: str | None = None

@@ -467,3 +467,51 @@ def test_the_main_process_takes_the_cpp_folders_no_worker_started(monkeypatch):
     two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
     assert two == one
     assert here, "the main process left every C++ folder to the workers"
+
+
+def _cli_run(args, cwd):
+    return subprocess.run(
+        [sys.executable, "-m", "moos_lint", *args],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        cwd=cwd,
+    )
+
+
+def test_an_unchanged_run_prints_the_same_report_without_rendering_it(tree, tmp_path):
+    store = str(tmp_path / "cache")
+    (tree / "plug.moos").write_text(PLUG + "}\n")  # a finding, so exit status 1
+    base = ["check", str(tree), "--cache-dir", store]
+    first = _cli_run(base, tree)
+    assert first.returncode == 1 and "R0" in first.stdout
+    code = (
+        "import sys\n"
+        "from moos_lint.cli import main\n"
+        f"status = main({base!r})\n"
+        "print('LOADED', [m for m in sys.modules if m.startswith(('moos_lint.diagnostics', "
+        "'moos_lint.output.text_format', 'moos_lint.engine'))], status)\n"
+    )
+    again = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, cwd=tree
+    )
+    report, _, loaded = again.stdout.rpartition("LOADED ")
+    assert report == first.stdout
+    assert loaded.strip() == "[] 1", loaded  # replayed: nothing rendered, same status
+    # other options, formats and folders are other reports
+    zero = _cli_run([*base, "--exit-zero"], tree)
+    assert zero.returncode == 0 and zero.stdout == first.stdout
+    as_json = _cli_run([*base, "--output-format", "json"], tree)
+    assert json.loads(as_json.stdout) and as_json.returncode == 1
+    elsewhere = _cli_run(base, tmp_path)
+    assert elsewhere.stdout != first.stdout  # paths are shown relative to the working folder
+    # a path that does not exist is reported, replayed or not
+    missing = ["check", str(tree), str(tree / "nope.moos"), "--cache-dir", store]
+    assert "nope.moos" in _cli_run(missing, tree).stdout
+    assert "nope.moos" in _cli_run(missing, tree).stdout
+    # a changed file is linted again, and its report is the fresh one
+    (tree / "plug.moos").write_text(PLUG)
+    changed = _cli_run(base, tree)
+    fresh = _cli_run([*base[:2], "--no-cache"], tree)
+    assert changed.stdout == fresh.stdout != first.stdout
+    assert changed.returncode == fresh.returncode
