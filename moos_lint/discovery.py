@@ -65,7 +65,8 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
     folders: list[str] = []
     for given in paths:
         p = os.path.abspath(given)
-        folders.append(os.path.dirname(p))
+        if not os.path.isdir(p):  # a file given by name: its folder tells whether it exists
+            folders.append(os.path.dirname(p))
         if not os.path.lexists(p):
             missing.append(str(given))
             continue
