@@ -28,6 +28,16 @@ Not seen: a file created outside those folders that only a project-wide
 search finds (the repository's C++ file names for ``unknown-behavior``);
 run once with ``--no-cache`` after such a change.
 
+**Two lighter entries** make an unchanged run cheaper still. The list of
+files discovery found is kept with the modification time of every folder it
+walked (adding, removing or renaming a file changes its folder's), and reused
+while they hold. And the report a cached result was rendered to is kept, named
+by the run entry it came from (a random token written with that entry) and by
+how it was rendered (format, ``--statistics``, ``--quiet``, working folder, the
+paths that do not exist): once the run entry is validated, that text is
+printed again without unpickling the findings. The run entry keeps its header
+(key, token, dependencies) first, so validating it reads no finding.
+
 There is no finer, per-file reuse: findings cross files (a mission joins the
 C++ apps it launches, its behavior files and its sibling missions;
 ``unused-suppression`` needs every finding), so a changed file re-lints the

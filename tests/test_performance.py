@@ -515,3 +515,24 @@ def test_an_unchanged_run_prints_the_same_report_without_rendering_it(tree, tmp_
     fresh = _cli_run([*base[:2], "--no-cache"], tree)
     assert changed.stdout == fresh.stdout != first.stdout
     assert changed.returncode == fresh.returncode
+
+
+def test_the_stored_file_list_ignores_the_folder_around_the_linted_one(tree, tmp_path, monkeypatch):
+    from moos_lint import discovery
+
+    walks: list[int] = []
+    real = discovery.discover
+
+    def counting(*a, **kw):
+        walks.append(1)
+        return real(*a, **kw)
+
+    monkeypatch.setattr(discovery, "discover", counting)
+    store = tmp_path / "cache"
+    _cached(tree, store)
+    (tree.parent / "unrelated.txt").write_text("x")  # the folder that holds the tree changes
+    _cached(tree, store)
+    assert len(walks) == 1
+    (tree / "new.moos").write_text(MISSION)
+    assert str(tree / "new.moos") in _cached(tree, store).files
+    assert len(walks) == 2
