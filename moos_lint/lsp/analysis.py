@@ -29,7 +29,7 @@ cpp_app.PARSE_MEMO_SIZE = 96  # a document and its neighbours (MAX_NEIGHBOURS)
 #: At most this many neighbouring files are linted with a document.
 MAX_NEIGHBOURS = 64
 #: re-linting a document re-expands only the files that changed (see ExpansionStore)
-_EXPANSIONS = ExpansionStore()
+_EXPANSIONS = ExpansionStore(size=2 * MAX_NEIGHBOURS)
 
 
 @dataclass(slots=True)
