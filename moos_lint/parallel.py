@@ -13,7 +13,8 @@ worker processes:
    into apps exactly as a single process does.
 2. **Running the rules.** Once every unit is built, a second pool is forked:
    each worker inherits the whole run (every unit, the cross-unit sets) and
-   runs the rules on the units it is given, largest first. It sends back the
+   runs the rules on the units it is given: a folder at a time (missions there
+   share models), heaviest folders first. It sends back the
    findings of each unit; the main process merges them in unit order, then
    applies suppressions and runs the run-wide rules (``unused-suppression``)
    itself. Caches that rules build lazily on the run (mission models, the app
@@ -155,12 +156,23 @@ def _unit_weight(unit: Any) -> int:
     return n
 
 
+def rule_batches(units: list[Any]) -> list[list[int]]:
+    """The units (by index) a rule worker takes at a time: one folder's.
+
+    Missions of a folder share their sibling missions, fragments and behavior
+    files, whose models a worker then builds once. Heaviest folders first, so
+    that no big folder starts last.
+    """
+    folders: dict[str, list[int]] = {}
+    for i, unit in enumerate(units):
+        folders.setdefault(os.path.dirname(unit.path), []).append(i)
+    return sorted(folders.values(), key=lambda b: (-sum(_unit_weight(units[i]) for i in b), b[0]))
+
+
 def run_rules_parallel(run: Any, jobs: int) -> list[tuple[list[Any], int]]:
     """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order."""
     global _RUN
-    order = sorted(range(len(run.units)), key=lambda i: -_unit_weight(run.units[i]))
-    # small batches keep the inter-process chatter low and the load balanced
-    batches = [order[i : i + 4] for i in range(0, len(order), 4)]
+    batches = rule_batches(run.units)
     results: list[tuple[list[Any], int]] = [([], 0)] * len(run.units)
     done: set[int] = set()
     _RUN = run  # before the first submit, which forks the workers

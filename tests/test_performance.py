@@ -536,3 +536,14 @@ def test_the_stored_file_list_ignores_the_folder_around_the_linted_one(tree, tmp
     (tree / "new.moos").write_text(MISSION)
     assert str(tree / "new.moos") in _cached(tree, store).files
     assert len(walks) == 2
+
+
+def test_rule_workers_take_a_folder_at_a_time():
+    settings = resolve_settings([FIXTURES], None)
+    result = engine.lint_paths([FIXTURES / "rules"], settings)
+    units = result.units
+    batches = parallel.rule_batches(units)
+    assert sorted(i for b in batches for i in b) == list(range(len(units)))
+    for batch in batches:
+        assert len({os.path.dirname(units[i].path) for i in batch}) == 1
+    assert len(batches) == len({os.path.dirname(u.path) for u in units})
