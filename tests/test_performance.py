@@ -97,7 +97,9 @@ def test_the_language_server_reparses_only_changed_cpp(tmp_path, monkeypatch):
     parsed: list[bytes] = []
     real = parse.Backend.parse
     monkeypatch.setattr(
-        parse.Backend, "parse", lambda self, data: parsed.append(data) or real(self, data)
+        parse.Backend,
+        "parse",
+        lambda self, data, old_tree=None: parsed.append(data) or real(self, data, old_tree),
     )
     files = [str(folder / "A.cpp"), str(folder / "B.cpp")]
     first = _json(engine.lint_files(files, _settings(tmp_path)))
@@ -547,3 +549,37 @@ def test_rule_workers_take_a_folder_at_a_time():
     for batch in batches:
         assert len({os.path.dirname(units[i].path) for i in batch}) == 1
     assert len(batches) == len({os.path.dirname(u.path) for u in units})
+
+
+def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch):
+    from moos_lint.cpp import app as cpp_app
+    from moos_lint.cpp.parse import backend
+
+    be = backend()
+    monkeypatch.setattr(cpp_app, "PARSE_MEMO_SIZE", 8)
+    monkeypatch.setattr(cpp_app, "_parse_memo", type(cpp_app._parse_memo)())
+    monkeypatch.setattr(cpp_app, "_last_tree", type(cpp_app._last_tree)())
+    incremental: list[bool] = []
+    real = be.parse
+
+    def spy(data, old_tree=None):
+        incremental.append(old_tree is not None)
+        return real(data, old_tree)
+
+    monkeypatch.setattr(be, "parse", spy)
+    path = str(FIXTURES / "rules" / "yaw-heading-sign" / "fire" / "sim" / "Sim.cpp")
+    text = Path(path).read_bytes()
+    cut = text.index(b"\n", len(text) // 2) + 1
+    versions = [
+        text,
+        text[:cut] + b"// an edit\n" + text[cut:],  # a valid edit
+        text[:cut] + b"void f( {\n" + text[cut:],  # a broken one: parsed afresh
+        text[:cut] + b"// fixed\n" + text[cut:],  # and valid again
+    ]
+    for data in versions:
+        tree, matches = cpp_app._parse(be, path, data)
+        fresh = real(data)
+        assert str(tree.root_node) == str(fresh.root_node)
+        assert len(matches) == len(be.matches(fresh))
+    # the first parse is fresh; each edit starts incrementally; the broken text is redone
+    assert incremental == [False, True, True, False, True]

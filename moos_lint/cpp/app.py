@@ -23,11 +23,27 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
     out: dict[str, SourceFile] = {}
     for path in paths:
         data = read_bytes(path)  # type: ignore[arg-type]
-        if isinstance(data, bytes) and mentions_moos(data):
-            src = decode(data, path)  # type: ignore[arg-type]
-            if isinstance(src, SourceFile):
-                out[path] = src
+        if not isinstance(data, bytes):
+            continue
+        kept = _read_memo.get(path) if PARSE_MEMO_SIZE else None
+        if kept is not None and kept[0] == data:
+            src = kept[1]  # the same bytes as last time: the same verdict and text
+        else:
+            src = None
+            if mentions_moos(data):
+                decoded = decode(data, path)  # type: ignore[arg-type]
+                if isinstance(decoded, SourceFile):
+                    src = decoded
+            if PARSE_MEMO_SIZE:
+                _read_memo[path] = (data, src)
+        if src is not None:
+            out[path] = src
     return out
+
+
+#: the language server's C++ files, by their bytes: a re-lint prefilters and decodes only
+#: the files that changed
+_read_memo: dict[str, tuple[bytes, SourceFile | None]] = {}
 
 
 def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
@@ -49,9 +65,14 @@ def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
 
 #: How many parsed files (tree and query matches, by path and bytes) a process keeps. The
 #: language server turns it on: re-linting one file then reparses only the files that
-#: changed, not every neighbour. A command-line run parses each file once and keeps none.
+#: changed, not every neighbour, and an edited file incrementally from its last tree.
+#: A command-line run parses each file once and keeps none.
 PARSE_MEMO_SIZE = 0
 _parse_memo: OrderedDict[tuple[str, bytes], tuple[Any, Any]] = OrderedDict()
+
+
+#: the last tree of each path (language server): an edited file is parsed incrementally
+_last_tree: OrderedDict[str, tuple[bytes, Any]] = OrderedDict()
 
 
 def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
@@ -60,13 +81,60 @@ def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
     if hit is not None:
         _parse_memo.move_to_end(key)
         return hit
-    tree = be.parse(data)
+    tree = None
+    if PARSE_MEMO_SIZE and path in _last_tree:
+        old_data, old_tree = _last_tree[path]
+        tree = be.parse(data, edited(old_tree, old_data, data))
+        # Error recovery may shape a broken text differently from a parse of the whole
+        # text; a text without errors parses to the same tree either way.
+        if tree is not None and tree.root_node.has_error:
+            tree = None
+    if tree is None:
+        tree = be.parse(data)
     hit = (tree, be.matches(tree))
     if PARSE_MEMO_SIZE:
         _parse_memo[key] = hit
         while len(_parse_memo) > PARSE_MEMO_SIZE:
             _parse_memo.popitem(last=False)
+        _last_tree[path] = (data, tree)
+        _last_tree.move_to_end(path)
+        while len(_last_tree) > PARSE_MEMO_SIZE:
+            _last_tree.popitem(last=False)
     return hit
+
+
+def _point(data: bytes, pos: int) -> tuple[int, int]:
+    return data.count(b"\n", 0, pos), pos - (data.rfind(b"\n", 0, pos) + 1)
+
+
+def _common(same: Any, limit: int) -> int:
+    """The largest ``k <= limit`` with ``same(k)`` (``same`` holds up to some length)."""
+    lo, hi = 0, limit
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        if same(mid):
+            lo = mid
+        else:
+            hi = mid - 1
+    return lo
+
+
+def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
+    """A copy of ``old_tree`` told what changed from ``old`` to ``new`` (one edited range:
+    the text between their common start and common end), for an incremental parse."""
+    limit = min(len(old), len(new))
+    start = _common(lambda k: old[:k] == new[:k], limit)
+    end = _common(lambda k: old[len(old) - k :] == new[len(new) - k :], limit - start)
+    tree = old_tree.copy()
+    tree.edit(
+        start_byte=start,
+        old_end_byte=len(old) - end,
+        new_end_byte=len(new) - end,
+        start_point=_point(old, start),
+        old_end_point=_point(old, len(old) - end),
+        new_end_point=_point(new, len(new) - end),
+    )
+    return tree
 
 
 def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:

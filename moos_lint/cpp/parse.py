@@ -50,7 +50,9 @@ class Backend:
         self.parser = ts.Parser(self.language)
         self.query = ts.Query(self.language, QUERY)
 
-    def parse(self, data: bytes) -> Any:
+    def parse(self, data: bytes, old_tree: Any = None) -> Any:
+        if old_tree is not None:
+            return self.parser.parse(data, old_tree)
         return self.parser.parse(data)
 
     def matches(self, tree: Any) -> list[tuple[int, dict[str, list[Any]]]]:
