@@ -7,6 +7,7 @@ Heavy modules are imported inside the commands that need them, so that
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 
@@ -73,14 +74,45 @@ def _add_preproc_args(p: argparse.ArgumentParser) -> None:
     )
 
 
+@functools.lru_cache(maxsize=1)
+def _columns() -> int:
+    """The terminal's width, as ``shutil.get_terminal_size`` gives it (without its import)."""
+    try:
+        columns = int(os.environ["COLUMNS"])
+    except (KeyError, ValueError):
+        columns = 0
+    if columns <= 0:
+        try:
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns
+        except (AttributeError, ValueError, OSError):
+            columns = 0
+    return columns or 80
+
+
+@functools.lru_cache(maxsize=1)
+def _formatter_class():
+    """argparse's help formatter, measuring the terminal once: argparse makes one for
+    every argument it adds."""
+    import argparse
+
+    class Formatter(argparse.HelpFormatter):
+        def __init__(self, prog, indent_increment=2, max_help_position=24, width=None):
+            width = _columns() - 2 if width is None else width
+            super().__init__(prog, indent_increment, max_help_position, width)
+
+    return Formatter
+
+
 def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     """The command-line parser; ``only``: build just that command's arguments (a parser
     costs time to build, and a run needs one)."""
     import argparse
     from pathlib import Path
 
+    formatter = _formatter_class()
     parser = argparse.ArgumentParser(
         prog="moos-lint",
+        formatter_class=formatter,
         description="Lint MOOS and MOOS-IvP mission (.moos) and behavior (.bhv) files "
         "and the C++ of MOOS apps.",
     )
@@ -88,7 +120,9 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
     if only in (None, "check"):
-        check = sub.add_parser("check", help="lint files and folders (the default command)")
+        check = sub.add_parser(
+            "check", help="lint files and folders (the default command)", formatter_class=formatter
+        )
         check.add_argument("paths", nargs="*", type=Path, help="files or folders (default: .)")
         check.add_argument(
             "--select", action="append", help="rules to enable (codes, prefixes, names, ALL)"
@@ -162,7 +196,9 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         )
 
     if only in (None, "expand"):
-        expand = sub.add_parser("expand", help="print a file as nsplug would expand it")
+        expand = sub.add_parser(
+            "expand", help="print a file as nsplug would expand it", formatter_class=formatter
+        )
         expand.add_argument("file", type=Path)
         _add_preproc_args(expand)
         expand.add_argument(
@@ -172,15 +208,19 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         )
 
     if only in (None, "rule"):
-        rule = sub.add_parser("rule", help="print the documentation of a rule")
+        rule = sub.add_parser(
+            "rule", help="print the documentation of a rule", formatter_class=formatter
+        )
         rule.add_argument("rule", metavar="CODE-or-NAME")
 
     if only in (None, "rules"):
-        rules = sub.add_parser("rules", help="list every rule")
+        rules = sub.add_parser("rules", help="list every rule", formatter_class=formatter)
         rules.add_argument("--output-format", choices=("text", "json"), default="text")
 
     if only in (None, "graph"):
-        graph = sub.add_parser("graph", help="draw a mission's processes and variables")
+        graph = sub.add_parser(
+            "graph", help="draw a mission's processes and variables", formatter_class=formatter
+        )
         graph.add_argument("mission", type=Path, help="a .moos mission file")
         graph.add_argument("--format", choices=("html", "dot", "json"), default="html")
         graph.add_argument("-o", "--output", type=Path, help="write to FILE (default: stdout)")
@@ -191,7 +231,9 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         graph.add_argument("--define", "-D", action="append", metavar="NAME=VALUE")
 
     if only in (None, "server"):
-        server = sub.add_parser("server", help="run the language server for editors (stdio)")
+        server = sub.add_parser(
+            "server", help="run the language server for editors (stdio)", formatter_class=formatter
+        )
         server.add_argument(
             "--stdio", action="store_true", help="talk on stdin/stdout (the default)"
         )

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 import sys
-from dataclasses import dataclass, field
 from pathlib import Path
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
@@ -54,25 +53,56 @@ class ConfigError(Exception):
     """A configuration problem; the CLI exits with status 2."""
 
 
-@dataclass
 class Settings:
-    select: list[str] | None = None
-    extend_select: list[str] = field(default_factory=list)
-    ignore: list[str] = field(default_factory=list)
-    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
-    exclude: list[str] = field(default_factory=list)
-    defines: dict[str, str] = field(default_factory=dict)
-    include_paths: list[str] = field(default_factory=list)
-    rule_options: dict[str, dict[str, Any]] = field(default_factory=dict)
-    config_path: str | None = None
-    root: str = "."
-    #: how C++ is read: "tree-sitter" (fast) or "clang" (libclang deep mode)
-    cpp_backend: str = "tree-sitter"
-    compile_commands: str | None = None  # a compile_commands.json, or its folder
-    #: app/behavior catalogue files (JSON or TOML) for apps whose C++ is elsewhere
-    catalogues: list[str] = field(default_factory=list)
-    #: where the result cache lives (None: ``.moos_lint_cache`` in the root)
-    cache_dir: str | None = None
+    """What a run lints with: the selection, the options, nsplug defines, paths.
+
+    A plain class (not a dataclass): loading the settings is on the path of
+    every run, the fastest ones (a cached report) included.
+    """
+
+    def __init__(
+        self,
+        select: list[str] | None = None,
+        extend_select: list[str] | None = None,
+        ignore: list[str] | None = None,
+        per_file_ignores: dict[str, list[str]] | None = None,
+        exclude: list[str] | None = None,
+        defines: dict[str, str] | None = None,
+        include_paths: list[str] | None = None,
+        rule_options: dict[str, dict[str, Any]] | None = None,
+        config_path: str | None = None,
+        root: str = ".",
+        cpp_backend: str = "tree-sitter",
+        compile_commands: str | None = None,
+        catalogues: list[str] | None = None,
+        cache_dir: str | None = None,
+    ) -> None:
+        self.select = select
+        self.extend_select = [] if extend_select is None else extend_select
+        self.ignore = [] if ignore is None else ignore
+        self.per_file_ignores = {} if per_file_ignores is None else per_file_ignores
+        self.exclude = [] if exclude is None else exclude
+        self.defines = {} if defines is None else defines
+        self.include_paths = [] if include_paths is None else include_paths
+        self.rule_options = {} if rule_options is None else rule_options
+        self.config_path = config_path
+        self.root = root
+        #: how C++ is read: "tree-sitter" (fast) or "clang" (libclang deep mode)
+        self.cpp_backend = cpp_backend
+        self.compile_commands = compile_commands  # a compile_commands.json, or its folder
+        #: app/behavior catalogue files (JSON or TOML) for apps whose C++ is elsewhere
+        self.catalogues = [] if catalogues is None else catalogues
+        #: where the result cache lives (None: ``.moos_lint_cache`` in the root)
+        self.cache_dir = cache_dir
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items())
+        return f"Settings({fields})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Settings) and vars(self) == vars(other)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, as the dataclass was
 
     def options_for(self, name: str) -> dict[str, Any]:
         """A rule's options: its defaults, overridden by the config."""

@@ -6,7 +6,6 @@ import fnmatch
 import functools
 import os
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from moos_lint.config import DEFAULT_EXCLUDE
@@ -29,12 +28,18 @@ def kind_of(path: str) -> str | None:
     return None
 
 
-@dataclass(slots=True)
 class Discovered:
-    files: list[str]  # absolute paths, sorted
-    missing: list[str]  # paths given on the command line that do not exist
-    #: the folders whose listing decided ``files`` (walked, or holding a path given)
-    folders: list[str] = field(default_factory=list)
+    """The files to lint (absolute paths, sorted), the paths given that do not exist, and
+    the folders whose listing decided the files (walked, or holding a path given)."""
+
+    __slots__ = ("files", "folders", "missing")
+
+    def __init__(
+        self, files: list[str], missing: list[str], folders: list[str] | None = None
+    ) -> None:
+        self.files = files
+        self.missing = missing
+        self.folders = [] if folders is None else folders
 
 
 def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
