@@ -31,7 +31,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from moos_lint.diagnostics import Edit, Fix, Span
-from moos_lint.nsplug import Line
+from moos_lint.nsplug import Line, derived
 from moos_lint.parsers.bhv import split_commas
 
 #: the last word of a field name -> the kind of angle it holds
@@ -208,13 +208,7 @@ def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[Angle
 
 def angle_values(ctx) -> Iterator[AngleValue]:
     """Every literal angle value in the unit (``.moos`` or ``.bhv``); found once per unit."""
-    memo = getattr(ctx.expansion, "models", None)
-    found = memo.get("angle_values") if memo is not None else None
-    if found is None:
-        found = tuple(_angle_values(ctx))
-        if memo is not None:
-            memo["angle_values"] = found
-    return iter(found)
+    return iter(derived(ctx.expansion, "angle_values", lambda: tuple(_angle_values(ctx))))
 
 
 def _angle_values(ctx) -> Iterator[AngleValue]:

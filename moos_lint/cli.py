@@ -414,7 +414,7 @@ def _check(args: argparse.Namespace, settings) -> int:
             return status
         result = outcome.result
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
-    if replay and not (args.fix or args.diff):
+    if replay:  # (no cache with --fix or --diff)
         from moos_lint.cache import store_output
 
         store_output(cache_dir, result, render_key, text, bool(result.diagnostics))

@@ -118,13 +118,18 @@ class Expansion:
     models: dict[str, Any] = field(default_factory=dict, repr=False, compare=False)
 
 
+def derived(exp: Expansion, key: str, compute: Callable[[], Any]) -> Any:
+    """``compute()``, once per expansion and ``key``: what is read from a file's lines
+    (its model, its variables, ...) is only read once built."""
+    value = exp.models.get(key)
+    if value is None:
+        value = exp.models[key] = compute()
+    return value
+
+
 def parsed(exp: Expansion, parse: Callable[[Expansion], Any]) -> Any:
-    """``parse(exp)``, once per expansion: models are only read once built."""
-    key = parse.__name__
-    model = exp.models.get(key)
-    if model is None:
-        model = exp.models[key] = parse(exp)
-    return model
+    """``parse(exp)``, once per expansion."""
+    return derived(exp, parse.__name__, lambda: parse(exp))
 
 
 @dataclass(slots=True)

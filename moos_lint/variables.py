@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 from moos_lint.diagnostics import Span
 from moos_lint.model import BehaviorFile, Block, MoosFile, has_macro
-from moos_lint.nsplug import Line
+from moos_lint.nsplug import Line, derived
 
 PUBLISH = "publish"
 SUBSCRIBE = "subscribe"
@@ -570,13 +570,7 @@ BHV_PARAMS: dict[str, Syntax] = {
 
 def bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
     """Every variable a ``.bhv`` file names (worked out once per parsed file)."""
-    memo = getattr(bf.expansion, "models", None)
-    refs = memo.get("bhv_variables") if memo is not None else None
-    if refs is None:
-        refs = tuple(_bhv_variables(bf))
-        if memo is not None:
-            memo["bhv_variables"] = refs
-    return iter(refs)
+    return iter(derived(bf.expansion, "bhv_variables", lambda: tuple(_bhv_variables(bf))))
 
 
 def _bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
