@@ -28,7 +28,7 @@ Not seen: a file created outside those folders that only a project-wide
 search finds (the repository's C++ file names for ``unknown-behavior``);
 run once with ``--no-cache`` after such a change.
 
-**Two lighter entries** make an unchanged run cheaper still. The list of
+**Lighter entries** make an unchanged run cheaper still. The list of
 files discovery found is kept with the modification time of every folder it
 walked (adding, removing or renaming a file changes its folder's), and reused
 while they hold. And the report a cached result was rendered to is kept, named
@@ -36,7 +36,9 @@ by the run entry it came from (a random token written with that entry) and by
 how it was rendered (format, ``--statistics``, ``--quiet``, working folder, the
 paths that do not exist): once the run entry is validated, that text is
 printed again without unpickling the findings. The run entry keeps its header
-(key, token, dependencies) first, so validating it reads no finding.
+(key, token, dependencies) first, so validating it reads no finding. Last,
+each report printed is kept as a replay entry (:mod:`moos_lint.replay`), which
+the next identical command line checks and prints before argparse loads.
 
 There is no finer, per-file reuse: findings cross files (a mission joins the
 C++ apps it launches, its behavior files and its sibling missions;
@@ -61,12 +63,12 @@ import pickle
 from pathlib import Path
 
 from moos_lint import __version__
+from moos_lint.markers import CACHE_DIR
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
     from typing import Any
 
-CACHE_DIR = ".moos_lint_cache"
 ENV_VAR = "MOOS_LINT_CACHE_DIR"
 #: bump when the entry layout changes
 FORMAT = 2
@@ -175,26 +177,40 @@ def _dependencies(result: Any, settings: Any, read: set[str], probed: set[str]) 
     return {"files": deps, "dirs": {d: _dir_mtime(d) for d in sorted(dirs)}}
 
 
-def _valid(entry: dict) -> bool:
+def _valid(entry: dict) -> dict | None:
+    """The (mtime, size) each file of a valid entry has now (a touched file whose content
+    is the same keeps the entry valid), or None when the entry no longer holds."""
     deps = entry["deps"]
     for d, mtime in deps["dirs"].items():
         if _dir_mtime(d) != mtime:
-            return False
+            return None
+    seen = {}
     for path, (st, digest) in deps["files"].items():
         now = _stat(path)
-        if now == st:
-            continue
-        if _digest(path) != digest:
-            return False
-    return True
+        if now != st and _digest(path) != digest:
+            return None
+        seen[path] = now
+    return seen
 
 
 def _valid_header(fh: Any, key: str) -> dict | None:
-    """The entry's header (key, token, dependencies) when it is for ``key`` and still valid."""
+    """The entry's header (key, token, dependencies) when it is for ``key`` and still
+    valid; ``watch`` holds what validated it (see :func:`_watch`)."""
     header = pickle.load(fh)
-    if not isinstance(header, dict) or header.get("key") != key or not _valid(header):
+    if not isinstance(header, dict) or header.get("key") != key:
         return None
+    seen = _valid(header)
+    if seen is None:
+        return None
+    header["watch"] = {"files": seen, "dirs": dict(header["deps"]["dirs"])}
     return header
+
+
+def _watch(header: dict, folders: dict[str, int | None]) -> dict:
+    """What a result depends on, in stat terms: each file's (mtime, size) and each
+    folder's mtime (the walked folders and the run entry's). :mod:`moos_lint.replay`
+    checks these before anything else loads."""
+    return {"files": header["watch"]["files"], "dirs": {**header["watch"]["dirs"], **folders}}
 
 
 def load(folder: str, key: str) -> Any | None:
@@ -207,6 +223,7 @@ def load(folder: str, key: str) -> Any | None:
                 return None
             result = pickle.load(fh)
         result.cache_token = header["token"]
+        result.cache_watch = header["watch"]
         return result
     except Exception:  # a missing, partial or corrupt entry is a cache miss
         return None
@@ -235,12 +252,17 @@ def store(
         if not os.path.exists(ignore):
             _atomic_write(folder, ignore, b"# created by moos-lint\n*\n")
         token = os.urandom(12).hex()  # names this very entry (outputs refer to it)
-        header = {"key": key, "token": token, "deps": _dependencies(result, settings, read, probed)}
+        deps = _dependencies(result, settings, read, probed)
+        header = {"key": key, "token": token, "deps": deps}
         # the header first: a run that only validates the entry never unpickles the findings
         data = pickle.dumps(header, protocol=pickle.HIGHEST_PROTOCOL)
         data += pickle.dumps(slim, protocol=pickle.HIGHEST_PROTOCOL)
         _atomic_write(folder, os.path.join(folder, f"run-{key}.pickle"), data)
         result.cache_token = token
+        result.cache_watch = {
+            "files": {p: st for p, (st, _digest) in deps["files"].items()},
+            "dirs": dict(deps["dirs"]),
+        }
         _prune(folder)
     except Exception:
         return
@@ -267,14 +289,15 @@ def store_output(folder: str, result: Any, render_key: str, text: str, has_findi
 
 def cached_output(
     paths: list[Path], settings: Any, *, context: bool, cache_dir: str, render_key: str
-) -> tuple[str, bool] | None:
-    """The report an unchanged run printed, rendered the same way: (text, has findings).
+) -> tuple[str, bool, dict] | None:
+    """The report an unchanged run printed, rendered the same way: (text, has findings,
+    what it depends on (see :func:`_watch`)).
 
     The run's entry is validated as :func:`cached_lint` does; the findings are
     never unpickled, nor is the report rendered again.
     """
     try:
-        found = cached_discover(paths, settings, cache_dir)
+        found, folders = _discover(paths, settings, cache_dir)
         key = run_key(settings, paths, found.files, context)
         with open(os.path.join(cache_dir, f"run-{key}.pickle"), "rb") as fh:
             header = _valid_header(fh, key)
@@ -284,7 +307,7 @@ def cached_output(
             entry = pickle.load(fh)
         if not isinstance(entry, dict) or entry.get("render_key") != render_key:
             return None
-        return entry["text"], bool(entry["has_findings"])
+        return entry["text"], bool(entry["has_findings"]), _watch(header, folders)
     except Exception:  # no entry, a changed run, or a corrupt file: render afresh
         return None
 
@@ -295,7 +318,7 @@ def _prune(folder: str) -> None:
     kinds: dict[str, list[tuple[int, str]]] = {}
     for name in os.listdir(folder):
         kind = name.split("-", 1)[0]
-        if kind in ("run", "files", "out") and name.endswith(".pickle"):
+        if kind in ("run", "files", "out", "replay") and name.endswith((".pickle", ".marshal")):
             with contextlib.suppress(OSError):
                 mtime = os.stat(os.path.join(folder, name)).st_mtime_ns
                 kinds.setdefault(kind, []).append((mtime, name))
@@ -326,6 +349,11 @@ def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
     time, so the stored list holds while every walked folder (and the folder of
     every path given) keeps its own.
     """
+    return _discover(paths, settings, cache_dir)[0]
+
+
+def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, dict]:
+    """:func:`cached_discover`, and the modification time of each folder it depends on."""
     from moos_lint.discovery import Discovered, discover
 
     data = json.dumps(
@@ -343,7 +371,8 @@ def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
         with open(path, "rb") as fh:
             entry = pickle.load(fh)
         if entry["key"] == key and all(_dir_mtime(d) == m for d, m in entry["folders"].items()):
-            return Discovered(list(entry["files"]), list(entry["missing"]), list(entry["folders"]))
+            found = Discovered(list(entry["files"]), list(entry["missing"]), list(entry["folders"]))
+            return found, dict(entry["folders"])
     except Exception:  # missing, partial or corrupt: walk the folders
         pass
     with contextlib.suppress(OSError):  # first: creating it changes its parent's mtime
@@ -354,18 +383,19 @@ def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
         entry = {"key": key, "folders": folders, "files": found.files, "missing": found.missing}
         with contextlib.suppress(Exception):
             _atomic_write(cache_dir, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
-    return found
+    return found, folders
 
 
 def cached_lint(
     paths: list[Path], settings: Any, *, context: bool, jobs: int | None, cache_dir: str
 ) -> Any:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
-    found = cached_discover(paths, settings, cache_dir)
+    found, folders = _discover(paths, settings, cache_dir)
     key = run_key(settings, paths, found.files, context)
     hit = load(cache_dir, key)
     if hit is not None:
         hit.missing = list(found.missing)
+        hit.cache_watch = _watch({"watch": hit.cache_watch}, folders)
         return hit
     from moos_lint.engine import lint_paths  # the parsers and rules: only on a miss
     from moos_lint.nsplug import FileCache
@@ -374,6 +404,8 @@ def cached_lint(
     result = lint_paths(paths, settings, context=context, cache=reader, jobs=jobs)
     if not result.internal_errors:  # a crash is never replayed from the cache
         store(cache_dir, key, result, settings, reader.paths(), reader.probed)
+        if result.cache_watch is not None:
+            result.cache_watch = _watch({"watch": result.cache_watch}, folders)
     return result
 
 

@@ -7,12 +7,10 @@ Heavy modules are imported inside the commands that need them, so that
 
 from __future__ import annotations
 
-import functools
 import os
 import sys
 
 from moos_lint import __version__
-from moos_lint.output import FORMATS
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 
@@ -74,7 +72,6 @@ def _add_preproc_args(p: argparse.ArgumentParser) -> None:
     )
 
 
-@functools.lru_cache(maxsize=1)
 def _columns() -> int:
     """The terminal's width, as ``shutil.get_terminal_size`` gives it (without its import)."""
     try:
@@ -89,15 +86,16 @@ def _columns() -> int:
     return columns or 80
 
 
-@functools.lru_cache(maxsize=1)
 def _formatter_class():
     """argparse's help formatter, measuring the terminal once: argparse makes one for
     every argument it adds."""
     import argparse
 
+    columns = _columns() - 2
+
     class Formatter(argparse.HelpFormatter):
         def __init__(self, prog, indent_increment=2, max_help_position=24, width=None):
-            width = _columns() - 2 if width is None else width
+            width = columns if width is None else width
             super().__init__(prog, indent_increment, max_help_position, width)
 
     return Formatter
@@ -108,6 +106,8 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     costs time to build, and a run needs one)."""
     import argparse
     from pathlib import Path
+
+    from moos_lint.output import FORMATS
 
     formatter = _formatter_class()
     parser = argparse.ArgumentParser(
@@ -247,10 +247,18 @@ def main(argv: list[str] | None = None) -> int:
         print(f"moos-lint {__version__}")
         return EXIT_CLEAN
     commands = {"check", "expand", "rule", "rules", "server", "graph"}
+    given = list(argv)
+    if not argv or argv[0] not in commands - {"check"}:
+        from moos_lint.replay import replay  # an unchanged run: its report, before argparse
+
+        status = replay(given)
+        if status is not None:
+            return status
     if not argv or (argv[0] not in commands and argv[0] not in ("-h", "--help", "--version")):
         argv.insert(0, "check")
     parser = build_parser(argv[0] if argv[0] in commands else None)
     args = parser.parse_args(argv)
+    args.argv = given
     try:
         if args.command == "check":
             return cmd_check(args)
@@ -356,11 +364,13 @@ def _check(args: argparse.Namespace, settings) -> int:
             render_key=render_key,
         )
         if shown is not None:
-            text, has_findings = shown
+            text, has_findings, watch = shown
             failed = _emit(args.output_file, text)
             if failed is not None:
                 return failed
-            return EXIT_FINDINGS if has_findings and not args.exit_zero else EXIT_CLEAN
+            status = EXIT_FINDINGS if has_findings and not args.exit_zero else EXIT_CLEAN
+            _remember(args, cache_dir, watch, text, status)
+            return status
 
     def lint(cache=None, *, filtered: bool = True):
         if cache_dir is not None and cache is None:
@@ -427,9 +437,22 @@ def _check(args: argparse.Namespace, settings) -> int:
             file=sys.stderr,
         )
         return EXIT_ERROR
-    if result.diagnostics and not args.exit_zero:
-        return EXIT_FINDINGS
-    return EXIT_CLEAN
+    status = EXIT_FINDINGS if result.diagnostics and not args.exit_zero else EXIT_CLEAN
+    if replay and result.cache_watch is not None:
+        _remember(args, cache_dir, result.cache_watch, text, status)
+    return status
+
+
+def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, status: int):
+    """Keep a cached run's report for the same command line (:mod:`moos_lint.replay`);
+    a report written to a file is not kept."""
+    if args.output_file is not None or getattr(args, "argv", None) is None:
+        return
+    from moos_lint.replay import remember
+
+    paths = [str(p) for p in args.paths]
+    config = str(args.config) if args.config else None
+    remember(cache_dir, args.argv, paths, config, watch, text, status)
 
 
 def _emit(path: Path | None, text: str) -> int | None:

@@ -11,6 +11,8 @@ import os
 import sys
 from pathlib import Path
 
+from moos_lint.markers import CONFIG_FILES
+
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
     from typing import Any
@@ -25,7 +27,6 @@ def _toml():
     return tomllib
 
 
-CONFIG_FILES = (".moos-lint.toml", "moos-lint.toml", "pyproject.toml")
 LIST_KEYS = ("select", "ignore", "extend-select", "exclude", "include-paths")
 KNOWN_KEYS = {
     *LIST_KEYS,

@@ -30,13 +30,14 @@ import re
 from collections.abc import Iterable
 from pathlib import Path
 
+from moos_lint.markers import VCS_MARKERS
+
 TYPE_CHECKING = False  # typing itself is not imported at run time
 
 if TYPE_CHECKING:  # the parsers are imported by the functions that read missions
     from moos_lint.config import Settings
     from moos_lint.nsplug import FileCache
 
-VCS_MARKERS = (".git", ".hg", ".svn")
 _MACRO = re.compile(r"[$%]\([^)]*\)")
 
 

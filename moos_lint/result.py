@@ -29,3 +29,5 @@ class Result:
     units: list[Any] = field(default_factory=list)
     #: the result cache entry this result is stored in (see :mod:`moos_lint.cache`)
     cache_token: str | None = None
+    #: what the cached result depends on, in stat terms (see :mod:`moos_lint.replay`)
+    cache_watch: dict | None = None

@@ -1,0 +1,196 @@
+"""The replay of an unchanged run (:mod:`moos_lint.replay`): light, and never stale.
+
+A second identical ``moos-lint check`` prints the first one's report before
+argparse loads; anything the report depends on (a linted or included file, a
+new file, a config file, the environment, the working folder, moos-lint's own
+code) sends the run back to the normal path, which prints the fresh report.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from moos_lint import replay
+from moos_lint.cli import main
+from tests.test_performance import BEHAVIORS, MISSION, PLUG
+
+LIGHT = ("argparse", "pathlib", "pickle", "hashlib", "json", "moos_lint.cache", "moos_lint.config")
+
+
+@pytest.fixture
+def tree(tmp_path, monkeypatch):
+    root = tmp_path / "tree"
+    root.mkdir()
+    (root / "a.moos").write_text(MISSION)
+    (root / "plug.moos").write_text(PLUG + "}\n")  # a stray brace: a finding
+    (root / "shared.bhv").write_text(BEHAVIORS)
+    monkeypatch.delenv("MOOS_LINT_CACHE_DIR", raising=False)
+    monkeypatch.delenv("GITHUB_ACTIONS", raising=False)
+    monkeypatch.chdir(root)
+    return root
+
+
+def _run(argv: list[str], capsys) -> tuple[int, str]:
+    status = main(list(argv))
+    return status, capsys.readouterr().out
+
+
+def _replayed(argv: list[str], capsys) -> tuple[int, str] | None:
+    """What the replay alone prints for ``argv`` (None: it leaves the run to the normal path)."""
+    status = replay.replay(list(argv))
+    out = capsys.readouterr().out
+    if status is None:
+        assert out == ""  # a miss prints nothing
+        return None
+    return status, out
+
+
+def _fresh(argv: list[str], capsys) -> tuple[int, str]:
+    return _run([*argv, "--no-cache"], capsys)
+
+
+def test_an_unchanged_run_is_replayed_before_argparse_loads(tree):
+    code = (
+        "import sys\n"
+        "before = set(sys.modules)\n"  # (site hooks may import some)
+        "from moos_lint.cli import main\n"
+        "status = main(['check', '.'])\n"
+        "new = set(sys.modules) - before\n"
+        f"print('LOADED', sorted(m for m in new if m.startswith({LIGHT!r})), status)\n"
+    )
+
+    def run():
+        out = subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, timeout=120, cwd=tree
+        )
+        assert out.returncode == 0, out.stderr
+        return out.stdout.rpartition("LOADED ")
+
+    report, _, loaded = run()
+    assert "argparse" in loaded and loaded.strip().endswith(" 1")  # the first run lints
+    again, _, loaded = run()
+    assert loaded.strip() == "[] 1", loaded
+    assert again == report and "R0" in report
+    assert list((tree / ".moos_lint_cache").glob("replay-*.marshal"))
+
+
+def test_the_replay_prints_what_the_normal_run_prints(tree, capsys):
+    for argv in (
+        ["check", "."],
+        ["."],
+        [],
+        ["check", ".", "--output-format", "json"],
+        ["check", ".", "--statistics", "--exit-zero"],
+        ["check", "a.moos", "-q"],
+    ):
+        first = _run(argv, capsys)
+        assert _replayed(argv, capsys) == first == _fresh(argv, capsys), argv
+
+
+@pytest.mark.parametrize(
+    "change",
+    [
+        "edit a linted file",
+        "edit an included file",
+        "add a mission",
+        "add a config file",
+        "add a pyproject.toml above",
+        "delete a linted file",
+    ],
+)
+def test_a_change_sends_the_run_back_to_the_normal_path(tree, capsys, change):
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    assert _replayed(argv, capsys) == before
+    if change == "edit a linted file":
+        (tree / "a.moos").write_text(MISSION + "ProcessConfig = uTimerScript\n{\n")
+    elif change == "edit an included file":
+        (tree / "plug.moos").write_text(PLUG)
+    elif change == "add a mission":
+        (tree / "b.moos").write_text("ProcessConfig = pHelmIvP\n{\n")
+    elif change == "add a config file":
+        (tree / "moos-lint.toml").write_text('ignore = ["R"]\n')
+    elif change == "add a pyproject.toml above":
+        (tree.parent / "pyproject.toml").write_text('[tool.moos-lint]\nignore = ["R"]\n')
+    elif change == "delete a linted file":
+        (tree / "shared.bhv").unlink()
+    assert _replayed(argv, capsys) is None
+    after = _run(argv, capsys)
+    assert after == _fresh(argv, capsys)
+    assert after != before
+    assert _replayed(argv, capsys) == after  # and the fresh report is kept in its turn
+
+
+def test_a_touched_file_is_checked_by_content_then_replayed_again(tree, capsys):
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    st = os.stat(tree / "shared.bhv")
+    os.utime(tree / "shared.bhv", ns=(st.st_atime_ns, st.st_mtime_ns + 5_000_000_000))
+    assert _replayed(argv, capsys) is None  # (mtime, size) changed: the cache compares content
+    assert _run(argv, capsys) == before
+    assert _replayed(argv, capsys) == before
+
+
+def test_another_command_line_folder_or_environment_is_not_replayed(tree, capsys, monkeypatch):
+    argv = ["check", "."]
+    _run(argv, capsys)
+    assert _replayed(["check", ".", "--exit-zero"], capsys) is None
+    monkeypatch.setenv("GITHUB_ACTIONS", "true")  # the default format becomes github
+    assert _replayed(argv, capsys) is None
+    assert "::error" in _run(argv, capsys)[1] or "::warning" in _run(argv, capsys)[1]
+    monkeypatch.delenv("GITHUB_ACTIONS")
+    sub = tree / "sub"
+    sub.mkdir()
+    monkeypatch.chdir(sub)
+    assert _replayed(["check", ".."], capsys) is None
+
+
+def test_changed_moos_lint_code_is_not_replayed(tree, capsys, monkeypatch, tmp_path):
+    own = tmp_path / "own"
+    own.mkdir()
+    (own / "rule.py").write_text("x = 1\n")
+    monkeypatch.setattr(replay, "_PACKAGE", str(own))
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    assert _replayed(argv, capsys) == before
+    (own / "rule.py").write_text("x = 22\n")
+    assert _replayed(argv, capsys) is None
+
+
+def test_a_corrupt_entry_is_a_miss(tree, capsys):
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    (entry,) = (tree / ".moos_lint_cache").glob("replay-*.marshal")
+    data = entry.read_bytes()
+    for broken in (b"", data[: len(data) // 2], b"not marshal", b"\xe9\x00"):
+        entry.write_bytes(broken)
+        assert _replayed(argv, capsys) is None
+        assert _run(argv, capsys) == before
+
+
+def test_no_entry_without_the_cache_or_with_an_output_file(tree, capsys):
+    _run(["check", ".", "--no-cache"], capsys)
+    assert not (tree / ".moos_lint_cache").exists()
+    _run(["check", ".", "-o", "report.txt"], capsys)
+    assert not list((tree / ".moos_lint_cache").glob("replay-*"))
+    assert _replayed(["check", ".", "-o", "report.txt"], capsys) is None
+
+
+def test_the_entry_is_found_from_the_cache_dir_option_and_the_environment(
+    tree, capsys, monkeypatch, tmp_path
+):
+    store = tmp_path / "store"
+    argv = ["check", ".", "--cache-dir", str(store)]
+    before = _run(argv, capsys)
+    assert list(store.glob("replay-*.marshal"))
+    assert _replayed(argv, capsys) == before
+    monkeypatch.setenv("MOOS_LINT_CACHE_DIR", str(tmp_path / "env-store"))
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    assert list(Path(tmp_path / "env-store").glob("replay-*.marshal"))
+    assert _replayed(argv, capsys) == before
