@@ -227,6 +227,16 @@ def _block_for(moos: MoosFile, name: str) -> Block | None:
     return None
 
 
+def _publisher(
+    var: str, who: str, how: str, line: Line | None = None, process: str | None = None
+) -> tuple[str, Publisher] | None:
+    """The key a model files ``var``'s publisher under, and the publisher (None: no name)."""
+    name = bare_name(var)
+    if not name:
+        return None
+    return (var if "*" in var else name), Publisher(name, who, how, line, process)
+
+
 class _Builder:
     def __init__(self, run: Any, path: str, moos: MoosFile):
         self.run = run
@@ -236,12 +246,9 @@ class _Builder:
     def add(
         self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
     ) -> None:
-        name = bare_name(var)
-        if name is None or not name:
-            return
-        self.m.publishers.setdefault(var if "*" in var else name, []).append(
-            Publisher(name, who, how, line, process)
-        )
+        found = _publisher(var, who, how, line, process)
+        if found is not None:
+            self.m.publishers.setdefault(found[0], []).append(found[1])
 
     def build(self) -> MissionModel:
         m = self.m
@@ -349,23 +356,37 @@ class _Builder:
             if not moos.is_mission:
                 continue
             self.m.sibling_missions.append(_norm(cand))
-            sub = _sibling_model(self.run, _norm(cand), moos)
-            who = f"{os.path.basename(cand)} (another community)"
-            for var, pubs in sub.publishers.items():
-                for p in pubs:
-                    self.add(var, who, "external", p.line)
-            for ref in sub.refs:
-                # uFldShoreBroker ``qbridge = X`` posts X_ALL and X_<VNAME> to the vehicles as X
-                if ref.param == "qbridge":
-                    self.add(ref.name, who, "external", ref.line)
-            for proc in sub.processes:
-                if proc.app is not None:
-                    for var in proc.app.publishes:
-                        self.add(var, who, "external")
-                    for pre_ in proc.app.publish_prefixes:
-                        self.add(pre_ + "*", who, "external")
-                    for suf in proc.app.publish_suffixes:
-                        self.add("*" + suf, who, "external")
+            publishers = self.m.publishers
+            for key, pub in _external_publishers(self.run, _norm(cand), moos):
+                publishers.setdefault(key, []).append(pub)
+
+
+def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:
+    """What another mission of the folder publishes, as (key, publisher) in the order a
+    mission's model takes them; once per run (models are only read, so they share them)."""
+    memo = _run_memo(run, "_external_publishers")
+    if path in memo:
+        return memo[path]
+    sub = _sibling_model(run, path, moos)
+    who = f"{os.path.basename(path)} (another community)"
+    found = []
+    for var, pubs in sub.publishers.items():
+        found.extend(_publisher(var, who, "external", p.line) for p in pubs)
+    for ref in sub.refs:
+        # uFldShoreBroker ``qbridge = X`` posts X_ALL and X_<VNAME> to the vehicles as X
+        if ref.param == "qbridge":
+            found.append(_publisher(ref.name, who, "external", ref.line))
+    for proc in sub.processes:
+        if proc.app is not None:
+            found.extend(_publisher(var, who, "external") for var in proc.app.publishes)
+            found.extend(
+                _publisher(pre_ + "*", who, "external") for pre_ in proc.app.publish_prefixes
+            )
+            found.extend(
+                _publisher("*" + suf, who, "external") for suf in proc.app.publish_suffixes
+            )
+    memo[path] = out = [f for f in found if f is not None]
+    return out
 
 
 def _run_memo(run: Any, name: str) -> dict:

@@ -129,12 +129,20 @@ def read_bytes(path: Path) -> bytes | ReadProblem:
     except OSError as exc:
         return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
     try:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
             return ReadProblem("not-regular", "is not a regular file: not read")
-        with os.fdopen(fd, "rb", closefd=False) as fh:
-            data = fh.read(MAX_FILE_BYTES + 1)
+        # os.read, not a file object: most files come in one call, as large as the file
+        chunks = []
+        left = MAX_FILE_BYTES + 1
+        while left > 0:
+            chunk = os.read(fd, min(left, max(st.st_size + 1, 65536)))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            left -= len(chunk)
     except OSError as exc:
         return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
     finally:
         os.close(fd)
-    return data
+    return chunks[0] if len(chunks) == 1 else b"".join(chunks)

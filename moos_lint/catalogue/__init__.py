@@ -261,9 +261,22 @@ def _generic_bhv_keys() -> frozenset[str]:
 
 
 _UNHANDLED = re.compile(r"reportUnhandledConfigWarning")
+#: ``else handled = m_viewer.setParam(param, value);``: a final ``else`` that hands any
+#: other key to code elsewhere (a library), whose keys the app's own files do not list
+DELEGATE = re.compile(
+    r"\belse\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
+)
 
 
 def _repo_app(app: Any) -> AppInfo:
+    """What the app's own C++ says it reads, publishes and subscribes to.
+
+    It is strict (other keys are reported) only when the app reports
+    unhandled lines and hands no key to code elsewhere. An app that the stock
+    catalogue also knows (a fork of a MOOS-IvP app, or MOOS-IvP itself) keeps
+    the stock keys too: the keys of the libraries it links and the hand
+    corrections, which its own files do not show.
+    """
     text = ""
     for f in app.files:
         try:
@@ -277,7 +290,7 @@ def _repo_app(app: Any) -> AppInfo:
     info = AppInfo(
         name=app.process_name,
         params={c.text for c in app.config_params} | _base_keys(),
-        strict=bool(_UNHANDLED.search(text)),
+        strict=bool(_UNHANDLED.search(text)) and not DELEGATE.search(text),
         publishes=pubs,
         publish_prefixes=prefixes,
         publishes_dynamic=dynamic,
@@ -288,6 +301,10 @@ def _repo_app(app: Any) -> AppInfo:
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
         info.publish_suffixes |= {"_ITER_GAP", "_ITER_LEN"}
+    known = stock().app(app.process_name)
+    if known is not None:
+        info.params |= known.params
+        info.param_prefixes |= known.param_prefixes
     return info
 
 

@@ -27,6 +27,7 @@ import subprocess
 import sys
 from collections.abc import Iterable
 
+from moos_lint.catalogue import DELEGATE
 from moos_lint.cpp.app import build_apps
 from moos_lint.cpp.model import AppModel
 from moos_lint.source import SourceFile, read_source
@@ -397,9 +398,6 @@ def _linked_libs(folder: str) -> list[str]:
     return libs
 
 
-_DELEGATE = re.compile(
-    r"\belse\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
-)
 #: ``m_var_index = "WPT_INDEX";``: a variable a behavior posts under a default name
 _VAR_DEFAULT = re.compile(r"\b(m_\w*var\w*)\s*=\s*\"([A-Z][A-Z0-9_]*)\"\s*;")
 _INFO_VARS = re.compile(r"addInfoVars\(\s*\"([^\"]+)\"")
@@ -693,7 +691,7 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
     forms: dict[str, dict[str, str]] = {}
     for cf in m.files:
         forms.update(_forms(cf, src))
-    delegates = bool(_DELEGATE.search(text))
+    delegates = bool(DELEGATE.search(text))
     base = m.base_chain[-1] if m.base_chain else ""
     pubs, pub_prefixes, pub_suffixes, pub_dynamic = _names(m.publications)
     subs, sub_prefixes, _sub_suffixes, sub_dynamic = _names(m.subscriptions)

@@ -49,7 +49,13 @@ MOOS-IvP caveats, deliberately not reported:
   or `/` (not-a-comment reports those);
 - parameters handed to a library the app links: the catalogue counts every
   key the library's configuration functions compare against, so some
-  misspellings that match another app's key go unnoticed.
+  misspellings that match another app's key go unnoticed;
+- an app of the linted repository whose final `else` hands every other key
+  to code elsewhere (`else handled = m_viewer.setParam(param, value);`, as
+  pMarineViewer does): its own files do not list those keys, so it is not
+  judged. An app of the repository that the stock catalogue also knows (a
+  fork of a MOOS-IvP app, or MOOS-IvP itself) keeps the stock keys too: the
+  keys of the libraries it links (`flip:N` for pEchoVar).
 """
 
 import difflib
