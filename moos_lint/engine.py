@@ -114,6 +114,7 @@ class Run:
         self.units: list[Unit] = []
         self.suppressions: dict[str, list[Suppression]] = {}
         self._options: dict[str, dict[str, Any]] = {}
+        self._applicable: dict[tuple, list[Rule]] = {}
 
     def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
         """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
@@ -162,9 +163,15 @@ class Run:
                 unit.bhv = parsed(exp, parse_bhv)
         return unit
 
-    def run_rules(self, unit: Unit) -> tuple[list[Diagnostic], int]:
-        out: list[Diagnostic] = []
-        errors = 0
+    def _rules_for(self, unit: Unit) -> list[Rule]:
+        """The rules that check ``unit`` (worked out once per kind of unit)."""
+        read_problem = unit.expansion.read_problem is not None
+        mission = unit.kind is Kind.CPP or bool(unit.moos and unit.moos.is_mission)
+        key = (unit.kind, unit.cpp is None, read_problem, mission)
+        found = self._applicable.get(key)
+        if found is not None:
+            return found
+        found = []
         for r in self.rules:
             if unit.kind not in r.kinds or r.scope is Scope.PROJECT:
                 continue
@@ -173,11 +180,18 @@ class Run:
                     continue
             elif r.scope not in (Scope.FILE, Scope.MISSION):
                 continue
-            if unit.expansion.read_problem is not None and r.code != "R001":
+            if read_problem and r.code != "R001":
                 continue
-            mission = unit.kind is Kind.CPP or (unit.moos and unit.moos.is_mission)
             if r.scope is Scope.MISSION and not mission:
                 continue
+            found.append(r)
+        self._applicable[key] = found
+        return found
+
+    def run_rules(self, unit: Unit) -> tuple[list[Diagnostic], int]:
+        out: list[Diagnostic] = []
+        errors = 0
+        for r in self._rules_for(unit):
             ctx = Context(r, unit, self.settings, self, self._options_for(r))
             try:
                 out.extend(r.check(ctx) or ())
