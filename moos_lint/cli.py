@@ -444,15 +444,15 @@ def _check(args: argparse.Namespace, settings) -> int:
 
 
 def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, status: int):
-    """Keep a cached run's report for the same command line (:mod:`moos_lint.replay`);
-    a report written to a file is not kept."""
-    if args.output_file is not None or getattr(args, "argv", None) is None:
+    """Keep a cached run's report for the same command line (:mod:`moos_lint.replay`)."""
+    if getattr(args, "argv", None) is None:
         return
     from moos_lint.replay import remember
 
     paths = [str(p) for p in args.paths]
     config = str(args.config) if args.config else None
-    remember(cache_dir, args.argv, paths, config, watch, text, status)
+    output = str(args.output_file) if args.output_file is not None else None
+    remember(cache_dir, args.argv, paths, config, watch, text, status, output)
 
 
 def _emit(path: Path | None, text: str) -> int | None:

@@ -8,7 +8,8 @@ takes (argparse, pathlib, hashlib, pickle, json) cost more than the checks
 themselves. So each report the cache prints is also kept as a *replay
 entry*: the exact command line, working folder and environment it answered,
 the (mtime, size) of every file it depends on and the mtime of every folder
-whose listing it depends on, and the text and exit status. The next identical
+whose listing it depends on, and the text (printed, or written to the
+``--output-file`` again) and exit status. The next identical
 command checks those with ``os.stat`` and prints the text; it imports only
 ``marshal`` and ``zlib``.
 
@@ -30,8 +31,9 @@ later, by the result cache.
 
 Anything unexpected (no entry, another command line, a changed file, an
 unreadable or corrupt entry) falls through to the normal run, which writes a
-fresh entry. :func:`replay` never writes; :func:`remember`, called by the
-normal run, writes only in the cache folder.
+fresh entry. :func:`replay` writes nothing but the ``--output-file`` the
+command line names; :func:`remember`, called by the normal run, writes only
+in the cache folder.
 """
 
 from __future__ import annotations
@@ -126,7 +128,12 @@ def replay(argv: list[str]) -> int | None:
             except OSError:
                 continue
             if _holds(entry, argv):
-                sys.stdout.write(entry["text"])
+                target = entry.get("output_file")
+                if target is None:
+                    sys.stdout.write(entry["text"])
+                else:  # ``--output-file``: written as the normal run writes it
+                    with open(target, "w", encoding="utf-8") as fh:
+                        fh.write(entry["text"])
                 return int(entry["status"])
     except Exception:  # a corrupt or foreign entry: the normal run decides
         return None
@@ -192,9 +199,11 @@ def remember(
     watch: dict,
     text: str,
     status: int,
+    output_file: str | None = None,
 ) -> None:
     """Keep the report of a cached run as a replay entry for the same ``argv`` (the
-    result cache's ``watch``: what the result depends on). Never raises."""
+    result cache's ``watch``: what the result depends on; ``output_file``: where the
+    report was written, None for stdout). Never raises."""
     try:
         files, exist = _settings_inputs(paths)
         own_files, own_dirs = _own_files()
@@ -212,6 +221,7 @@ def remember(
             "exist": sorted(exist.items()),
             "text": text,
             "status": status,
+            "output_file": output_file,
         }
         from moos_lint.cache import _atomic_write, _prune
 
