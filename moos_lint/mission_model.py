@@ -81,9 +81,9 @@ class Process:
     app: AppInfo | None = None
 
 
-@dataclass
+@dataclass(slots=True)
 class Publisher:
-    """Where a variable comes from."""
+    """Where a variable comes from (models share them: never changed once made)."""
 
     var: str
     who: str  # process name, behavior, ``uPokeDB`` or ``<mission> (other community)``
@@ -289,8 +289,9 @@ class _Builder:
 
     def _process(self, proc: Process) -> None:
         if proc.app is not None:
-            for var in proc.app.publishes:
-                self.add(var, proc.name, "app", process=proc.name)
+            publishers = self.m.publishers
+            for key, pub in _app_publishers(self.run, proc.app, proc.name):
+                publishers.setdefault(key, []).append(pub)
         if proc.block is None:
             return
         app = app_of(proc.block.name, {proc.name.lower(): proc.binary})
@@ -359,6 +360,18 @@ class _Builder:
             publishers = self.m.publishers
             for key, pub in _external_publishers(self.run, _norm(cand), moos):
                 publishers.setdefault(key, []).append(pub)
+
+
+def _app_publishers(run: Any, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:
+    """The (key, publisher) of each variable ``app`` publishes, launched as ``process``;
+    once per run (many missions launch the same apps under the same names)."""
+    memo = _run_memo(run, "_app_publishers")
+    key = (id(app), process)
+    found = memo.get(key)
+    if found is None or found[0] is not app:
+        pubs = (_publisher(var, process, "app", process=process) for var in app.publishes)
+        found = memo[key] = (app, [p for p in pubs if p is not None])
+    return found[1]
 
 
 def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:

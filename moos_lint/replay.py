@@ -101,11 +101,13 @@ def _candidates(argv: list[str]) -> list[str]:
             out.append(os.path.abspath(arg.split("=", 1)[1]))
         elif not arg.startswith("-") and os.path.exists(arg):
             starts.append(arg)
+    seen: set[str] = set()
     for start in starts or ["."]:
         here = os.path.abspath(start)
         if not os.path.isdir(here):
             here = os.path.dirname(here)
-        while True:
+        while here not in seen:
+            seen.add(here)
             cache = os.path.join(here, CACHE_DIR)
             if os.path.isdir(cache):
                 out.append(cache)
@@ -165,9 +167,11 @@ def _settings_inputs(paths: list[str]) -> tuple[dict, dict]:
     above the paths given (the working folder when none is)."""
     files: dict[str, tuple[int, int] | None] = {}
     exist: dict[str, bool] = {}
+    seen: set[str] = set()
     for start in paths or ["."]:
         here = os.path.abspath(start)
-        while True:
+        while here not in seen:  # (many paths given share their parents)
+            seen.add(here)
             for name in CONFIG_FILES:
                 files[os.path.join(here, name)] = _stat(os.path.join(here, name))
             for name in VCS_MARKERS:

@@ -204,3 +204,13 @@ def test_the_entry_is_found_from_the_cache_dir_option_and_the_environment(
     before = _run(argv, capsys)
     assert list(Path(tmp_path / "env-store").glob("replay-*.marshal"))
     assert _replayed(argv, capsys) == before
+
+
+def test_a_list_of_files_as_pre_commit_passes_them(tree, capsys):
+    argv = ["check", "a.moos", "plug.moos", "shared.bhv"]
+    before = _run(argv, capsys)
+    assert _replayed(argv, capsys) == before
+    assert _replayed(["check", "a.moos", "shared.bhv"], capsys) is None  # another list
+    (tree / "shared.bhv").write_text(BEHAVIORS + "\nBehavior = BHV_Loiter\n{\n")
+    assert _replayed(argv, capsys) is None
+    assert _run(argv, capsys) == _fresh(argv, capsys) != before
