@@ -585,3 +585,35 @@ def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch
         assert len(matches) == len(be.matches(fresh))
     # the first parse is fresh; each edit starts incrementally; the broken text is redone
     assert incremental == [False, True, True, False, True]
+
+
+# ------------------------------------------------------------------ the benchmark script
+def test_the_benchmark_prints_every_figure(tmp_path):
+    """The shipped benchmark runs end to end on a small tree (the figures are not judged)."""
+    tree = tmp_path / "tree"
+    tree.mkdir()
+    _tree(tree)
+    app = tree / "pApp"
+    app.mkdir()
+    (app / "App.cpp").write_text('bool App::OnStartUp() { Notify("APP_X", 1); return true; }\n')
+    before = sorted(p.name for p in tree.rglob("*"))
+    out = subprocess.run(
+        [sys.executable, "-m", "moos_lint.benchmark", str(tree), "--runs", "5"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert out.returncode == 0, out.stderr
+    for figure in (
+        "cold (default jobs)",
+        "cold (-j 1)",
+        "warm (cache, nothing changed)",
+        "moos-lint --version",
+        "floor (read + tree-sitter only)",
+        "peak memory (whole tree)",
+        "re-lint a.moos",
+        "re-lint App.cpp (1 lines)",
+    ):
+        line = next((ln for ln in out.stdout.splitlines() if ln.strip().startswith(figure)), "")
+        assert any(ch.isdigit() for ch in line[len(figure) + 2 :]), (figure, out.stdout)
+    assert sorted(p.name for p in tree.rglob("*")) == before  # the tree is not written
