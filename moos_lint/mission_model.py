@@ -205,9 +205,18 @@ def behavior_paths(value: str, folder: str) -> tuple[list[str], bool]:
 
 
 def _pokes(folder: str) -> dict[str, str]:
-    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``."""
+    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``.
+
+    Kept while the scripts keep their (mtime, size): the language server asks
+    again at every edit of a mission of the folder.
+    """
+    scripts = sorted(glob.glob(os.path.join(glob.escape(folder), "*.sh")))
+    stamp = tuple((s, _stamp(s)) for s in scripts)
+    kept = _POKES_SEEN.get(folder)
+    if kept is not None and kept[0] == stamp:
+        return kept[1]
     out: dict[str, str] = {}
-    for script in sorted(glob.glob(os.path.join(glob.escape(folder), "*.sh"))):
+    for script in scripts:
         try:
             with open(script, encoding="utf-8", errors="replace") as fh:
                 text = fh.read(200_000)
@@ -216,7 +225,22 @@ def _pokes(folder: str) -> dict[str, str]:
         for m in _POKE.finditer(text):
             for pair in _PAIR.finditer(m.group(1)):
                 out.setdefault(pair.group(1), os.path.basename(script))
+    if len(_POKES_SEEN) > 256:
+        _POKES_SEEN.clear()
+    _POKES_SEEN[folder] = (stamp, out)
     return out
+
+
+#: folder -> (each script's (mtime, size), what its scripts poke)
+_POKES_SEEN: dict[str, tuple[tuple, dict[str, str]]] = {}
+
+
+def _stamp(path: str) -> tuple[int, int] | None:
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_mtime_ns, st.st_size
 
 
 def _block_for(moos: MoosFile, name: str) -> Block | None:

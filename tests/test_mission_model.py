@@ -318,3 +318,29 @@ def test_graph_html_renders_in_headless_chromium(tmp_path):
     for p in g.processes:
         assert f'id="p:{p["name"]}"' in dom
     assert "DEPOLY" in dom and "M005" in dom
+
+
+def test_a_changed_poke_script_is_read_again(tmp_path):
+    """The pokes of a folder's shell scripts are kept across runs (the language server
+    re-lints at every edit) only while each script keeps its (mtime, size)."""
+    (tmp_path / "m.moos").write_text(
+        "ServerPort = 9000\nCommunity = alpha\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = uTimerScript @ NewConsole = false\n}\n\n"
+        "ProcessConfig = uTimerScript\n{\n  condition = GO_HOME = true\n"
+        "  event = var=RETURN, val=true, time=1\n}\n"
+    )
+    script = tmp_path / "launch.sh"
+
+    def waits() -> list[str]:
+        settings = Settings(root=str(tmp_path), select=["M005"])
+        result = lint_files([str(tmp_path / "m.moos")], settings)
+        return [d.message.split("`")[1] for d in result.diagnostics if d.code == "M005"]
+
+    script.write_text("#!/bin/bash\nuPokeDB m.moos GO_HOME=true\n")
+    assert waits() == []
+    script.write_text("#!/bin/bash\nuPokeDB m.moos GO_AWAY=true, X=1\n")
+    assert waits() == ["GO_HOME"]
+    script.unlink()
+    assert waits() == ["GO_HOME"]
+    (tmp_path / "go.sh").write_text("uPokeDB m.moos GO_HOME=true\n")
+    assert waits() == []
