@@ -373,22 +373,23 @@ def _check(args: argparse.Namespace, settings) -> int:
             return status
 
     def lint(cache=None, *, filtered: bool = True):
-        if cache_dir is not None and cache is None:
-            from moos_lint.cache import cached_lint  # the engine loads only on a cache miss
+        with _CyclicGCPaused():
+            if cache_dir is not None and cache is None:
+                from moos_lint.cache import cached_lint  # the engine loads only on a miss
 
-            result = cached_lint(
-                list(args.paths) or [Path(".")],
-                settings,
-                context=args.context,
-                jobs=args.jobs,
-                cache_dir=cache_dir,
-            )
-        else:
-            from moos_lint.engine import lint_paths
+                result = cached_lint(
+                    list(args.paths) or [Path(".")],
+                    settings,
+                    context=args.context,
+                    jobs=args.jobs,
+                    cache_dir=cache_dir,
+                )
+            else:
+                from moos_lint.engine import lint_paths
 
-            result = lint_paths(
-                args.paths, settings, context=args.context, cache=cache, jobs=args.jobs
-            )
+                result = lint_paths(
+                    args.paths, settings, context=args.context, cache=cache, jobs=args.jobs
+                )
         from moos_lint.diagnostics import Diagnostic, Severity, Span
 
         for missing in result.missing:
@@ -453,6 +454,31 @@ def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, 
     config = str(args.config) if args.config else None
     output = str(args.output_file) if args.output_file is not None else None
     remember(cache_dir, args.argv, paths, config, watch, text, status, output)
+
+
+class _CyclicGCPaused:
+    """The cyclic garbage collector paused for one command-line lint (and its forked
+    workers).
+
+    A run allocates millions of small objects (lines, parameters, syntax nodes) and
+    keeps most of them to the end; almost none die in reference cycles. The
+    collector still ran hundreds of times over that growing heap: about 8% of a
+    cold run over MOOS-IvP, for no memory (57 MB at the peak either way).
+    Reference counting frees everything else as usual. The language server, which
+    runs for hours, keeps the collector.
+    """
+
+    def __enter__(self) -> None:
+        import gc
+
+        self.was_enabled = gc.isenabled()
+        gc.disable()
+
+    def __exit__(self, *exc: object) -> None:
+        import gc
+
+        if self.was_enabled:
+            gc.enable()
 
 
 def _emit(path: Path | None, text: str) -> int | None:

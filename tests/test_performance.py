@@ -617,3 +617,20 @@ def test_the_benchmark_prints_every_figure(tmp_path):
         line = next((ln for ln in out.stdout.splitlines() if ln.strip().startswith(figure)), "")
         assert any(ch.isdigit() for ch in line[len(figure) + 2 :]), (figure, out.stdout)
     assert sorted(p.name for p in tree.rglob("*")) == before  # the tree is not written
+
+
+def test_a_command_line_lint_pauses_the_cyclic_gc_and_restores_it(tree, monkeypatch, capsys):
+    import gc
+
+    seen: list[bool] = []
+    real = engine.lint_files
+
+    def lint_files(*a, **kw):
+        seen.append(gc.isenabled())
+        return real(*a, **kw)
+
+    monkeypatch.setattr(engine, "lint_files", lint_files)
+    assert gc.isenabled()
+    main(["check", str(tree), "--no-cache", "-q"])
+    capsys.readouterr()
+    assert seen == [False] and gc.isenabled()
