@@ -25,6 +25,7 @@ not one plain number are not literals and are left alone.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Iterator
@@ -56,6 +57,7 @@ _WORD_SPLIT = re.compile(r"[^A-Za-z0-9]+")
 WRAP_TOLERANCE = 1e-3
 
 
+@functools.lru_cache(maxsize=4096)  # (a handful of names, asked for thousands of times)
 def angle_kind(name: str) -> str | None:
     """``"yaw"``, ``"pitch"``, ``"roll"`` or ``"radian"`` when ``name`` is an angle field."""
     words = [w for w in _WORD_SPLIT.split(name.strip()) if w]

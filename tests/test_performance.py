@@ -634,3 +634,15 @@ def test_a_command_line_lint_pauses_the_cyclic_gc_and_restores_it(tree, monkeypa
     main(["check", str(tree), "--no-cache", "-q"])
     capsys.readouterr()
     assert seen == [False] and gc.isenabled()
+
+
+def test_a_run_over_missions_alone_loads_no_cpp_module(tree):
+    code = (
+        "import sys\n"
+        "from moos_lint.cli import main\n"
+        f"main(['check', {str(tree)!r}, '--no-cache', '-q', '--exit-zero'])\n"
+        "print([m for m in sys.modules if m.startswith(('moos_lint.cpp', 'tree_sitter'))])\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip().endswith("[]"), out.stdout

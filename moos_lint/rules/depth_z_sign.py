@@ -26,8 +26,6 @@ Notify("NAV_Z", -m_depth);
 None.
 """
 
-from moos_lint.cpp.checks import depth_z_sign
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -40,4 +38,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import depth_z_sign
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, depth_z_sign)

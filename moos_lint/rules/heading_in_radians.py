@@ -30,8 +30,6 @@ Notify("NAV_HEADING", hdg);
 None.
 """
 
-from moos_lint.cpp.checks import heading_in_radians
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -44,4 +42,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import heading_in_radians
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, heading_in_radians)

@@ -27,8 +27,6 @@ blocks), or derive from `CMOOSApp` if the app does not use a device.
 None.
 """
 
-from moos_lint.cpp.checks import instrument_app_prefix
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -41,4 +39,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import instrument_app_prefix
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, instrument_app_prefix)

@@ -26,8 +26,6 @@ Notify("NAV_LAT", lat);
 None.
 """
 
-from moos_lint.cpp.checks import latlong_in_radians
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -40,4 +38,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import latlong_in_radians
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, latlong_in_radians)

@@ -34,8 +34,6 @@ code into its own instrument app and keep the `p` app on MOOSDB data.
   (other than pShare and pMOOSBridge, whose sockets carry MOOS itself).
 """
 
-from moos_lint.cpp.checks import pure_app_does_io
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -49,4 +47,8 @@ from moos_lint.registry import Kind, Scope, rule
     options={"sockets": False},
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import pure_app_does_io
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, pure_app_does_io, sockets=bool(ctx.options.get("sockets")))

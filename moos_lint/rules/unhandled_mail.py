@@ -30,8 +30,6 @@ registration.
 None.
 """
 
-from moos_lint.cpp.checks import unhandled_mail
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -44,4 +42,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import unhandled_mail
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, unhandled_mail)

@@ -34,8 +34,6 @@ Notify("NAV_YAW", yaw);
 None.
 """
 
-from moos_lint.cpp.checks import yaw_heading_sign
-from moos_lint.cpp.rulekit import cpp_findings
 from moos_lint.diagnostics import Severity
 from moos_lint.registry import Kind, Scope, rule
 
@@ -48,4 +46,8 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.CPP,),
 )
 def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.cpp.checks import yaw_heading_sign
+    from moos_lint.cpp.rulekit import cpp_findings
+
     yield from cpp_findings(ctx, yaw_heading_sign)
