@@ -31,9 +31,7 @@ def _app_label(app: AppModel) -> str:
     return f"`{app.process_name}`" if app.process_name else "this app"
 
 
-def process_name_prefix(
-    app: AppModel, exempt: tuple[str, ...] = ("MOOSDB", "ANTLER", "pAntler")
-) -> Iterator[Finding]:
+def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_app or not name or app.process_name_span is None:
         return

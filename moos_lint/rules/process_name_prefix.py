@@ -11,8 +11,10 @@ every name a process runs under:
 - a `ProcessConfig = NAME` header whose name no `Run` line of the same file
   launches (a name launched in the file is reported once, on its `Run` line).
 
-The MOOS infrastructure is exempt: `MOOSDB`, and `ANTLER` / `pAntler` in any
-case. Names that hold an nsplug macro (`$(X)`) are skipped.
+The MOOS infrastructure is exempt, in any case: `MOOSDB`, `ANTLER` /
+`pAntler`, and the command-line tools MOOS core ships beside the MOOSDB
+(`umm`, `mtm`, `gtm`, `ktm`, `atm`, `mqos`: monitors and timing tools named
+like Unix utilities). Names that hold an nsplug macro (`$(X)`) are skipped.
 
 
 In C++ (a folder of a MOOS app's sources), it checks the app's process name:
@@ -54,7 +56,8 @@ Rename the program, or choose an alias that keeps the program's prefix
 (`~ pShare_A`), and rename its `ProcessConfig` block to match.
 
 ## Options
-- `exempt` (list of strings, default `["MOOSDB", "ANTLER", "pAntler"]`):
+- `exempt` (list of strings, default `["MOOSDB", "ANTLER", "pAntler", "umm", "mtm",
+  "gtm", "ktm", "atm", "mqos"]`):
   names that need no prefix, compared without regard to case.
 - `check-aliases` (bool, default `true`): also check `~` aliases,
   `--alias=` names and the `ProcessConfig` blocks of aliases. With `false`,
@@ -73,6 +76,11 @@ from moos_lint.registry import Kind, Scope, rule
 _PREFIXED = re.compile(r"^[ipu][A-Z]")
 
 
+#: MOOS's own programs: the database, the launcher, and MOOS core's command-line tools
+#: (``MOOSCore/Core/tools``: umm, mtm, gtm, ktm, atm, mqos)
+INFRASTRUCTURE = ("MOOSDB", "ANTLER", "pAntler", "umm", "mtm", "gtm", "ktm", "atm", "mqos")
+
+
 def conforms(name: str, exempt: set[str]) -> bool:
     return bool(_PREFIXED.match(name)) or name.lower() in exempt
 
@@ -83,7 +91,7 @@ def conforms(name: str, exempt: set[str]) -> bool:
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.CPP),
-    options={"exempt": ["MOOSDB", "ANTLER", "pAntler"], "check-aliases": True},
+    options={"exempt": list(INFRASTRUCTURE), "check-aliases": True},
 )
 def check(ctx):
     if ctx.unit.kind is Kind.CPP:
