@@ -476,10 +476,11 @@ class Preprocessor:
                 continue
 
             if not raw.lstrip().startswith("#"):  # not a directive: the common line
-                if not work.n_false:
-                    exp.lines.append(
-                        self._out_line(here, macros, frames, work.outer, work.branches)
-                    )
+                if not work.n_false:  # (``_out_line``, inlined: most lines come here)
+                    if "(" in raw:
+                        here.text = self.expand_macros(raw, macros)
+                    here.branches = work.branches
+                    exp.lines.append(here)
                 continue
             squeezed = raw.replace("\t", " ").strip()
             left, _, rest = squeezed.partition(" ")
