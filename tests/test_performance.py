@@ -646,3 +646,45 @@ def test_a_run_over_missions_alone_loads_no_cpp_module(tree):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip().endswith("[]"), out.stdout
+
+
+def test_the_server_freezes_its_lifelong_objects_and_still_collects_later_cycles():
+    code = (
+        "import gc, sys, weakref\n"
+        "from moos_lint.lsp.analysis import settle\n"
+        "settle()\n"
+        "frozen = gc.get_freeze_count()\n"
+        "settle()  # only the first call freezes\n"
+        "assert gc.get_freeze_count() == frozen > 10_000, frozen\n"
+        "assert 'moos_lint.rules.unknown_parameter' in sys.modules\n"
+        "class Node:\n    pass\n"
+        "a, b = Node(), Node()\n"
+        "a.other, b.other = b, a\n"
+        "gone = weakref.ref(a)\n"
+        "del a, b\n"
+        "gc.collect()\n"
+        "print(gone() is None)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "True"
+
+
+def test_the_server_settles_before_it_takes_requests(monkeypatch):
+    pytest.importorskip("pygls")
+    from moos_lint.lsp import server as lsp_server
+
+    order: list[str] = []
+
+    class Fake:
+        def start_io(self):
+            order.append("start_io")
+
+    def create(*args, **kwargs):
+        order.append("create")
+        return Fake()
+
+    monkeypatch.setattr(lsp_server, "create_server", create)
+    monkeypatch.setattr(lsp_server, "settle", lambda: order.append("settle"))
+    assert lsp_server.serve(catalogue=lsp_server.EMPTY) == 0
+    assert order == ["create", "settle", "start_io"]

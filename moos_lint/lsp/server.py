@@ -24,7 +24,7 @@ from pygls.protocol import LanguageServerProtocol
 from moos_lint import __version__
 from moos_lint.config import CONFIG_FILES
 from moos_lint.lsp import features
-from moos_lint.lsp.analysis import Analysis, analyse
+from moos_lint.lsp.analysis import Analysis, analyse, settle
 from moos_lint.lsp.catalogue import EMPTY, Catalogue, default_catalogue
 from moos_lint.lsp.documents import DocumentStore, uri_to_path
 from moos_lint.registry import all_rules
@@ -305,5 +305,7 @@ def create_server(
 def serve(catalogue: Catalogue | None = None) -> int:
     """Run the server on stdin/stdout until the client says ``exit``."""
     logging.basicConfig(level=logging.WARNING, format="moos-lint server: %(message)s")
-    create_server(default_catalogue() if catalogue is None else catalogue).start_io()
+    server = create_server(default_catalogue() if catalogue is None else catalogue)
+    settle()  # (after the server's own objects are made)
+    server.start_io()
     return 0
