@@ -64,6 +64,7 @@ from pathlib import Path
 
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR
+from moos_lint.stamps import file_stamp, folder_mtime
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
@@ -129,21 +130,6 @@ def _digest(path: str) -> str:
     return hashlib.blake2b(data, digest_size=20).hexdigest()
 
 
-def _stat(path: str) -> tuple[int, int] | None:
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return st.st_mtime_ns, st.st_size
-
-
-def _dir_mtime(path: str) -> int | None:
-    try:
-        return os.stat(path).st_mtime_ns
-    except OSError:
-        return None
-
-
 def _side_files(result: Any, settings: Any) -> set[str]:
     """Files the analysis opens outside the nsplug reader."""
     out: set[str] = set(getattr(settings, "catalogues", []) or [])
@@ -170,11 +156,11 @@ def _dependencies(result: Any, settings: Any, read: set[str], probed: set[str]) 
     files = set(read) | set(result.files) | set(result.sources) | _side_files(result, settings)
     deps = {}
     for path in sorted(files):
-        deps[path] = (_stat(path), _digest(path))
+        deps[path] = (file_stamp(path), _digest(path))
     dirs = {os.path.dirname(p) for p in files}
     dirs.update(getattr(settings, "include_paths", []) or [])
     dirs.update(probed)
-    return {"files": deps, "dirs": {d: _dir_mtime(d) for d in sorted(dirs)}}
+    return {"files": deps, "dirs": {d: folder_mtime(d) for d in sorted(dirs)}}
 
 
 def _valid(entry: dict) -> dict | None:
@@ -182,11 +168,11 @@ def _valid(entry: dict) -> dict | None:
     is the same keeps the entry valid), or None when the entry no longer holds."""
     deps = entry["deps"]
     for d, mtime in deps["dirs"].items():
-        if _dir_mtime(d) != mtime:
+        if folder_mtime(d) != mtime:
             return None
     seen = {}
     for path, (st, digest) in deps["files"].items():
-        now = _stat(path)
+        now = file_stamp(path)
         if now != st and _digest(path) != digest:
             return None
         seen[path] = now
@@ -370,7 +356,7 @@ def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, di
     try:
         with open(path, "rb") as fh:
             entry = pickle.load(fh)
-        if entry["key"] == key and all(_dir_mtime(d) == m for d, m in entry["folders"].items()):
+        if entry["key"] == key and all(folder_mtime(d) == m for d, m in entry["folders"].items()):
             found = Discovered(list(entry["files"]), list(entry["missing"]), list(entry["folders"]))
             return found, dict(entry["folders"])
     except Exception:  # missing, partial or corrupt: walk the folders
@@ -378,7 +364,7 @@ def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, di
     with contextlib.suppress(OSError):  # first: creating it changes its parent's mtime
         os.makedirs(cache_dir, exist_ok=True)
     found = discover(paths, settings.exclude, settings.root)
-    folders = {d: _dir_mtime(d) for d in found.folders}
+    folders = {d: folder_mtime(d) for d in found.folders}
     if all(m is not None for m in folders.values()):
         entry = {"key": key, "folders": folders, "files": found.files, "missing": found.missing}
         with contextlib.suppress(Exception):

@@ -45,6 +45,7 @@ from typing import Any
 from moos_lint.catalogue import AppInfo, Catalogue, catalogue_for
 from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
 from moos_lint.nsplug import Line
+from moos_lint.stamps import file_stamp
 from moos_lint.variables import (
     PUBLISH,
     SUBSCRIBE,
@@ -211,7 +212,7 @@ def _pokes(folder: str) -> dict[str, str]:
     again at every edit of a mission of the folder.
     """
     scripts = sorted(glob.glob(os.path.join(glob.escape(folder), "*.sh")))
-    stamp = tuple((s, _stamp(s)) for s in scripts)
+    stamp = tuple((s, file_stamp(s)) for s in scripts)
     kept = _POKES_SEEN.get(folder)
     if kept is not None and kept[0] == stamp:
         return kept[1]
@@ -233,14 +234,6 @@ def _pokes(folder: str) -> dict[str, str]:
 
 #: folder -> (each script's (mtime, size), what its scripts poke)
 _POKES_SEEN: dict[str, tuple[tuple, dict[str, str]]] = {}
-
-
-def _stamp(path: str) -> tuple[int, int] | None:
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return st.st_mtime_ns, st.st_size
 
 
 def _block_for(moos: MoosFile, name: str) -> Block | None:

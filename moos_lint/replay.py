@@ -44,6 +44,7 @@ import sys
 
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR, CONFIG_FILES, VCS_MARKERS
+from moos_lint.stamps import file_stamp, folder_mtime
 
 #: bump when the entry layout changes
 FORMAT = 1
@@ -70,21 +71,6 @@ def entry_name(argv: list[str]) -> str:
 
     data = "\0".join(argv).encode("utf-8", "surrogatepass")
     return f"replay-{zlib.crc32(data):08x}.marshal"
-
-
-def _stat(path: str) -> tuple[int, int] | None:
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return st.st_mtime_ns, st.st_size
-
-
-def _mtime(path: str) -> int | None:
-    try:
-        return os.stat(path).st_mtime_ns
-    except OSError:
-        return None
 
 
 def _candidates(argv: list[str]) -> list[str]:
@@ -156,7 +142,7 @@ def _holds(entry: dict, argv: list[str]) -> bool:
         if want is None or st.st_mtime_ns != want[0] or st.st_size != want[1]:
             return False
     for path, want in entry["dirs"]:
-        if _mtime(path) != want:
+        if folder_mtime(path) != want:
             return False
     exists = os.path.exists
     return all(exists(path) == want for path, want in entry["exist"])
@@ -173,7 +159,7 @@ def _settings_inputs(paths: list[str]) -> tuple[dict, dict]:
         while here not in seen:  # (many paths given share their parents)
             seen.add(here)
             for name in CONFIG_FILES:
-                files[os.path.join(here, name)] = _stat(os.path.join(here, name))
+                files[os.path.join(here, name)] = file_stamp(os.path.join(here, name))
             for name in VCS_MARKERS:
                 exist[os.path.join(here, name)] = os.path.exists(os.path.join(here, name))
             parent = os.path.dirname(here)
@@ -188,10 +174,10 @@ def _own_files() -> tuple[dict, dict]:
     files, dirs = {}, {}
     for dirpath, dirnames, filenames in os.walk(_PACKAGE):
         dirnames[:] = [d for d in dirnames if d != "__pycache__"]
-        dirs[dirpath] = _mtime(dirpath)
+        dirs[dirpath] = folder_mtime(dirpath)
         for f in filenames:
             if f.endswith((".py", ".json")):
-                files[os.path.join(dirpath, f)] = _stat(os.path.join(dirpath, f))
+                files[os.path.join(dirpath, f)] = file_stamp(os.path.join(dirpath, f))
     return files, dirs
 
 
@@ -213,9 +199,9 @@ def remember(
         own_files, own_dirs = _own_files()
         files.update(own_files)
         if config is not None:
-            files[os.path.abspath(config)] = _stat(config)
+            files[os.path.abspath(config)] = file_stamp(config)
         for p in paths:
-            files[os.path.abspath(p)] = _stat(p)
+            files[os.path.abspath(p)] = file_stamp(p)
         files.update(watch["files"])
         dirs = {**own_dirs, **watch["dirs"]}
         entry = {

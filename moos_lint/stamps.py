@@ -1,0 +1,27 @@
+"""What the caches compare a file or folder by, without reading it.
+
+A file's stamp is its (modification time in ns, size); a folder's is its
+modification time, which changes when an entry is added, removed or renamed.
+Either is None for a path that cannot be stat'ed. No imports beyond ``os``: the
+replay of an unchanged run (:mod:`moos_lint.replay`) uses them before anything
+else loads.
+"""
+
+from __future__ import annotations
+
+import os
+
+
+def file_stamp(path: str) -> tuple[int, int] | None:
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_mtime_ns, st.st_size
+
+
+def folder_mtime(path: str) -> int | None:
+    try:
+        return os.stat(path).st_mtime_ns
+    except OSError:
+        return None
