@@ -39,6 +39,8 @@ import contextlib
 import glob
 import os
 import re
+import threading
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -259,6 +261,10 @@ class _Builder:
         self.run = run
         self.cat = catalogue_for(run)
         self.m = MissionModel(path=path, moos=moos, catalogue=self.cat)
+        #: what the model read besides its own file: each ``behaviors =`` value resolved
+        #: (value, folder, paths found, ok) and each behavior file's expansion
+        self.behavior_lookups: list[tuple[str, str, tuple[list[str], bool]]] = []
+        self.behavior_expansions: list[tuple[str, Any]] = []
 
     def add(
         self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
@@ -324,6 +330,7 @@ class _Builder:
         folder = os.path.dirname(self.m.path)
         for param in proc.block.get("behaviors"):
             paths, ok = behavior_paths(param.value, folder)
+            self.behavior_lookups.append((param.value, folder, (paths, ok)))
             if not ok:
                 self.m.unresolved_behaviors.append(param.value.strip())
             for path in paths:
@@ -353,6 +360,7 @@ class _Builder:
         if pre is None:
             return None
         exp = pre.expand(path)
+        self.behavior_expansions.append((path, exp))
         if exp.read_problem is not None:
             return None
         return _parsed(self.run, pre, exp, parse_bhv)
@@ -393,11 +401,66 @@ def _app_publishers(run: Any, app: AppInfo, process: str) -> list[tuple[str, Pub
 
 def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:
     """What another mission of the folder publishes, as (key, publisher) in the order a
-    mission's model takes them; once per run (models are only read, so they share them)."""
+    mission's model takes them; once per run (models are only read, so they share them),
+    and kept across runs while all it was made from is unchanged (see :class:`_Kept`)."""
     memo = _run_memo(run, "_external_publishers")
     if path in memo:
         return memo[path]
-    sub = _sibling_model(run, path, moos)
+    cat = catalogue_for(run)
+    with _KEPT_LOCK:
+        kept = _KEPT.get(path)
+    if kept is not None and kept.holds(run, moos, cat):
+        memo[path] = kept.publishers
+        return kept.publishers
+    builder = _Builder(run, path, moos)
+    builder.m.inbound = []  # do not recurse
+    memo[path] = out = _publishers_of(path, _build_without_siblings(builder))
+    if cat.inputs is not None:
+        with _KEPT_LOCK:
+            _KEPT[path] = _Kept(moos, cat.inputs, builder, out)
+            _KEPT.move_to_end(path)
+            while len(_KEPT) > _KEPT_SIZE:
+                _KEPT.popitem(last=False)
+    return out
+
+
+class _Kept:
+    """What a sibling mission publishes, kept from one run to the next (the language
+    server re-lints a mission at every edit, and its siblings rarely change).
+
+    It holds while the sibling's parsed file is the very same object (the
+    kept expansion of an unchanged file), the catalogue was made from the same
+    inputs, each ``behaviors =`` value resolves to the same files, and each
+    behavior file read is the same kept expansion.
+    """
+
+    __slots__ = ("catalogue", "expansions", "lookups", "moos", "publishers")
+
+    def __init__(self, moos: MoosFile, catalogue: tuple, builder: _Builder, publishers: list):
+        self.moos = moos
+        self.catalogue = catalogue
+        self.lookups = list(builder.behavior_lookups)
+        self.expansions = list(builder.behavior_expansions)
+        self.publishers = publishers
+
+    def holds(self, run: Any, moos: MoosFile, cat: Catalogue) -> bool:
+        if moos is not self.moos or cat.inputs is None or cat.inputs != self.catalogue:
+            return False
+        if any(behavior_paths(v, folder) != found for v, folder, found in self.lookups):
+            return False
+        pre = getattr(run, "preprocessor", None)
+        if pre is None:
+            return False
+        return all(pre.expand(p) is exp for p, exp in self.expansions)
+
+
+_KEPT: OrderedDict[str, _Kept] = OrderedDict()
+_KEPT_SIZE = 64
+_KEPT_LOCK = threading.Lock()
+
+
+def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
+    """A sibling's model's publishers, as the missions beside it see them."""
     who = f"{os.path.basename(path)} (another community)"
     found = []
     for var, pubs in sub.publishers.items():
@@ -415,8 +478,7 @@ def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str,
             found.extend(
                 _publisher("*" + suf, who, "external") for suf in proc.app.publish_suffixes
             )
-    memo[path] = out = [f for f in found if f is not None]
-    return out
+    return [f for f in found if f is not None]
 
 
 def _run_memo(run: Any, name: str) -> dict:
@@ -438,16 +500,6 @@ def _parsed(run: Any, pre: Any, exp: Any, parse: Any) -> Any:
     from moos_lint.nsplug import parsed
 
     return parsed(exp, parse)
-
-
-def _sibling_model(run: Any, path: str, moos: MoosFile) -> MissionModel:
-    """The model of another mission of the folder, without its own siblings; once per run."""
-    memo = _run_memo(run, "_sibling_models")
-    if path not in memo:
-        other = _Builder(run, path, moos)
-        other.m.inbound = []  # do not recurse
-        memo[path] = _build_without_siblings(other)
-    return memo[path]
 
 
 def _build_without_siblings(b: _Builder) -> MissionModel:

@@ -344,3 +344,82 @@ def test_a_changed_poke_script_is_read_again(tmp_path):
     assert waits() == ["GO_HOME"]
     (tmp_path / "go.sh").write_text("uPokeDB m.moos GO_HOME=true\n")
     assert waits() == []
+
+
+def test_what_a_sibling_publishes_is_kept_across_editor_runs_while_unchanged(tmp_path, monkeypatch):
+    """The language server re-lints a mission at every edit; the publishers of the missions
+    beside it are kept from one run to the next only while nothing they came from changed:
+    the sibling mission, its behavior files (text and which files a name resolves to)."""
+    from moos_lint import mission_model as mm
+    from moos_lint.lsp.analysis import analyse
+
+    shore = tmp_path / "shore.moos"
+    shore.write_text(
+        "ServerPort = 9000\nCommunity = shoreside\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = pShare @ NewConsole = false\n"
+        "  Run = uTimerScript @ NewConsole = false\n}\n\n"
+        "ProcessConfig = uTimerScript\n{\n  condition = SURVEY_DONE = true\n"
+        "  event = var=RETURN_ALL, val=true, time=1\n}\n"
+    )
+    (tmp_path / "vehicle.moos").write_text(
+        "ServerPort = 9001\nCommunity = abe\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = pHelmIvP @ NewConsole = false\n}\n\n"
+        "ProcessConfig = pHelmIvP\n{\n  behaviors = vehicle.bhv\n}\n"
+    )
+    bhv = tmp_path / "vehicle.bhv"
+
+    def behaviors(flag: str) -> str:
+        return f"Behavior = BHV_Waypoint\n{{\n  name = survey\n  endflag = {flag} = true\n}}\n"
+
+    built: list[str] = []
+    real = mm._build_without_siblings
+    monkeypatch.setattr(mm, "_build_without_siblings", lambda b: built.append(b.m.path) or real(b))
+    monkeypatch.setattr(mm, "_KEPT", mm.OrderedDict())
+
+    def waits() -> list[str]:
+        found = analyse(str(shore), {}).findings
+        return [f.diagnostic.message.split("`")[1] for f in found if f.diagnostic.code == "M005"]
+
+    bhv.write_text(behaviors("SURVEY_DONE"))
+    assert waits() == [] and len(built) == 1
+    assert waits() == [] and len(built) == 1  # kept: nothing changed
+    bhv.write_text(behaviors("SURVEY_OVER"))  # the sibling's behavior file changes
+    assert waits() == ["SURVEY_DONE"] and len(built) == 2
+    bhv.unlink()  # the name now resolves to no file
+    (tmp_path / "vehicle_b.bhv").write_text(behaviors("SURVEY_DONE"))
+    assert waits() == ["SURVEY_DONE"] and len(built) == 3
+    vehicle = tmp_path / "vehicle.moos"  # the sibling mission itself changes
+    vehicle.write_text(vehicle.read_text().replace("vehicle.bhv", "vehicle_b.bhv"))
+    assert waits() == [] and len(built) == 4
+    assert waits() == [] and len(built) == 4
+
+
+def test_a_kept_sibling_follows_a_changed_user_catalogue(tmp_path, monkeypatch):
+    from moos_lint import mission_model as mm
+    from moos_lint.lsp.analysis import analyse
+
+    monkeypatch.setattr(mm, "_KEPT", mm.OrderedDict())
+    (tmp_path / "moos-lint.toml").write_text('catalogues = ["apps.toml"]\n')
+    apps = tmp_path / "apps.toml"
+    apps.write_text('[apps.pSurvey]\nparams = []\npublishes = ["SURVEY_DONE"]\n')
+    shore = tmp_path / "shore.moos"
+    shore.write_text(
+        "ServerPort = 9000\nCommunity = shoreside\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = pShare @ NewConsole = false\n"
+        "  Run = uTimerScript @ NewConsole = false\n}\n\n"
+        "ProcessConfig = uTimerScript\n{\n  condition = SURVEY_DONE = true\n"
+        "  event = var=RETURN_ALL, val=true, time=1\n}\n"
+    )
+    (tmp_path / "vehicle.moos").write_text(
+        "ServerPort = 9001\nCommunity = abe\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = pSurvey @ NewConsole = false\n}\n"
+    )
+
+    def waits() -> list[str]:
+        found = analyse(str(shore), {}).findings
+        return [f.diagnostic.message.split("`")[1] for f in found if f.diagnostic.code == "M005"]
+
+    assert waits() == []
+    assert waits() == []
+    apps.write_text('[apps.pSurvey]\nparams = []\npublishes = ["SURVEY_OVER_NOW"]\n')
+    assert waits() == ["SURVEY_DONE"]

@@ -93,6 +93,10 @@ class Catalogue:
         self.behaviors: dict[str, BehaviorInfo] = {}
         self.generic_behavior_params: set[str] = set()
         self.source: dict[str, str] = {}
+        #: what a lint run's catalogue was made from (the stock catalogue, each user
+        #: catalogue file's (mtime, size)): two catalogues with equal inputs say the
+        #: same. None when it also holds the run's own C++ apps (made anew each run).
+        self.inputs: tuple | None = None
 
     def app(self, name: str) -> AppInfo | None:
         return self.apps.get(name.lower())
@@ -329,9 +333,14 @@ def catalogue_for(run: Any) -> Catalogue:
     cached = getattr(run, "_catalogue", None)
     if cached is not None:
         return cached
-    cat = stock().copy()
+    from moos_lint.stamps import file_stamp
+
+    base = stock()
+    cat = base.copy()
     settings = getattr(run, "settings", None)
-    for path in getattr(settings, "catalogues", []) or []:
+    user = list(getattr(settings, "catalogues", []) or [])
+    inputs: tuple | None = (id(base), tuple((p, file_stamp(p)) for p in user))
+    for path in user:
         # the config loader validated the file; a file broken since is skipped
         with contextlib.suppress(CatalogueError):
             load_user_catalogue(path, cat)
@@ -339,6 +348,8 @@ def catalogue_for(run: Any) -> Catalogue:
         app = getattr(unit, "cpp", None)
         if app is not None and getattr(app, "is_app", False) and app.process_name:
             cat.add_app(_repo_app(app))
+            inputs = None
+    cat.inputs = inputs
     with contextlib.suppress(AttributeError):
         run._catalogue = cat
     return cat
