@@ -37,6 +37,7 @@ from typing import Any
 
 from moos_lint.diagnostics import IncludeSite, Span
 from moos_lint.source import ReadProblem, SourceFile, read_source
+from moos_lint.stamps import folder_mtime
 
 DIRECTIVES = ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif", "#include", "#define")
 #: A macro whose value depends on the branch taken: its value is unknown.
@@ -223,7 +224,7 @@ class ExpansionStore:
             now = pre.cache.get(src)
             if not isinstance(now, SourceFile) or now.text != text:
                 return None
-        if any(_mtime(d) != m for d, m in folders.items()):
+        if any(folder_mtime(d) != m for d, m in folders.items()):
             return None
         self._entries.move_to_end(key)
         return exp
@@ -232,20 +233,14 @@ class ExpansionStore:
         if exp.read_problem is not None or exp.incomplete:
             return
         texts = {src: sf.text for src, sf in exp.sources.items()}
-        folders = {d: _mtime(d) for d in {os.path.dirname(p) for p in texts} | {*pre.include_paths}}
+        read_from = {os.path.dirname(p) for p in texts} | {*pre.include_paths}
+        folders = {d: folder_mtime(d) for d in read_from}
         if any(m is None for m in folders.values()):
             return
         with self._lock:
             self._entries[self._key(pre, path)] = (exp, texts, folders)
             while len(self._entries) > self.size:
                 self._entries.popitem(last=False)
-
-
-def _mtime(folder: str) -> int | None:
-    try:
-        return os.stat(folder).st_mtime_ns
-    except OSError:
-        return None
 
 
 class FileCache:
