@@ -1,3 +1,3 @@
-from moos_lint.cli import main
+from moos_lint.cli import run
 
-raise SystemExit(main())
+run()

@@ -48,6 +48,8 @@ import time
 from pathlib import Path
 
 MIN_RUNS = 5
+#: the console script's entry point, as ``[project.scripts]`` in pyproject.toml names it
+ENTRY_POINT = "moos_lint.cli:run"
 
 
 #: the console script and the interpreter of the measured installation (see above)
@@ -88,9 +90,10 @@ def clean_install(folder: str) -> tuple[str, str, dict[str, str]]:
         fh.write("".join(f"{r}\n" for r in roots))  # paths only: no import lines run
     script = os.path.join(bindir, "moos-lint")
     with open(script, "w", encoding="utf-8") as fh:  # what pip writes for [project.scripts]
+        module, function = ENTRY_POINT.split(":")
         fh.write(
-            f"#!{python}\nimport sys\nfrom moos_lint.cli import main\n"
-            'if __name__ == "__main__":\n    sys.exit(main())\n'
+            f"#!{python}\nimport sys\nfrom {module} import {function}\n"
+            f'if __name__ == "__main__":\n    sys.exit({function}())\n'
         )
     os.chmod(script, 0o755)
     env = dict(os.environ)

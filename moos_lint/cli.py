@@ -241,6 +241,26 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
     return parser
 
 
+def run() -> None:
+    """``moos-lint`` as a program (the console script and ``python -m moos_lint``):
+    :func:`main`, then exit without tearing the interpreter down.
+
+    A lint leaves hundreds of thousands of objects behind; freeing them one by
+    one, module by module, and the garbage collection Python runs on the way
+    out cost about 0.1 s after the report was written, a tenth of a cold run.
+    Everything written goes through files that are closed, or through the
+    standard streams, which are flushed first.
+    """
+    status = main()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            if stream is not None and not stream.closed:  # (the server closes stdout)
+                stream.flush()
+        except OSError:  # the reader went away (``| head``)
+            status = EXIT_ERROR
+    os._exit(status)
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     if argv == ["--version"]:  # the one answer that needs no parser

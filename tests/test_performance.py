@@ -688,3 +688,27 @@ def test_the_server_settles_before_it_takes_requests(monkeypatch):
     monkeypatch.setattr(lsp_server, "settle", lambda: order.append("settle"))
     assert lsp_server.serve(catalogue=lsp_server.EMPTY) == 0
     assert order == ["create", "settle", "start_io"]
+
+
+def test_the_benchmark_runs_the_console_script_pip_installs():
+    import tomllib
+
+    from moos_lint import benchmark
+
+    root = Path(__file__).resolve().parents[1]
+    data = tomllib.loads((root / "pyproject.toml").read_text(encoding="utf-8"))
+    assert data["project"]["scripts"]["moos-lint"] == benchmark.ENTRY_POINT
+
+
+def test_the_program_flushes_its_report_and_keeps_its_exit_status(tree):
+    """``moos-lint`` skips the interpreter's teardown: the report still arrives whole."""
+    (tree / "plug.moos").write_text(PLUG + "}\n")  # a finding
+    args = [sys.executable, "-m", "moos_lint", "check", str(tree), "--no-cache"]
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}  # buffered, as usual
+    json_run = [*args, "--output-format", "json"]
+    out = subprocess.run(json_run, capture_output=True, timeout=120, env=env)
+    assert out.returncode == 1 and json.loads(out.stdout)
+    fresh = _json(engine.lint_paths([tree], _settings(tree)))
+    assert json.loads(out.stdout) == fresh
+    clean = subprocess.run([*args, "--exit-zero", "-q"], capture_output=True, timeout=120, env=env)
+    assert clean.returncode == 0 and b"plug.moos" in clean.stdout
