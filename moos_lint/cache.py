@@ -64,7 +64,7 @@ from pathlib import Path
 
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR
-from moos_lint.stamps import file_stamp, folder_mtime
+from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
@@ -88,17 +88,9 @@ def cache_dir_for(settings: Any) -> str:
 
 
 def _code_fingerprint() -> list:
-    """The version, and each of moos-lint's own files' (name, size, mtime)."""
-    out: list = [__version__, FORMAT]
-    for dirpath, dirnames, filenames in os.walk(_PACKAGE):
-        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
-        for f in sorted(filenames):
-            if f.endswith((".py", ".json")):
-                with contextlib.suppress(OSError):
-                    st = os.stat(os.path.join(dirpath, f))
-                    out.append((os.path.relpath(os.path.join(dirpath, f), _PACKAGE), st.st_size))
-                    out.append(st.st_mtime_ns)
-    return out
+    """The version, and each of moos-lint's own files' (name, (mtime, size))."""
+    files, _folders = package_stamps(_PACKAGE)
+    return [__version__, FORMAT, *((os.path.relpath(p, _PACKAGE), st) for p, st in files.items())]
 
 
 def run_key(settings: Any, paths: list[Path], files: list[str], context: bool) -> str:
@@ -181,7 +173,7 @@ def _valid(entry: dict) -> dict | None:
 
 def _valid_header(fh: Any, key: str) -> dict | None:
     """The entry's header (key, token, dependencies) when it is for ``key`` and still
-    valid; ``watch`` holds what validated it (see :func:`_watch`)."""
+    valid; its ``watch`` holds the stats that validated it (see :func:`_watch`)."""
     header = pickle.load(fh)
     if not isinstance(header, dict) or header.get("key") != key:
         return None
@@ -192,11 +184,11 @@ def _valid_header(fh: Any, key: str) -> dict | None:
     return header
 
 
-def _watch(header: dict, folders: dict[str, int | None]) -> dict:
+def _watch(watch: dict, folders: dict[str, int | None]) -> dict:
     """What a result depends on, in stat terms: each file's (mtime, size) and each
-    folder's mtime (the walked folders and the run entry's). :mod:`moos_lint.replay`
-    checks these before anything else loads."""
-    return {"files": header["watch"]["files"], "dirs": {**header["watch"]["dirs"], **folders}}
+    folder's mtime (the run entry's ``watch`` and the folders discovery walked).
+    :mod:`moos_lint.replay` checks these before anything else loads."""
+    return {"files": watch["files"], "dirs": {**watch["dirs"], **folders}}
 
 
 def load(folder: str, key: str) -> Any | None:
@@ -236,20 +228,20 @@ def store(
         os.makedirs(folder, exist_ok=True)
         ignore = os.path.join(folder, ".gitignore")
         if not os.path.exists(ignore):
-            _atomic_write(folder, ignore, b"# created by moos-lint\n*\n")
+            atomic_write(folder, ignore, b"# created by moos-lint\n*\n")
         token = os.urandom(12).hex()  # names this very entry (outputs refer to it)
         deps = _dependencies(result, settings, read, probed)
         header = {"key": key, "token": token, "deps": deps}
         # the header first: a run that only validates the entry never unpickles the findings
         data = pickle.dumps(header, protocol=pickle.HIGHEST_PROTOCOL)
         data += pickle.dumps(slim, protocol=pickle.HIGHEST_PROTOCOL)
-        _atomic_write(folder, os.path.join(folder, f"run-{key}.pickle"), data)
+        atomic_write(folder, os.path.join(folder, f"run-{key}.pickle"), data)
         result.cache_token = token
         result.cache_watch = {
             "files": {p: st for p, (st, _digest) in deps["files"].items()},
             "dirs": dict(deps["dirs"]),
         }
-        _prune(folder)
+        prune(folder)
     except Exception:
         return
 
@@ -269,8 +261,8 @@ def store_output(folder: str, result: Any, render_key: str, text: str, has_findi
     entry = {"render_key": render_key, "text": text, "has_findings": has_findings}
     with contextlib.suppress(Exception):
         path = _output_path(folder, token, render_key, result.missing)
-        _atomic_write(folder, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
-        _prune(folder)
+        atomic_write(folder, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
+        prune(folder)
 
 
 def cached_output(
@@ -293,12 +285,12 @@ def cached_output(
             entry = pickle.load(fh)
         if not isinstance(entry, dict) or entry.get("render_key") != render_key:
             return None
-        return entry["text"], bool(entry["has_findings"]), _watch(header, folders)
+        return entry["text"], bool(entry["has_findings"]), _watch(header["watch"], folders)
     except Exception:  # no entry, a changed run, or a corrupt file: render afresh
         return None
 
 
-def _prune(folder: str) -> None:
+def prune(folder: str) -> None:
     """Keep the :data:`KEEP` most recently written entries of each kind (runs, file
     lists, reports)."""
     kinds: dict[str, list[tuple[int, str]]] = {}
@@ -314,7 +306,7 @@ def _prune(folder: str) -> None:
                 os.unlink(os.path.join(folder, name))
 
 
-def _atomic_write(folder: str, path: str, data: bytes) -> None:
+def atomic_write(folder: str, path: str, data: bytes) -> None:
     import tempfile  # only when an entry is written
 
     fd, tmp = tempfile.mkstemp(dir=folder, prefix=".tmp-", suffix=".part")
@@ -368,7 +360,7 @@ def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, di
     if all(m is not None for m in folders.values()):
         entry = {"key": key, "folders": folders, "files": found.files, "missing": found.missing}
         with contextlib.suppress(Exception):
-            _atomic_write(cache_dir, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
+            atomic_write(cache_dir, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
     return found, folders
 
 
@@ -381,7 +373,7 @@ def cached_lint(
     hit = load(cache_dir, key)
     if hit is not None:
         hit.missing = list(found.missing)
-        hit.cache_watch = _watch({"watch": hit.cache_watch}, folders)
+        hit.cache_watch = _watch(hit.cache_watch, folders)
         return hit
     from moos_lint.engine import lint_paths  # the parsers and rules: only on a miss
     from moos_lint.nsplug import FileCache
@@ -391,16 +383,18 @@ def cached_lint(
     if not result.internal_errors:  # a crash is never replayed from the cache
         store(cache_dir, key, result, settings, reader.paths(), reader.probed)
         if result.cache_watch is not None:
-            result.cache_watch = _watch({"watch": result.cache_watch}, folders)
+            result.cache_watch = _watch(result.cache_watch, folders)
     return result
 
 
 __all__ = [
     "CACHE_DIR",
+    "atomic_write",
     "cache_dir_for",
     "cached_lint",
     "cached_output",
     "load",
+    "prune",
     "run_key",
     "store",
     "store_output",

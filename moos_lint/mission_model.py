@@ -391,12 +391,12 @@ def _app_publishers(run: Any, app: AppInfo, process: str) -> list[tuple[str, Pub
     """The (key, publisher) of each variable ``app`` publishes, launched as ``process``;
     once per run (many missions launch the same apps under the same names)."""
     memo = _run_memo(run, "_app_publishers")
-    key = (id(app), process)
+    key = (id(app), process)  # (the run's catalogue holds the app: its id stays its own)
     found = memo.get(key)
-    if found is None or found[0] is not app:
+    if found is None:
         pubs = (_publisher(var, process, "app", process=process) for var in app.publishes)
-        found = memo[key] = (app, [p for p in pubs if p is not None])
-    return found[1]
+        found = memo[key] = [p for p in pubs if p is not None]
+    return found
 
 
 def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:

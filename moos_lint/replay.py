@@ -44,7 +44,7 @@ import sys
 
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR, CONFIG_FILES, VCS_MARKERS
-from moos_lint.stamps import file_stamp, folder_mtime
+from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
 
 #: bump when the entry layout changes
 FORMAT = 1
@@ -131,7 +131,7 @@ def replay(argv: list[str]) -> int | None:
 def _holds(entry: dict, argv: list[str]) -> bool:
     if entry.get("identity") != identity(argv):
         return False
-    stat = os.stat
+    stat = os.stat  # (``file_stamp``, inlined: this loop runs over thousands of files)
     for path, want in entry["files"]:
         try:
             st = stat(path)
@@ -169,18 +169,6 @@ def _settings_inputs(paths: list[str]) -> tuple[dict, dict]:
     return files, exist
 
 
-def _own_files() -> tuple[dict, dict]:
-    """moos-lint's own files and folders: a changed install is a different run."""
-    files, dirs = {}, {}
-    for dirpath, dirnames, filenames in os.walk(_PACKAGE):
-        dirnames[:] = [d for d in dirnames if d != "__pycache__"]
-        dirs[dirpath] = folder_mtime(dirpath)
-        for f in filenames:
-            if f.endswith((".py", ".json")):
-                files[os.path.join(dirpath, f)] = file_stamp(os.path.join(dirpath, f))
-    return files, dirs
-
-
 def remember(
     cache_dir: str,
     argv: list[str],
@@ -196,7 +184,7 @@ def remember(
     report was written, None for stdout). Never raises."""
     try:
         files, exist = _settings_inputs(paths)
-        own_files, own_dirs = _own_files()
+        own_files, own_dirs = package_stamps(_PACKAGE)  # moos-lint's own code
         files.update(own_files)
         if config is not None:
             files[os.path.abspath(config)] = file_stamp(config)
@@ -213,9 +201,9 @@ def remember(
             "status": status,
             "output_file": output_file,
         }
-        from moos_lint.cache import _atomic_write, _prune
+        from moos_lint.cache import atomic_write, prune
 
-        _atomic_write(cache_dir, os.path.join(cache_dir, entry_name(argv)), marshal.dumps(entry))
-        _prune(cache_dir)
+        atomic_write(cache_dir, os.path.join(cache_dir, entry_name(argv)), marshal.dumps(entry))
+        prune(cache_dir)
     except Exception:
         return

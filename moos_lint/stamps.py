@@ -25,3 +25,17 @@ def folder_mtime(path: str) -> int | None:
         return os.stat(path).st_mtime_ns
     except OSError:
         return None
+
+
+def package_stamps(root: str) -> tuple[dict[str, tuple[int, int] | None], dict[str, int | None]]:
+    """The stamp of each ``.py`` and ``.json`` file below ``root`` and the mtime of each
+    folder there (``__pycache__`` left out): what moos-lint's own code is, for the caches."""
+    files: dict[str, tuple[int, int] | None] = {}
+    folders: dict[str, int | None] = {}
+    for dirpath, dirnames, filenames in os.walk(root):
+        dirnames[:] = sorted(d for d in dirnames if d != "__pycache__")
+        folders[dirpath] = folder_mtime(dirpath)
+        for name in sorted(filenames):
+            if name.endswith((".py", ".json")):
+                files[os.path.join(dirpath, name)] = file_stamp(os.path.join(dirpath, name))
+    return files, folders

@@ -41,9 +41,9 @@ def settle() -> None:
 
     Python's cyclic collector, on a full collection, walks every object it
     tracks: after the imports, the rules and the stock catalogue, about 50,000,
-    and a walk took about 40 ms, a pause that lands in some re-lint and that an
-    editor feels. Frozen (:func:`gc.freeze`), those objects are never walked
-    again; they live as long as the server anyway. What the server makes later
+    and such a walk is a pause that lands in the middle of some re-lint.
+    Frozen (:func:`gc.freeze`), those objects are never walked again; they live
+    as long as the server anyway. What the server makes later
     (the documents' expansions and models, which hold reference cycles) is
     collected as before. Only the first call does anything.
     """
