@@ -26,3 +26,13 @@ def pytest_unconfigure(config):
     if _CACHE is not None:
         os.environ.pop("MOOS_LINT_CACHE_DIR", None)
         shutil.rmtree(_CACHE, ignore_errors=True)
+
+
+def pytest_addoption(parser):
+    parser.addoption(
+        "--snapshot-update",
+        action="store_true",
+        default=False,
+        help="rewrite the rules' snapshots (fixtures/rules/<rule>/snapshot.txt) from what "
+        "the rules report now; review their diff like code",
+    )
