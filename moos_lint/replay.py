@@ -19,7 +19,8 @@ paths given, moos-lint's own files, and what decides the settings and the
 project root: each folder at and above the paths given is checked for the
 config files (their (mtime, size), or their absence) and for the
 version-control folders (their presence). The environment variables moos-lint
-reads are part of the entry's identity.
+reads and the folder moos-lint is installed in are part of the entry's
+identity (another checkout of the same version is another program).
 
 **Where it is found.** An entry lives in the cache folder of the run that
 wrote it. Without parsing the command line, the replay looks in
@@ -54,11 +55,13 @@ _PACKAGE = os.path.dirname(os.path.abspath(__file__))
 
 
 def identity(argv: list[str]) -> list:
-    """What an entry must have been written for: version, interpreter, command line,
-    working folder and environment."""
+    """What an entry must have been written for: version, where moos-lint is installed
+    (two checkouts of one version are two programs), interpreter, command line, working
+    folder and environment."""
     return [
         __version__,
         FORMAT,
+        _PACKAGE,
         sys.version,
         list(argv),
         os.getcwd(),

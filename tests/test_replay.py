@@ -214,3 +214,32 @@ def test_a_list_of_files_as_pre_commit_passes_them(tree, capsys):
     (tree / "shared.bhv").write_text(BEHAVIORS + "\nBehavior = BHV_Loiter\n{\n")
     assert _replayed(argv, capsys) is None
     assert _run(argv, capsys) == _fresh(argv, capsys) != before
+
+
+def test_a_second_checkout_of_the_same_version_lints_afresh(tree, tmp_path):
+    """The replay is keyed on where moos-lint is installed: another checkout of the same
+    version (its code edited, say) never prints the report the first checkout left."""
+    import shutil
+
+    checkout = tmp_path / "checkout"
+    package = Path(replay.__file__).resolve().parent
+    shutil.copytree(package, checkout / "moos_lint", ignore=shutil.ignore_patterns("__pycache__"))
+    linted = tmp_path / "linted-by-the-second-checkout"
+    with open(checkout / "moos_lint" / "engine.py", "a", encoding="utf-8") as fh:
+        fh.write(f"\nopen({str(linted)!r}, 'w').close()  # this checkout lints\n")
+
+    def run(pythonpath: str | None) -> subprocess.CompletedProcess:
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+        if pythonpath:
+            env["PYTHONPATH"] = pythonpath
+        cmd = [sys.executable, "-m", "moos_lint", "check", "."]
+        return subprocess.run(cmd, capture_output=True, text=True, timeout=120, cwd=tree, env=env)
+
+    first = run(None)
+    assert first.returncode == 1 and "R0" in first.stdout, first.stderr
+    assert list((tree / ".moos_lint_cache").glob("replay-*"))  # an entry to replay
+    assert not linted.exists()
+    second = run(str(checkout))
+    assert second.returncode == 1, second.stderr
+    assert linted.exists(), "the second checkout printed the first checkout's stored report"
+    assert second.stdout == first.stdout
