@@ -130,7 +130,7 @@ def _fixed_files(run: FolderRun, paths: _Paths) -> list[str]:
         out += ["", f"-- {paths.rel(doc.path)}"]
         out += _file_text(doc.text)
     left = [d for d in outcome.result.diagnostics if d.code == run.rule.code]
-    out += ["", f"== {run.kind}: findings of {run.rule.code} left after the fixes: {len(left)}"]
+    out += ["", f"== {run.kind}: {run.rule.code} findings left after the fixes: {len(left)}"]
     out += [
         f"{paths.rel(d.span.path)}:{d.span.line}:{d.span.col}: {_value(paths.text(d.message))}"
         + (" (offers a fix)" if d.fix is not None else "")
@@ -150,7 +150,7 @@ def render(rule, runs: dict[str, FolderRun]) -> str:
     for kind in FOLDERS:
         run = runs[kind]
         found = run.findings
-        out += ["", f"== {kind}: {len(found)} findings"]
+        out += ["", f"== {kind}: {len(found)} finding{'' if len(found) == 1 else 's'}"]
         for d in found:
             out.append("")
             out += _finding(d, paths)
