@@ -38,12 +38,11 @@ import os
 from collections import Counter
 from dataclasses import dataclass, field
 
-from moos_lint.diagnostics import Diagnostic
+from moos_lint.diagnostics import INTERNAL_ERROR, Diagnostic
 
 FORMAT_KEY = "moos-lint-baseline"
 FORMAT_VERSION = 1
 MAX_SNIPPET = 120
-INTERNAL_ERROR = "L900"
 
 
 class BaselineError(Exception):

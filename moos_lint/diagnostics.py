@@ -5,6 +5,9 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 
+#: the code of a finding that says moos-lint itself failed (the run goes on)
+INTERNAL_ERROR = "L900"
+
 
 class Severity(enum.Enum):
     ERROR = "error"
@@ -51,6 +54,16 @@ class Fix:
     edits: tuple[Edit, ...]
 
 
+@dataclass(frozen=True, slots=True)
+class Subject:
+    """What a finding is about, for tools that read findings (the graph): never parsed
+    out of the message. Each field is None when the finding is not about one."""
+
+    variable: str | None = None  # a MOOS variable
+    app: str | None = None  # a MOOS app or behavior (as launched or declared)
+    key: str | None = None  # a configuration key (lower case)
+
+
 @dataclass(slots=True)
 class Diagnostic:
     code: str
@@ -61,14 +74,16 @@ class Diagnostic:
     chain: tuple[IncludeSite, ...] = ()
     fix: Fix | None = None
     notes: list[str] = field(default_factory=list)
+    #: what the finding is about (not part of its identity: the message says it too)
+    subject: Subject | None = None
 
     @property
-    def sort_key(self) -> tuple:
+    def sort_key(self) -> tuple[str, int, int, str, str]:
         s = self.span
         return (s.path, s.line, s.col, self.code, self.message)
 
     @property
-    def identity(self) -> tuple:
+    def identity(self) -> tuple[str, str, int, int, int, int, str]:
         """Two findings with one identity are one finding (reached twice through includes)."""
         s = self.span
         return (self.code, s.path, s.line, s.col, s.end_line, s.end_col, self.message)

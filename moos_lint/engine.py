@@ -12,34 +12,32 @@ import traceback
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from moos_lint.config import Settings
-from moos_lint.diagnostics import Diagnostic, Fix, IncludeSite, Severity, Span
+from moos_lint.diagnostics import (
+    INTERNAL_ERROR,
+    Diagnostic,
+    Fix,
+    IncludeSite,
+    Severity,
+    Span,
+    Subject,
+)
 from moos_lint.discovery import discover, kind_of
 from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
-from moos_lint.registry import Kind, Rule, Scope, select_rules
+from moos_lint.registry import Kind, Rule, Scope, get_rule, matches, select_rules
 from moos_lint.result import Result
+from moos_lint.run_state import RunMemos
 from moos_lint.source import ReadProblem, SourceFile
 from moos_lint.suppressions import Suppression, parse_suppressions
+from moos_lint.unit import Unit
 
-INTERNAL_ERROR = "L900"
-
-
-@dataclass
-class Unit:
-    """One linted file: its expansion and its model."""
-
-    path: str
-    kind: Kind
-    expansion: Expansion
-    moos: MoosFile | None = None
-    bhv: BehaviorFile | None = None
-    #: C++ units (one folder of C++ files): the app model, a ``moos_lint.cpp.model.AppModel``
-    cpp: Any = None
+if TYPE_CHECKING:
+    from moos_lint.cpp.units import ParsedFolder
 
 
 @dataclass
@@ -49,7 +47,7 @@ class Context:
     rule: Rule
     unit: Unit
     settings: Settings
-    run: Run
+    run: LintRun
     options: dict[str, Any] = field(default_factory=dict)
 
     @property
@@ -77,6 +75,7 @@ class Context:
         chain: tuple[IncludeSite, ...] | None = None,
         fix: Fix | None = None,
         severity: Severity | None = None,
+        subject: Subject | None = None,
     ) -> Diagnostic:
         if chain is None:
             chain = line.chain if line is not None else ()
@@ -88,14 +87,15 @@ class Context:
             message=message,
             chain=chain,
             fix=fix,
+            subject=subject,
         )
 
     def at_line(self, line: Line, message: str, **kw: Any) -> Diagnostic:
         return self.report(line.span(), message, line=line, **kw)
 
 
-class Run:
-    """State shared by every unit of one lint run."""
+class LintRun:
+    """State shared by every unit of one lint run (not a MOOS ``Run =`` line)."""
 
     def __init__(self, settings: Settings, rules: list[Rule], cache: FileCache | None = None):
         self.settings = settings
@@ -114,7 +114,9 @@ class Run:
         self.units: list[Unit] = []
         self.suppressions: dict[str, list[Suppression]] = {}
         self._options: dict[str, dict[str, Any]] = {}
-        self._applicable: dict[tuple, list[Rule]] = {}
+        self._applicable: dict[tuple[Kind, bool, bool, bool], list[Rule]] = {}
+        #: what the model builders keep for the run (see :mod:`moos_lint.run_state`)
+        self.memos = RunMemos()
 
     def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
         """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
@@ -147,7 +149,7 @@ class Run:
 
     def build_unit(self, path: str) -> Unit:
         if kind_of(path) == "cpp":
-            from moos_lint.cpp.units import build_cpp_units
+            from moos_lint.cpp.units import build_cpp_units  # only for C++: it loads tree-sitter
 
             return build_cpp_units(self, [path])[0]
         kind = Kind.BHV if kind_of(path) == "bhv" else Kind.MOOS
@@ -215,16 +217,16 @@ def internal_error(path: str, what: str, exc: BaseException) -> Diagnostic:
 
 
 def _build_cpp_units(
-    run: Run, files: list[str], parsed: Iterable | None = None
+    run: LintRun, files: list[str], parsed: Iterable[Any] | None = None
 ) -> tuple[list[Unit], list[Diagnostic]]:
     """The C++ units; a folder whose C++ cannot be analysed is an internal error, not a crash.
 
     ``parsed``: the folders worker processes read and parsed, in any order.
     """
-    from moos_lint.cpp.units import build_cpp_units
+    from moos_lint.cpp.units import build_cpp_units  # only for C++: it loads tree-sitter
 
     if parsed is not None:
-        by_folder: dict[str, Any] = {}
+        by_folder: dict[str, ParsedFolder] = {}
         for paths, sources, cpp_files, _error in parsed:
             if cpp_files is None:  # redo every folder here, where errors are reported
                 by_folder = {}
@@ -258,7 +260,7 @@ def lint_files(
     files: list[str],
     settings: Settings,
     rules: list[Rule] | None = None,
-    cache=None,
+    cache: FileCache | None = None,
     jobs: int | None = 1,
     checked: Callable[[Unit], bool] | None = None,
 ) -> Result:
@@ -282,7 +284,7 @@ def lint_files(
         cpp_parsed = parallel.start_cpp(workers, cpp_files) if workers is not None else None
         if rules is None:
             rules = select_rules(settings.select, settings.extend_select, settings.ignore)
-        run = Run(settings, rules, cache)
+        run = LintRun(settings, rules, cache)
         result = Result(files=list(files))
         for path in files:
             if kind_of(path) != "cpp":
@@ -297,7 +299,7 @@ def lint_files(
             parallel.stop(workers)
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
-    found: dict[tuple, Diagnostic] = {d.identity: d for d in cpp_errors}
+    found: dict[tuple[Any, ...], Diagnostic] = {d.identity: d for d in cpp_errors}
     if checked is not None:
         per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
     elif jobs > 1 and len(run.units) > 1:
@@ -333,8 +335,6 @@ def _per_file_ignored(d: Diagnostic, settings: Settings) -> bool:
     if not settings.per_file_ignores:
         return False
     rel = os.path.relpath(d.span.path, settings.root)
-    from moos_lint.registry import get_rule, matches
-
     r = get_rule(d.code)
     for glob, selectors in settings.per_file_ignores.items():
         hit = fnmatch.fnmatch(rel, glob) or fnmatch.fnmatch(os.path.basename(rel), glob)
@@ -386,4 +386,13 @@ def lint_paths(
     return result
 
 
-__all__ = ["Context", "ReadProblem", "Result", "Run", "Unit", "lint_files", "lint_paths"]
+__all__ = [
+    "INTERNAL_ERROR",
+    "Context",
+    "LintRun",
+    "ReadProblem",
+    "Result",
+    "Unit",
+    "lint_files",
+    "lint_paths",
+]

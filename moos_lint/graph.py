@@ -21,15 +21,12 @@ from __future__ import annotations
 import html
 import json
 import os
-import re
 from dataclasses import dataclass, field
 from typing import Any
 
 from moos_lint.config import Settings
 from moos_lint.diagnostics import Diagnostic
 from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name
-
-_TICKED = re.compile(r"`([A-Za-z_][A-Za-z0-9_]*)`")
 
 
 @dataclass
@@ -57,19 +54,19 @@ class GraphError(Exception):
 
 
 def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -> Graph:
-    from moos_lint.engine import Run, lint_files
-    from moos_lint.mission_model import mission_model
+    from moos_lint.engine import LintRun, lint_files
+    from moos_lint.mission_model import model_of
     from moos_lint.registry import select_rules
 
     rules = select_rules(settings.select, settings.extend_select, settings.ignore)
-    run = Run(settings, rules)
+    run = LintRun(settings, rules)
     unit = run.build_unit(path)
     if unit.expansion.read_problem is not None:
         raise GraphError(f"{path}: {unit.expansion.read_problem.message}")
     if unit.moos is None or not unit.moos.is_mission:
         raise GraphError(f"{path}: not a mission (no ANTLER block)")
     run.units.append(unit)
-    model = mission_model(run, unit.path, unit.moos)
+    model = model_of(run, unit.path, unit.moos)
     files = [unit.path, *(p for p, _ in model.behavior_files)]
     result = lint_files(files, settings)
     diags = [d for d in result.diagnostics if _concerns(d, files, model)]
@@ -149,7 +146,7 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
             {
                 "id": "v:" + var,
                 "name": var,
-                "findings": [_finding(d) for d in diags if var in _ticked(d)],
+                "findings": [_finding(d) for d in diags if _variable(d) == var],
             }
         )
         for proc, how in sorted(pub.get(var, {}).items()):
@@ -176,15 +173,18 @@ def _concerns(d: Diagnostic, files: list[str], model) -> bool:
     )
 
 
-def _ticked(d: Diagnostic) -> set[str]:
-    return set(_TICKED.findall(d.message))
+def _variable(d: Diagnostic) -> str | None:
+    """The variable a finding is about, as the rule that made it says."""
+    return d.subject.variable if d.subject is not None else None
 
 
 def _flagged_vars(diags: list[Diagnostic]) -> set[str]:
+    """Variables that the publish/subscribe rules report."""
     out: set[str] = set()
     for d in diags:
-        if d.code in ("M005", "M006"):
-            out |= _ticked(d)
+        var = _variable(d)
+        if d.code in ("M005", "M006") and var:
+            out.add(var)
     return out
 
 

@@ -35,18 +35,20 @@ pairs that a ``uPokeDB`` command in a shell script beside the mission posts.
 
 from __future__ import annotations
 
-import contextlib
 import glob
 import os
 import re
 import threading
 from collections import OrderedDict
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Protocol
 
 from moos_lint.catalogue import AppInfo, Catalogue, catalogue_for
 from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
-from moos_lint.nsplug import Line
+from moos_lint.nsplug import Expansion, Line, parsed
+from moos_lint.parsers.bhv import parse_bhv
+from moos_lint.parsers.moos import parse_moos
+from moos_lint.run_state import RunView
 from moos_lint.stamps import file_stamp
 from moos_lint.variables import (
     PUBLISH,
@@ -257,14 +259,14 @@ def _publisher(
 
 
 class _Builder:
-    def __init__(self, run: Any, path: str, moos: MoosFile):
+    def __init__(self, run: RunView, path: str, moos: MoosFile):
         self.run = run
         self.cat = catalogue_for(run)
         self.m = MissionModel(path=path, moos=moos, catalogue=self.cat)
         #: what the model read besides its own file: each ``behaviors =`` value resolved
         #: (value, folder, paths found, ok) and each behavior file's expansion
         self.behavior_lookups: list[tuple[str, str, tuple[list[str], bool]]] = []
-        self.behavior_expansions: list[tuple[str, Any]] = []
+        self.behavior_expansions: list[tuple[str, Expansion]] = []
 
     def add(
         self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
@@ -301,7 +303,7 @@ class _Builder:
             if proc.binary.lower() == "phelmivp" and proc.block is not None:
                 self._helm(proc)
         folder = os.path.dirname(m.path)
-        pokes = _run_memo(self.run, "_pokes")
+        pokes = self.run.memos.pokes
         if folder not in pokes:
             pokes[folder] = _pokes(folder)
         for var, script in pokes[folder].items():
@@ -328,6 +330,8 @@ class _Builder:
 
     def _helm(self, proc: Process) -> None:
         folder = os.path.dirname(self.m.path)
+        if proc.block is None:
+            return
         for param in proc.block.get("behaviors"):
             paths, ok = behavior_paths(param.value, folder)
             self.behavior_lookups.append((param.value, folder, (paths, ok)))
@@ -354,23 +358,14 @@ class _Builder:
                             self.add(var, who, "behavior", process=proc.name)
 
     def _parse_bhv(self, path: str) -> BehaviorFile | None:
-        from moos_lint.parsers.bhv import parse_bhv
-
-        pre = getattr(self.run, "preprocessor", None)
-        if pre is None:
-            return None
-        exp = pre.expand(path)
+        exp = self.run.preprocessor.expand(path)
         self.behavior_expansions.append((path, exp))
         if exp.read_problem is not None:
             return None
-        return _parsed(self.run, pre, exp, parse_bhv)
+        return parsed(exp, parse_bhv)  # once per expansion: rules only read models
 
     def _siblings(self, folder: str) -> None:
-        from moos_lint.parsers.moos import parse_moos
-
-        pre = getattr(self.run, "preprocessor", None)
-        if pre is None:
-            return
+        pre = self.run.preprocessor
         me = _norm(self.m.path)
         for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos"))):
             if _norm(cand) == me or os.path.basename(cand).startswith("targ_"):
@@ -378,7 +373,7 @@ class _Builder:
             exp = pre.expand(cand)
             if exp.read_problem is not None:
                 continue
-            moos = _parsed(self.run, pre, exp, parse_moos)
+            moos = parsed(exp, parse_moos)
             if not moos.is_mission:
                 continue
             self.m.sibling_missions.append(_norm(cand))
@@ -387,10 +382,10 @@ class _Builder:
                 publishers.setdefault(key, []).append(pub)
 
 
-def _app_publishers(run: Any, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:
+def _app_publishers(run: RunView, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:
     """The (key, publisher) of each variable ``app`` publishes, launched as ``process``;
     once per run (many missions launch the same apps under the same names)."""
-    memo = _run_memo(run, "_app_publishers")
+    memo = run.memos.app_publishers
     key = (id(app), process)  # (the run's catalogue holds the app: its id stays its own)
     found = memo.get(key)
     if found is None:
@@ -399,11 +394,11 @@ def _app_publishers(run: Any, app: AppInfo, process: str) -> list[tuple[str, Pub
     return found
 
 
-def _external_publishers(run: Any, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:
+def _external_publishers(run: RunView, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:
     """What another mission of the folder publishes, as (key, publisher) in the order a
     mission's model takes them; once per run (models are only read, so they share them),
     and kept across runs while all it was made from is unchanged (see :class:`_Kept`)."""
-    memo = _run_memo(run, "_external_publishers")
+    memo = run.memos.external_publishers
     if path in memo:
         return memo[path]
     cat = catalogue_for(run)
@@ -436,21 +431,25 @@ class _Kept:
 
     __slots__ = ("catalogue", "expansions", "lookups", "moos", "publishers")
 
-    def __init__(self, moos: MoosFile, catalogue: tuple, builder: _Builder, publishers: list):
+    def __init__(
+        self,
+        moos: MoosFile,
+        catalogue: tuple[object, ...],
+        builder: _Builder,
+        publishers: list[tuple[str, Publisher]],
+    ):
         self.moos = moos
         self.catalogue = catalogue
         self.lookups = list(builder.behavior_lookups)
         self.expansions = list(builder.behavior_expansions)
         self.publishers = publishers
 
-    def holds(self, run: Any, moos: MoosFile, cat: Catalogue) -> bool:
+    def holds(self, run: RunView, moos: MoosFile, cat: Catalogue) -> bool:
         if moos is not self.moos or cat.inputs is None or cat.inputs != self.catalogue:
             return False
         if any(behavior_paths(v, folder) != found for v, folder, found in self.lookups):
             return False
-        pre = getattr(run, "preprocessor", None)
-        if pre is None:
-            return False
+        pre = run.preprocessor
         return all(pre.expand(p) is exp for p, exp in self.expansions)
 
 
@@ -481,27 +480,6 @@ def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
     return [f for f in found if f is not None]
 
 
-def _run_memo(run: Any, name: str) -> dict:
-    """A dict kept on the lint run (a fresh one when the run takes no attributes)."""
-    memo = getattr(run, name, None)
-    if memo is None:
-        memo = {}
-        with contextlib.suppress(AttributeError):
-            setattr(run, name, memo)
-    return memo
-
-
-def _parsed(run: Any, pre: Any, exp: Any, parse: Any) -> Any:
-    """``parse(exp)``, once per expansion (see :func:`moos_lint.nsplug.parsed`).
-
-    Rules only read models, so a behavior file used by many missions, or a
-    sibling mission, is parsed once.
-    """
-    from moos_lint.nsplug import parsed
-
-    return parsed(exp, parse)
-
-
 def _build_without_siblings(b: _Builder) -> MissionModel:
     m = b.m
     for run in m.moos.runs:
@@ -517,25 +495,39 @@ def _build_without_siblings(b: _Builder) -> MissionModel:
     return m
 
 
-def mission_model(ctx_or_run: Any, path: str | None = None, moos: MoosFile | None = None):
-    """The model of a mission, built once per lint run.
+class _RuleContext(Protocol):
+    """The part of a rule's context (:class:`moos_lint.engine.Context`) read here."""
 
-    Call with a rule's context (``mission_model(ctx)``) or with a run, a path
-    and its parsed file.
-    """
-    run = getattr(ctx_or_run, "run", ctx_or_run)
-    if path is None:
-        path = ctx_or_run.unit.path
-        moos = ctx_or_run.moos
-    cache = getattr(run, "_mission_models", None)
-    if cache is None:
-        cache = {}
-        with contextlib.suppress(AttributeError):
-            run._mission_models = cache
+    @property
+    def run(self) -> RunView: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def moos(self) -> MoosFile | None: ...
+
+
+def mission_model(ctx: _RuleContext) -> MissionModel:
+    """The model of the mission a rule checks, built once per lint run."""
+    if ctx.moos is None:
+        raise ValueError(f"{ctx.path}: a mission rule runs on a parsed .moos file")
+    return model_of(ctx.run, ctx.path, ctx.moos)
+
+
+def model_of(run: RunView, path: str, moos: MoosFile) -> MissionModel:
+    """The model of the mission at ``path`` (parsed as ``moos``), built once per lint run."""
+    cache = run.memos.mission_models
     key = _norm(path)
-    if key not in cache:
-        cache[key] = _Builder(run, path, moos).build()
-    return cache[key]
+    found = cache.get(key)
+    if found is None:
+        found = cache[key] = _Builder(run, path, moos).build()
+    return found
 
 
-__all__ = ["MissionModel", "Process", "Publisher", "behavior_paths", "mission_model"]
+__all__ = [
+    "MissionModel",
+    "Process",
+    "Publisher",
+    "behavior_paths",
+    "mission_model",
+    "model_of",
+]

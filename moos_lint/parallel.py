@@ -39,13 +39,18 @@ import sys
 import threading
 from collections.abc import Iterator
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the engine starts the workers: this module does not import it
+    from moos_lint.diagnostics import Diagnostic
+    from moos_lint.engine import LintRun
+    from moos_lint.unit import Unit
 
 #: below this many files a run stays in one process
 MIN_FILES = 50
 
 # The run a forked rule worker inherits (set just before the pool is forked).
-_RUN: Any = None
+_RUN: LintRun | None = None
 
 
 def default_jobs() -> int:
@@ -135,9 +140,13 @@ def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
 _REPORTED: set[str] = set()
 
 
-def _unit_rules(indices: list[int]) -> tuple[list[tuple[int, list[Any], int]], set, set]:
+def _unit_rules(
+    indices: list[int],
+) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str]]:
     """In a worker: the findings of some units, and the files and folders newly read."""
     run = _RUN
+    if run is None:
+        raise RuntimeError("a rule worker started without a run")
     out = []
     for i in indices:
         diags, errors = run.run_rules(run.units[i])
@@ -147,7 +156,7 @@ def _unit_rules(indices: list[int]) -> tuple[list[tuple[int, list[Any], int]], s
     return out, read, set(run.cache.probed)
 
 
-def _unit_weight(unit: Any) -> int:
+def _unit_weight(unit: Unit) -> int:
     if unit.cpp is not None:
         return sum(len(f.publications) + len(f.subscriptions) for f in unit.cpp.files) * 400
     n = len(unit.expansion.lines)
@@ -156,7 +165,7 @@ def _unit_weight(unit: Any) -> int:
     return n
 
 
-def rule_batches(units: list[Any]) -> list[list[int]]:
+def rule_batches(units: list[Unit]) -> list[list[int]]:
     """The units (by index) a rule worker takes at a time: one folder's.
 
     Missions of a folder share their sibling missions, fragments and behavior
@@ -169,11 +178,11 @@ def rule_batches(units: list[Any]) -> list[list[int]]:
     return sorted(folders.values(), key=lambda b: (-sum(_unit_weight(units[i]) for i in b), b[0]))
 
 
-def run_rules_parallel(run: Any, jobs: int) -> list[tuple[list[Any], int]]:
+def run_rules_parallel(run: LintRun, jobs: int) -> list[tuple[list[Diagnostic], int]]:
     """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order."""
     global _RUN
     batches = rule_batches(run.units)
-    results: list[tuple[list[Any], int]] = [([], 0)] * len(run.units)
+    results: list[tuple[list[Diagnostic], int]] = [([], 0)] * len(run.units)
     done: set[int] = set()
     _RUN = run  # before the first submit, which forks the workers
     _REPORTED.clear()

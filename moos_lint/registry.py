@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from moos_lint.diagnostics import Severity
+from moos_lint.selectors import selects
 
 DOC_SECTIONS = ("What it does", "Why is this bad?", "Example", "How to fix", "Options")
 CODE_RE = re.compile(r"^[A-Z][0-9]{3}$")
@@ -141,12 +142,7 @@ def get_rule(key: str) -> Rule | None:
 
 def matches(selector: str, r: Rule) -> bool:
     """``ALL``, a code, a code prefix (``M``, ``M0``), or a rule name."""
-    if selector.upper() == "ALL":
-        return True
-    if selector == r.name:
-        return True
-    s = selector.upper()
-    return bool(re.fullmatch(r"[A-Z][0-9]{0,3}", s)) and r.code.startswith(s)
+    return selects(selector, r.code, r.name)
 
 
 def is_valid_selector(selector: str) -> bool:

@@ -13,8 +13,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from moos_lint.diagnostics import Diagnostic, Span
-from moos_lint.registry import get_rule, matches
+from moos_lint.diagnostics import INTERNAL_ERROR, Diagnostic, Span
+from moos_lint.selectors import selects
 
 _COMMENT = re.compile(
     r"//\s*moos-lint:\s*(?P<verb>ignore|disable|enable|file-ignore)\s*"
@@ -43,11 +43,11 @@ class Suppression:
         """The selector that suppresses ``diag``, if any."""
         if diag.span.path != self.path or not (self.first <= diag.span.line <= self.last):
             return None
-        r = get_rule(diag.code)
         for sel in self.selectors:
             if sel.upper() == "ALL" or sel.upper() == diag.code:
                 return sel
-            if r is not None and matches(sel, r):
+            # moos-lint's own failures are matched by code alone, not by name or prefix
+            if diag.code != INTERNAL_ERROR and selects(sel, diag.code, diag.name):
                 return sel
         return None
 

@@ -15,9 +15,9 @@ from moos_lint.catalogue import Catalogue, CatalogueError, load_user_catalogue, 
 from moos_lint.catalogue.generate import _names
 from moos_lint.cli import main
 from moos_lint.config import ConfigError, Settings, load_config
-from moos_lint.engine import Run, lint_files
+from moos_lint.engine import LintRun, lint_files
 from moos_lint.graph import build_graph, to_dot, to_html
-from moos_lint.mission_model import behavior_paths, mission_model
+from moos_lint.mission_model import behavior_paths, model_of
 from moos_lint.registry import select_rules
 from moos_lint.rules.invalid_parameter_value import is_number, problem
 
@@ -144,10 +144,10 @@ def test_behavior_paths_find_the_template(tmp_path):
 
 
 def _model(path: Path):
-    run = Run(Settings(root=str(path.parent)), select_rules(["M005"], [], []))
+    run = LintRun(Settings(root=str(path.parent)), select_rules(["M005"], [], []))
     unit = run.build_unit(str(path))
     run.units.append(unit)
-    return mission_model(run, unit.path, unit.moos)
+    return model_of(run, unit.path, unit.moos)
 
 
 def test_model_joins_processes_behaviors_and_siblings():

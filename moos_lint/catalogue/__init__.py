@@ -33,7 +33,12 @@ import re
 import sys
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+from moos_lint.run_state import RunView
+
+if TYPE_CHECKING:
+    from moos_lint.cpp.model import AppModel
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -96,7 +101,7 @@ class Catalogue:
         #: what a lint run's catalogue was made from (the stock catalogue, each user
         #: catalogue file's (mtime, size)): two catalogues with equal inputs say the
         #: same. None when it also holds the run's own C++ apps (made anew each run).
-        self.inputs: tuple | None = None
+        self.inputs: tuple[object, ...] | None = None
 
     def app(self, name: str) -> AppInfo | None:
         return self.apps.get(name.lower())
@@ -274,7 +279,7 @@ DELEGATE = re.compile(
 )
 
 
-def _repo_app(app: Any) -> AppInfo:
+def _repo_app(app: AppModel) -> AppInfo:
     """What the app's own C++ says it reads, publishes and subscribes to.
 
     It is strict (other keys are reported) only when the app reports
@@ -328,30 +333,28 @@ def _shown(folder: str) -> str:
     return folder if rel.startswith("..") else rel
 
 
-def catalogue_for(run: Any) -> Catalogue:
+def catalogue_for(run: RunView) -> Catalogue:
     """The catalogue of one lint run (stock, user files, linted C++), built once and cached."""
-    cached = getattr(run, "_catalogue", None)
+    cached = run.memos.catalogue
     if cached is not None:
         return cached
     from moos_lint.stamps import file_stamp
 
     base = stock()
     cat = base.copy()
-    settings = getattr(run, "settings", None)
-    user = list(getattr(settings, "catalogues", []) or [])
-    inputs: tuple | None = (id(base), tuple((p, file_stamp(p)) for p in user))
+    user = list(run.settings.catalogues)
+    inputs: tuple[object, ...] | None = (id(base), tuple((p, file_stamp(p)) for p in user))
     for path in user:
         # the config loader validated the file; a file broken since is skipped
         with contextlib.suppress(CatalogueError):
             load_user_catalogue(path, cat)
-    for unit in getattr(run, "units", []):
-        app = getattr(unit, "cpp", None)
-        if app is not None and getattr(app, "is_app", False) and app.process_name:
+    for unit in run.units:
+        app = unit.cpp
+        if app is not None and app.is_app and app.process_name:
             cat.add_app(_repo_app(app))
             inputs = None
     cat.inputs = inputs
-    with contextlib.suppress(AttributeError):
-        run._catalogue = cat
+    run.memos.catalogue = cat
     return cat
 
 

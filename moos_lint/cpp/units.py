@@ -7,22 +7,27 @@ classes) and runs the libclang deep mode when it is asked for.
 from __future__ import annotations
 
 import os
-from typing import Any
 
 from moos_lint.cpp.app import build_apps, link_apps, read_relevant
-from moos_lint.cpp.model import AppModel
+from moos_lint.cpp.model import AppModel, CppFile
+from moos_lint.nsplug import Expansion
+from moos_lint.registry import Kind
+from moos_lint.run_state import RunView
+from moos_lint.source import SourceFile
+from moos_lint.unit import Unit
+
+#: what a worker process read and parsed of one folder: its relevant sources, its files
+ParsedFolder = tuple[dict[str, SourceFile], list[CppFile]]
 
 
-def build_cpp_units(run: Any, paths: list[str], parsed: dict[str, Any] | None = None) -> list[Any]:
+def build_cpp_units(
+    run: RunView, paths: list[str], parsed: dict[str, ParsedFolder] | None = None
+) -> list[Unit]:
     """Units for the C++ files in ``paths``: one per folder, in folder order.
 
     ``parsed`` (folder -> (relevant sources, extracted files)) is what worker
     processes already read and parsed (:mod:`moos_lint.parallel`).
     """
-    from moos_lint.engine import Unit
-    from moos_lint.nsplug import Expansion
-    from moos_lint.registry import Kind
-
     if parsed is None:
         sources = read_relevant(paths)
         run.sources.update(sources)
@@ -34,7 +39,7 @@ def build_cpp_units(run: Any, paths: list[str], parsed: dict[str, Any] | None = 
         linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
         link_apps(linked)
         apps = {a.folder: a for a in linked}
-    if getattr(run.settings, "cpp_backend", "tree-sitter") == "clang" and apps:
+    if run.settings.cpp_backend == "clang" and apps:
         from moos_lint.cpp.clang import enrich
 
         enrich(list(apps.values()), run.settings)

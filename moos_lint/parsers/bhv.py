@@ -9,6 +9,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import re
 
 from moos_lint.model import Behavior, BehaviorFile, BhvParam, Initialize, SetBlock
@@ -44,7 +45,11 @@ def _pieces(line: Line) -> list[tuple[Line, str, int]]:
 
 
 def _joined(lines: list[Line]) -> list[Line]:
-    """Join lines ending in a backslash with the next one (fileBufferSlash)."""
+    """Join lines ending in a backslash with the next one (fileBufferSlash).
+
+    The expansion's lines are shared (every reader of the file, the language
+    server's later runs): a joined line is a new one, never an edited one.
+    """
     out: list[Line] = []
     carry: Line | None = None
     for line in lines:
@@ -59,8 +64,10 @@ def _joined(lines: list[Line]) -> list[Line]:
             )
         else:
             carry = line
-        if carry.text.rstrip().endswith("\\"):
-            carry.text = carry.text.rstrip()
+        trimmed = carry.text.rstrip()
+        if trimmed.endswith("\\"):
+            if trimmed != carry.text:
+                carry = dataclasses.replace(carry, text=trimmed)
             continue
         out.append(carry)
         carry = None

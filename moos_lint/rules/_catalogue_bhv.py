@@ -2,29 +2,33 @@
 
 from __future__ import annotations
 
-import contextlib
 import os
+from typing import TYPE_CHECKING
 
-from moos_lint.catalogue import catalogue_for
+from moos_lint.catalogue import BehaviorInfo, catalogue_for
+from moos_lint.markers import VCS_MARKERS
+
+if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
+    from moos_lint.engine import Context
 
 _SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
 _CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp")
 
 
-def repo_classes(ctx) -> set[str]:
+def repo_classes(ctx: Context) -> frozenset[str]:
     """Lower-case names of the C++ files under the project root (``BHV_Pulse.cpp`` -> bhv_pulse).
 
     MOOS-IvP behaviors live in a file named after their class, so a kind with
     such a file is the repo's own behavior. Cached on the run.
     """
     run = ctx.run
-    cached = getattr(run, "_repo_cpp_stems", None)
+    cached = run.memos.repo_cpp_stems
     if cached is not None:
         return cached
     stems: set[str] = set()
-    for unit in getattr(run, "units", []):
-        app = getattr(unit, "cpp", None)
-        for f in getattr(app, "files", []) or []:
+    for unit in run.units:
+        app = unit.cpp
+        for f in app.files if app is not None else ():
             for c in f.classes:
                 stems.add(c.name.lower())
     root = _root(ctx)
@@ -35,15 +39,12 @@ def repo_classes(ctx) -> set[str]:
                 stems.add(os.path.splitext(f)[0].lower())
         if count > 20000:  # a huge tree: stop looking
             break
-    with contextlib.suppress(AttributeError):
-        run._repo_cpp_stems = stems
-    return stems
+    run.memos.repo_cpp_stems = found = frozenset(stems)
+    return found
 
 
-def _root(ctx) -> str:
+def _root(ctx: Context) -> str:
     """The project: the config's folder, else the nearest VCS root, else the file's folder."""
-    from moos_lint.context import VCS_MARKERS
-
     if ctx.settings.config_path:
         return os.path.dirname(os.path.abspath(ctx.settings.config_path))
     start = os.path.dirname(os.path.abspath(ctx.unit.path))
@@ -57,7 +58,7 @@ def _root(ctx) -> str:
         here = parent
 
 
-def lookup(ctx, kind: str):
+def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:
     """(catalogue entry or None, known at all)."""
     info = catalogue_for(ctx.run).behavior(kind)
     if info is not None:

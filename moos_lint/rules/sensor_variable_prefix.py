@@ -58,7 +58,7 @@ from __future__ import annotations
 import fnmatch
 import re
 
-from moos_lint.diagnostics import Severity
+from moos_lint.diagnostics import Severity, Subject
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import PUBLISH, bare_name, block_variables
 
@@ -110,4 +110,5 @@ def check(ctx):
                 f"`{name}`, published by interface process `{block.name}`, is not named "
                 f"`<SENSOR>_<CATEGORY>` ({', '.join(sorted(cats))})",
                 line=line,
+                subject=Subject(variable=name, app=block.name),
             )

@@ -54,7 +54,7 @@ MOOS-IvP caveats, deliberately not reported:
   uMAC): give them a publisher in the mission, or suppress the finding.
 """
 
-from moos_lint.diagnostics import Severity
+from moos_lint.diagnostics import Severity, Subject
 from moos_lint.mission_model import mission_model
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name
@@ -90,6 +90,7 @@ def check(ctx):
             continue
         seen.add(key)
         owner = ref.app if ref.app else "the mission"
+        subject = Subject(variable=name, app=ref.app or None, key=ref.param)
         msg = f"`{name}`: {owner}'s {ref.param} waits for it, "
         msg += "but nothing in the mission publishes it"
         if gaps:
@@ -98,6 +99,7 @@ def check(ctx):
                 msg + "; the check is incomplete: " + "; ".join(gaps[:3]),
                 line=ref.line,
                 severity=Severity.INFO,
+                subject=subject,
             )
         else:
-            yield ctx.report(ref.span, msg, line=ref.line)
+            yield ctx.report(ref.span, msg, line=ref.line, subject=subject)

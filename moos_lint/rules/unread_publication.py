@@ -47,7 +47,7 @@ MOOS-IvP caveats, deliberately not reported:
   variables with them.
 """
 
-from moos_lint.diagnostics import Severity
+from moos_lint.diagnostics import Severity, Subject
 from moos_lint.mission_model import mission_model
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name
@@ -127,4 +127,5 @@ def check(ctx):
             ref.span,
             f"`{name}` is published ({ref.app}: {ref.param}) but nothing in the mission reads it",
             line=ref.line,
+            subject=Subject(variable=name, app=ref.app, key=ref.param),
         )

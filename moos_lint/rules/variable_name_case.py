@@ -73,7 +73,7 @@ from __future__ import annotations
 import fnmatch
 import re
 
-from moos_lint.diagnostics import Severity
+from moos_lint.diagnostics import Severity, Subject
 from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name, unit_variables
 
@@ -111,7 +111,8 @@ def check(ctx):
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
-        yield ctx.report(ref.span, message, line=ref.line)
+        subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
+        yield ctx.report(ref.span, message, line=ref.line, subject=subject)
 
 
 def cpp_check(ctx):
