@@ -29,7 +29,15 @@ from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
-from moos_lint.registry import Kind, Rule, Scope, get_rule, matches, select_rules
+from moos_lint.registry import (
+    Kind,
+    Rule,
+    Scope,
+    get_rule,
+    is_valid_selector,
+    matches,
+    select_rules,
+)
 from moos_lint.result import Result
 from moos_lint.run_state import RunMemos
 from moos_lint.source import ReadProblem, SourceFile
@@ -143,6 +151,10 @@ class LintRun:
         if options is None:
             options = self._options[r.name] = self.settings.options_for(r.name)
         return dict(options)
+
+    def names_a_rule(self, selector: str) -> bool:
+        """Whether ``selector`` selects any moos-lint rule (run in this run or not)."""
+        return is_valid_selector(selector)
 
     def file_ignored(self, d: Diagnostic) -> bool:
         return _per_file_ignored(d, self.settings)

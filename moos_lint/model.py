@@ -175,8 +175,6 @@ class MoosFile:
 
     @property
     def runs(self) -> list[RunLine]:
-        from moos_lint.parsers.moos import antler_runs
-
         blocks = self.antler_blocks
         key = (len(self.blocks), *(len(b.params) for b in blocks))
         if self._runs is None or self._runs[0] != key:
@@ -193,6 +191,44 @@ class MoosFile:
         for b in self.blocks:
             out.extend(b.params)
         return out
+
+
+# ------------------------------------------------------------------ Antler
+# How pAntler reads its Run lines: the parsed file derives them on first use.
+def _squeeze(text: str) -> str:
+    return "".join(text.split())
+
+
+def parse_run(param: Param, block: Block) -> RunLine:
+    """Read a Run line the way pAntler's CreateMOOSProcess does."""
+    value = param.value
+    if "@" in value:
+        binary, _, rest = value.partition("@")
+        has_at = True
+    else:
+        binary, rest, has_at = value, "", False
+    opts_text, _, alias_text = rest.partition("~")
+    options: dict[str, str] = {}
+    for item in opts_text.split(","):
+        k, _, v = item.partition("=")
+        if k.strip():
+            options[_squeeze(k).lower()] = _squeeze(v)
+    alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
+    binary = _squeeze(binary)  # pAntler reads lines with every space removed
+    run = RunLine(param, binary, has_at, options, alias)
+    extra = options.get("extraprocessparams")
+    if extra:
+        for p in block.params:
+            if _squeeze(p.key).lower() == extra.lower():
+                for token in p.value.split(","):
+                    token = _squeeze(token)
+                    if token.startswith("--alias="):
+                        run.alias_from_params = token[len("--alias=") :] or None
+    return run
+
+
+def antler_runs(block: Block) -> list[RunLine]:
+    return [parse_run(p, block) for p in block.params if p.lkey == "run"]
 
 
 # --------------------------------------------------------------------- behaviors

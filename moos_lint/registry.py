@@ -1,119 +1,34 @@
-"""The rule registry: every rule's metadata, its docs, and rule selection.
+"""The rule registry: loads every rule module and selects among the declared rules.
 
-A rule is one module in :mod:`moos_lint.rules`. Its module docstring is its
-documentation, in fixed sections (see :data:`DOC_SECTIONS`), and it declares
-itself with the :func:`rule` decorator on its check function::
-
-    @rule(code="M003", name="brace-on-header", severity=Severity.ERROR, scope=Scope.FILE)
-    def check(ctx):
-        ...
-        yield ctx.report(span, "message")
+Rules declare themselves with :func:`moos_lint.declare.rule`; this module
+imports each module of :mod:`moos_lint.rules` once, and answers which rules
+a selection enables.
 """
 
 from __future__ import annotations
 
-import enum
 import importlib
 import pkgutil
-import re
-import sys
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass, field
-from typing import Any
 
-from moos_lint.diagnostics import Severity
+from moos_lint.declare import (
+    CODE_RE,
+    DOC_SECTIONS,
+    DOCS_URL,
+    NAME_RE,
+    RULES,
+    Kind,
+    Rule,
+    Scope,
+    doc_sections,
+    rule,
+)
 from moos_lint.selectors import selects
 
-DOC_SECTIONS = ("What it does", "Why is this bad?", "Example", "How to fix", "Options")
-CODE_RE = re.compile(r"^[A-Z][0-9]{3}$")
-NAME_RE = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
-DOCS_URL = "https://github.com/moos-lint/moos-lint/blob/main/rules/{name}.md"
-
-
-class Scope(enum.Enum):
-    FILE = "file"  # one file, after nsplug expansion
-    MISSION = "mission"  # one mission: a .moos file with an ANTLER block, with its includes
-    CPP = "cpp"  # one C++ unit
-    PROJECT = "project"  # everything linted in one run
-
-
-class Kind(enum.Enum):
-    MOOS = "moos"  # .moos, .moos++, .plug, .def
-    BHV = "bhv"
-    CPP = "cpp"  # C++ sources of MOOS apps
-
-
-@dataclass(slots=True)
-class Rule:
-    code: str
-    name: str
-    severity: Severity
-    scope: Scope
-    check: Callable[..., Iterable[Any]]
-    kinds: tuple[Kind, ...] = (Kind.MOOS,)
-    default_enabled: bool = True
-    options: dict[str, Any] = field(default_factory=dict)
-    fixable: bool = False
-    doc: str = ""
-    module: str = ""
-
-    @property
-    def summary(self) -> str:
-        """The first line of the docs."""
-        return self.doc.strip().splitlines()[0].strip() if self.doc.strip() else self.name
-
-    @property
-    def url(self) -> str:
-        return DOCS_URL.format(name=self.name)
-
-    def section(self, title: str) -> str:
-        return doc_sections(self.doc).get(title, "")
-
-
-_RULES: dict[str, Rule] = {}
 _LOADED = False
 
 
-def rule(
-    *,
-    code: str,
-    name: str,
-    severity: Severity,
-    scope: Scope,
-    kinds: tuple[Kind, ...] = (Kind.MOOS,),
-    default_enabled: bool = True,
-    options: dict[str, Any] | None = None,
-    fixable: bool = False,
-) -> Callable:
-    """Declare a rule; the decorated function is its check."""
-
-    def wrap(fn: Callable) -> Callable:
-        if not CODE_RE.match(code):
-            raise ValueError(f"bad rule code {code!r}")
-        if not NAME_RE.match(name):
-            raise ValueError(f"bad rule name {name!r}")
-        if code in _RULES and _RULES[code].module != fn.__module__:
-            raise ValueError(f"rule code {code} is used twice")
-        module = sys.modules.get(fn.__module__)
-        _RULES[code] = Rule(
-            code=code,
-            name=name,
-            severity=severity,
-            scope=scope,
-            check=fn,
-            kinds=kinds,
-            default_enabled=default_enabled,
-            options=dict(options or {}),
-            fixable=fixable,
-            doc=(module.__doc__ or "") if module else "",
-            module=fn.__module__,
-        )
-        return fn
-
-    return wrap
-
-
 def load_rules() -> None:
+    """Import every rule module (each declares its rule)."""
     global _LOADED
     if _LOADED:
         return
@@ -126,15 +41,15 @@ def load_rules() -> None:
 
 def all_rules() -> list[Rule]:
     load_rules()
-    return sorted(_RULES.values(), key=lambda r: r.code)
+    return sorted(RULES.values(), key=lambda r: r.code)
 
 
 def get_rule(key: str) -> Rule | None:
     """A rule by code or name."""
     load_rules()
-    if key.upper() in _RULES:
-        return _RULES[key.upper()]
-    for r in _RULES.values():
+    if key.upper() in RULES:
+        return RULES[key.upper()]
+    for r in RULES.values():
         if r.name == key:
             return r
     return None
@@ -147,7 +62,7 @@ def matches(selector: str, r: Rule) -> bool:
 
 def is_valid_selector(selector: str) -> bool:
     load_rules()
-    return any(matches(selector, r) for r in _RULES.values())
+    return any(matches(selector, r) for r in RULES.values())
 
 
 def select_rules(
@@ -164,17 +79,20 @@ def select_rules(
     return [r for r in rules if r.code in chosen]
 
 
-def doc_sections(doc: str) -> dict[str, str]:
-    """Split a rule docstring into its ``## Section`` parts (the first part is the summary)."""
-    out: dict[str, str] = {}
-    current = "summary"
-    buf: list[str] = []
-    for line in doc.strip().splitlines():
-        m = re.match(r"^##\s+(.*?)\s*$", line)
-        if m:
-            out[current] = "\n".join(buf).strip()
-            current, buf = m.group(1), []
-        else:
-            buf.append(line)
-    out[current] = "\n".join(buf).strip()
-    return out
+__all__ = [
+    "CODE_RE",
+    "DOCS_URL",
+    "DOC_SECTIONS",
+    "NAME_RE",
+    "Kind",
+    "Rule",
+    "Scope",
+    "all_rules",
+    "doc_sections",
+    "get_rule",
+    "is_valid_selector",
+    "load_rules",
+    "matches",
+    "rule",
+    "select_rules",
+]

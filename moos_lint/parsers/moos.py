@@ -9,7 +9,7 @@
 
 from __future__ import annotations
 
-from moos_lint.model import Block, MoosFile, Param, RunLine
+from moos_lint.model import Block, MoosFile, Param, antler_runs, parse_run
 from moos_lint.nsplug import Expansion, Line
 
 
@@ -124,38 +124,4 @@ def parse_moos(expansion: Expansion) -> MoosFile:
     return mf
 
 
-# ------------------------------------------------------------------ Antler
-def _squeeze(text: str) -> str:
-    return "".join(text.split())
-
-
-def parse_run(param: Param, block: Block) -> RunLine:
-    """Read a Run line the way pAntler's CreateMOOSProcess does."""
-    value = param.value
-    if "@" in value:
-        binary, _, rest = value.partition("@")
-        has_at = True
-    else:
-        binary, rest, has_at = value, "", False
-    opts_text, _, alias_text = rest.partition("~")
-    options: dict[str, str] = {}
-    for item in opts_text.split(","):
-        k, _, v = item.partition("=")
-        if k.strip():
-            options[_squeeze(k).lower()] = _squeeze(v)
-    alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
-    binary = _squeeze(binary)  # pAntler reads lines with every space removed
-    run = RunLine(param, binary, has_at, options, alias)
-    extra = options.get("extraprocessparams")
-    if extra:
-        for p in block.params:
-            if _squeeze(p.key).lower() == extra.lower():
-                for token in p.value.split(","):
-                    token = _squeeze(token)
-                    if token.startswith("--alias="):
-                        run.alias_from_params = token[len("--alias=") :] or None
-    return run
-
-
-def antler_runs(block: Block) -> list[RunLine]:
-    return [parse_run(p, block) for p in block.params if p.lkey == "run"]
+__all__ = ["antler_runs", "parse_moos", "parse_run"]

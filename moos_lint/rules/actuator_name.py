@@ -51,8 +51,8 @@ from __future__ import annotations
 
 import fnmatch
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name, unit_variables
 
 STANDARD = ("THRUST", "RUDDER", "ELEVATOR")

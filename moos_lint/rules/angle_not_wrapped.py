@@ -50,8 +50,8 @@ None.
 import math
 
 from moos_lint.angles import WRAP_TOLERANCE, angle_values, format_rad, wrap_pi
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

@@ -29,8 +29,8 @@ Use `//` for comments, and `key = value` for every parameter line.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

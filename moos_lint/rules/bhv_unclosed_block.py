@@ -27,8 +27,8 @@ Add the missing `}`.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

@@ -30,8 +30,8 @@ ProcessConfig = pHelmIvP
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R003", name="brace-on-header", severity=Severity.ERROR, scope=Scope.FILE)

@@ -52,9 +52,9 @@ MOOS-IvP caveats:
   is given twice, the last one counts, as in the helm.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._hygiene import exclusive, where
 
 

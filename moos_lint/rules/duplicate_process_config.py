@@ -28,8 +28,8 @@ Merge the two blocks into one.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R011", name="duplicate-process-config", severity=Severity.ERROR, scope=Scope.FILE)

@@ -46,9 +46,9 @@ from __future__ import annotations
 
 import os
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
+from moos_lint.model import antler_runs, has_macro
 
 
 @rule(
@@ -59,8 +59,6 @@ from moos_lint.registry import Kind, Scope, rule
     kinds=(Kind.MOOS,),
 )
 def check(ctx):
-    from moos_lint.parsers.moos import antler_runs
-
     effective = []
     for block in ctx.moos.antler_blocks:
         if any(not b.header.excludes(block.header) for b in effective):

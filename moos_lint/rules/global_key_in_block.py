@@ -27,9 +27,9 @@ warp use its `moos_time_warp` parameter.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import GLOBAL_KEYS
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R009", name="global-key-in-block", severity=Severity.ERROR, scope=Scope.FILE)

@@ -21,8 +21,8 @@ Add the `{ ... }` block after the header, or delete the header.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R013", name="header-without-block", severity=Severity.ERROR, scope=Scope.FILE)

@@ -27,8 +27,8 @@ blocks), or derive from `CMOOSApp` if the app does not use a device.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

@@ -87,11 +87,11 @@ MOOS-IvP caveats, deliberately not reported:
 
 import re
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.geometry_forms import INVALID, is_geometry_form, judge
 from moos_lint.mbutil import is_number
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._catalogue_bhv import lookup
 from moos_lint.rules.unknown_parameter import block_apps
 

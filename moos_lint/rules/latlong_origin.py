@@ -67,9 +67,9 @@ import math
 import os
 import re
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 
 NEEDS_ORIGIN = [
     "pHelmIvP",

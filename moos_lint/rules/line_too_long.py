@@ -21,8 +21,8 @@ once), or load long data from a file the app reads itself.
 - `max-length` (int, default 2000): the first length reported.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity, Span
-from moos_lint.registry import Scope, rule
 
 
 @rule(

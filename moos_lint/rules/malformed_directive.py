@@ -20,8 +20,8 @@ Give the directive its argument, or delete the line.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._helpers import problem_findings
 
 

@@ -24,8 +24,8 @@ Add the `=`, or turn the line into a `//` comment.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)

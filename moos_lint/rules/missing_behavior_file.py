@@ -44,9 +44,9 @@ MOOS-IvP caveats, deliberately not reported:
 import glob
 import os
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Scope, rule
 from moos_lint.rules._hygiene import app_of, exclusive, names_match
 
 FILE_PARAMS = ["pHelmIvP:behaviors", "uFldObstacleSim:obstacle_file"]

@@ -53,9 +53,9 @@ A Run line and a block in mutually exclusive `#ifdef` branches do not count as
 a match: in the branch that launches the process, the block is missing.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Scope, rule
 from moos_lint.rules._hygiene import app_of, exclusive, names_match
 
 NEEDS_NO_CONFIG = [

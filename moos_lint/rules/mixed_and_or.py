@@ -19,8 +19,8 @@ Nest two conditionals instead.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._helpers import problem_findings
 
 

@@ -45,8 +45,8 @@ Publish the value in SI units under a name without a unit
 
 from __future__ import annotations
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name, unit_variables
 
 

@@ -20,8 +20,8 @@ Save the file as UTF-8 (most editors offer "Save with encoding").
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Span
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

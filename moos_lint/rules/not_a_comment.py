@@ -26,8 +26,8 @@ Comment lines out with `//`.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R007", name="not-a-comment", severity=Severity.WARNING, scope=Scope.FILE)

@@ -24,8 +24,8 @@ Restore the header, or delete the whole block.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R004", name="orphan-block", severity=Severity.WARNING, scope=Scope.FILE)

@@ -54,9 +54,9 @@ closer to the operating area.
 
 import math
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.geometry import geometry_points, start_pos_points
-from moos_lint.registry import Kind, Scope, rule
 
 GEOMETRY_KEYS = {
     "points",

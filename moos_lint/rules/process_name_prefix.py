@@ -69,9 +69,9 @@ from __future__ import annotations
 import re
 import weakref
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 
 _PREFIXED = re.compile(r"^[ipu][A-Z]")
 

@@ -34,8 +34,8 @@ code into its own instrument app and keep the `p` app on MOOSDB data.
   (other than pShare and pMOOSBridge, whose sockets carry MOOS itself).
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

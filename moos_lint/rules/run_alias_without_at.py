@@ -23,8 +23,8 @@ Run = pShare @ NewConsole = false ~ ShareA
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R010", name="run-alias-without-at", severity=Severity.ERROR, scope=Scope.FILE)

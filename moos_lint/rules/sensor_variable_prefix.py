@@ -58,8 +58,8 @@ from __future__ import annotations
 import fnmatch
 import re
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import PUBLISH, bare_name, block_variables
 
 _INTERFACE = re.compile(r"^i[A-Z]")

@@ -24,8 +24,8 @@ Delete the extra `}`, or restore the block it belonged to.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R006", name="stray-closing-brace", severity=Severity.WARNING, scope=Scope.FILE)

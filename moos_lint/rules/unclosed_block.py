@@ -29,8 +29,8 @@ Add the missing `}` at the end of the block.
 None.
 """
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Scope, rule
 
 
 @rule(code="R005", name="unclosed-block", severity=Severity.ERROR, scope=Scope.FILE)

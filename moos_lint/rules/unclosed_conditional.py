@@ -22,8 +22,8 @@ Add the missing `#endif`.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._helpers import problem_findings
 
 

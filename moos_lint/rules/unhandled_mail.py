@@ -30,8 +30,8 @@ registration.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

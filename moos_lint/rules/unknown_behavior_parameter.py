@@ -37,9 +37,9 @@ MOOS-IvP caveats, deliberately not reported:
 
 import difflib
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._catalogue_bhv import lookup
 
 

@@ -20,8 +20,8 @@ Use the tag as spelled in the included file (tags are case-sensitive).
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.rules._helpers import problem_findings
 
 

@@ -67,9 +67,9 @@ today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 
 import difflib
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Scope, rule
 
 GLOBALS = [
     "ServerHost",

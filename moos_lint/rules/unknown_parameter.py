@@ -62,9 +62,9 @@ import difflib
 import functools
 
 from moos_lint.catalogue import catalogue_for
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Kind, Scope, rule
 
 
 def block_apps(ctx):

@@ -58,9 +58,9 @@ MOOS-IvP caveats, deliberately not reported:
 
 import re
 
+from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-from moos_lint.registry import Scope, rule
 from moos_lint.rules._hygiene import exclusive, names_match, where
 
 MANUAL_APPS = [

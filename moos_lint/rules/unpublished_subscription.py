@@ -54,9 +54,9 @@ MOOS-IvP caveats, deliberately not reported:
   uMAC): give them a publisher in the mission, or suppress the finding.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
 from moos_lint.mission_model import mission_model
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name
 
 

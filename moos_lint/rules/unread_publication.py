@@ -47,9 +47,9 @@ MOOS-IvP caveats, deliberately not reported:
   variables with them.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
 from moos_lint.mission_model import mission_model
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name
 
 #: apps whose subscriptions only observe (log, display)

@@ -22,8 +22,8 @@ mission files with `exclude` in the configuration.
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Span
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

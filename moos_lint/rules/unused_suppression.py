@@ -32,8 +32,9 @@ None.
 
 from __future__ import annotations
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity, Span
-from moos_lint.registry import Kind, Scope, is_valid_selector, matches, rule
+from moos_lint.selectors import selects
 from moos_lint.suppressions import COMMENT_RE
 
 
@@ -55,13 +56,13 @@ def check(ctx):
             for sel in sup.selectors:
                 if sel in sup.used:
                     continue
-                if not is_valid_selector(sel):
+                if not run.names_a_rule(sel):
                     msg = f"`{sel}` names no moos-lint rule"
                 else:
                     ran = [
                         r
                         for r in run.rules
-                        if matches(sel, r)
+                        if selects(sel, r.code, r.name)
                         and r.scope is not Scope.PROJECT
                         and (in_mission or r.scope is not Scope.MISSION)
                     ]

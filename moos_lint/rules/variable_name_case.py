@@ -73,8 +73,8 @@ from __future__ import annotations
 import fnmatch
 import re
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
-from moos_lint.registry import Kind, Scope, rule
 from moos_lint.variables import bare_name, unit_variables
 
 _UPPER = re.compile(r"[A-Z0-9_]*")

@@ -34,8 +34,8 @@ Notify("NAV_YAW", yaw);
 None.
 """
 
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 @rule(

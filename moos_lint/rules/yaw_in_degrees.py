@@ -59,8 +59,8 @@ None.
 import math
 
 from moos_lint.angles import angle_values, degrees_to_radians
+from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.registry import Kind, Scope, rule
 
 
 def _looks_like_degrees(value: float) -> bool:
