@@ -70,6 +70,9 @@ TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
     from typing import Any
 
+    from moos_lint.config import Settings
+    from moos_lint.result import Result
+
 ENV_VAR = "MOOS_LINT_CACHE_DIR"
 #: bump when the entry layout changes
 FORMAT = 2
@@ -78,10 +81,10 @@ KEEP = 8
 _PACKAGE = os.path.dirname(os.path.abspath(__file__))
 
 
-def cache_dir_for(settings: Any) -> str:
+def cache_dir_for(settings: Settings) -> str:
     """The cache folder: ``$MOOS_LINT_CACHE_DIR``, the ``cache-dir`` setting, else
     ``.moos_lint_cache`` in the root (``--cache-dir`` overrides them all)."""
-    configured = os.environ.get(ENV_VAR) or getattr(settings, "cache_dir", None)
+    configured = os.environ.get(ENV_VAR) or settings.cache_dir
     if configured:
         return os.path.abspath(configured)
     return os.path.join(os.path.abspath(settings.root), CACHE_DIR)
@@ -93,7 +96,7 @@ def _code_fingerprint() -> list:
     return [__version__, FORMAT, *((os.path.relpath(p, _PACKAGE), st) for p, st in files.items())]
 
 
-def run_key(settings: Any, paths: list[Path], files: list[str], context: bool) -> str:
+def run_key(settings: Settings, paths: list[Path], files: list[str], context: bool) -> str:
     # the selected rules follow from the selection settings and moos-lint's own code
     data = {
         "code": _code_fingerprint(),
@@ -106,7 +109,7 @@ def run_key(settings: Any, paths: list[Path], files: list[str], context: bool) -
     return hashlib.sha256(text.encode("utf-8", "surrogatepass")).hexdigest()[:40]
 
 
-def _settings_dict(settings: Any) -> dict:
+def _settings_dict(settings: Settings) -> dict:
     """Every setting (rule option defaults come with the code), without loading the rules."""
     return {k: v for k, v in vars(settings).items() if not k.startswith("_")}
 
@@ -122,10 +125,10 @@ def _digest(path: str) -> str:
     return hashlib.blake2b(data, digest_size=20).hexdigest()
 
 
-def _side_files(result: Any, settings: Any) -> set[str]:
+def _side_files(result: Result, settings: Settings) -> set[str]:
     """Files the analysis opens outside the nsplug reader."""
-    out: set[str] = set(getattr(settings, "catalogues", []) or [])
-    cc = getattr(settings, "compile_commands", None)
+    out: set[str] = set(settings.catalogues)
+    cc = settings.compile_commands
     if cc:
         out.add(os.path.join(cc, "compile_commands.json") if os.path.isdir(cc) else cc)
     moos_dirs = {os.path.dirname(p) for p in result.files if not p.endswith(_CPP)}
@@ -144,13 +147,15 @@ def _side_files(result: Any, settings: Any) -> set[str]:
 _CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".CPP", ".CC", ".CXX", ".H", ".HPP")
 
 
-def _dependencies(result: Any, settings: Any, read: set[str], probed: set[str]) -> dict[str, Any]:
+def _dependencies(
+    result: Result, settings: Settings, read: set[str], probed: set[str]
+) -> dict[str, Any]:
     files = set(read) | set(result.files) | set(result.sources) | _side_files(result, settings)
     deps = {}
     for path in sorted(files):
         deps[path] = (file_stamp(path), _digest(path))
     dirs = {os.path.dirname(p) for p in files}
-    dirs.update(getattr(settings, "include_paths", []) or [])
+    dirs.update(settings.include_paths)
     dirs.update(probed)
     return {"files": deps, "dirs": {d: folder_mtime(d) for d in sorted(dirs)}}
 
@@ -208,7 +213,7 @@ def load(folder: str, key: str) -> Any | None:
 
 
 def store(
-    folder: str, key: str, result: Any, settings: Any, read: set[str], probed: set[str]
+    folder: str, key: str, result: Result, settings: Settings, read: set[str], probed: set[str]
 ) -> None:
     """Write the entry for ``key`` atomically; a folder that cannot be written is skipped."""
     from moos_lint.result import Result
@@ -252,10 +257,12 @@ def _output_path(folder: str, token: str, render_key: str, missing: list[str]) -
     return os.path.join(folder, f"out-{token}-{rkey}.pickle")
 
 
-def store_output(folder: str, result: Any, render_key: str, text: str, has_findings: bool) -> None:
+def store_output(
+    folder: str, result: Result, render_key: str, text: str, has_findings: bool
+) -> None:
     """Keep the report rendered from a cached result (``render_key``: how it was rendered:
     format, options, working folder), so that an unchanged run prints it again as is."""
-    token = getattr(result, "cache_token", None)
+    token = result.cache_token
     if not token:
         return
     entry = {"render_key": render_key, "text": text, "has_findings": has_findings}
@@ -266,7 +273,7 @@ def store_output(folder: str, result: Any, render_key: str, text: str, has_findi
 
 
 def cached_output(
-    paths: list[Path], settings: Any, *, context: bool, cache_dir: str, render_key: str
+    paths: list[Path], settings: Settings, *, context: bool, cache_dir: str, render_key: str
 ) -> tuple[str, bool, dict] | None:
     """The report an unchanged run printed, rendered the same way: (text, has findings,
     what it depends on (see :func:`_watch`)).
@@ -320,7 +327,7 @@ def atomic_write(folder: str, path: str, data: bytes) -> None:
         raise
 
 
-def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
+def cached_discover(paths: list[Path], settings: Settings, cache_dir: str) -> Any:
     """:func:`moos_lint.discovery.discover`, reused while no folder it looked in changed.
 
     Adding, removing or renaming a file changes its folder's modification
@@ -330,7 +337,7 @@ def cached_discover(paths: list[Path], settings: Any, cache_dir: str) -> Any:
     return _discover(paths, settings, cache_dir)[0]
 
 
-def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, dict]:
+def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[Any, dict]:
     """:func:`cached_discover`, and the modification time of each folder it depends on."""
     from moos_lint.discovery import Discovered, discover
 
@@ -365,7 +372,7 @@ def _discover(paths: list[Path], settings: Any, cache_dir: str) -> tuple[Any, di
 
 
 def cached_lint(
-    paths: list[Path], settings: Any, *, context: bool, jobs: int | None, cache_dir: str
+    paths: list[Path], settings: Settings, *, context: bool, jobs: int | None, cache_dir: str
 ) -> Any:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
     found, folders = _discover(paths, settings, cache_dir)

@@ -11,10 +11,9 @@ from dataclasses import dataclass, field
 TYPE_CHECKING = False  # typing itself is not imported at run time
 
 if TYPE_CHECKING:
-    from typing import Any
-
     from moos_lint.diagnostics import Diagnostic
     from moos_lint.source import SourceFile
+    from moos_lint.unit import Unit
 
 
 @dataclass
@@ -26,8 +25,8 @@ class Result:
     sources: dict[str, SourceFile] = field(default_factory=dict)
     baselined: int = 0  # findings hidden by --baseline
     #: the linted files' expansions and models (engine units), in the order given
-    units: list[Any] = field(default_factory=list)
+    units: list[Unit] = field(default_factory=list)
     #: the result cache entry this result is stored in (see :mod:`moos_lint.cache`)
     cache_token: str | None = None
     #: what the cached result depends on, in stat terms (see :mod:`moos_lint.replay`)
-    cache_watch: dict | None = None
+    cache_watch: dict[str, object] | None = None

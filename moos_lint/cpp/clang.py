@@ -16,9 +16,12 @@ import shutil
 import subprocess
 import sys
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from moos_lint.cpp.model import AppModel, Publication, Subscription
+
+if TYPE_CHECKING:
+    from moos_lint.config import Settings
 
 _warned: set[str] = set()
 
@@ -47,13 +50,13 @@ def load_cindex() -> Any | None:
     return ci
 
 
-def find_compile_commands(settings: Any, folders: list[str]) -> str | None:
+def find_compile_commands(settings: Settings, folders: list[str]) -> str | None:
     """The folder holding compile_commands.json: given, else at or above the linted code."""
-    given = getattr(settings, "compile_commands", None)
+    given = settings.compile_commands
     if given:
         folder = os.path.dirname(given) if given.endswith(".json") else given
         return folder if os.path.isfile(os.path.join(folder, "compile_commands.json")) else None
-    starts = [getattr(settings, "root", "."), *folders]
+    starts = [settings.root, *folders]
     for start in starts:
         here = os.path.abspath(start)
         while True:
@@ -154,7 +157,7 @@ def _byte_col(line_text: str, col: int) -> int:
     return len(line_text[: col - 1].encode("utf-8")) + 1
 
 
-def enrich(apps: list[AppModel], settings: Any) -> None:
+def enrich(apps: list[AppModel], settings: Settings) -> None:
     """Refine the app models with libclang; warn once and keep them as they are on failure."""
     ci = load_cindex()
     if ci is None:

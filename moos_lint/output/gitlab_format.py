@@ -15,12 +15,17 @@ import re
 from moos_lint.diagnostics import Severity
 from moos_lint.output import display_path
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from moos_lint.diagnostics import Diagnostic
+    from moos_lint.result import Result
+
 SEVERITIES = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
 _LINE_REFS = re.compile(r"(?i)(?::\d+(?::\d+)?\b|\blines?\s+\d+)")
 
 
-def line_text(result, d) -> str:
-    src = getattr(result, "sources", {}).get(d.span.path)
+def line_text(result: Result, d: Diagnostic) -> str:
+    src = result.sources.get(d.span.path)
     if src is None:
         return ""
     return src.line(d.span.line).strip()
@@ -30,7 +35,7 @@ def fingerprint_key(code: str, path: str, message: str, text: str) -> str:
     return "\x1f".join((code, path, _LINE_REFS.sub(":#", message), text))
 
 
-def render(result, cwd: str, **_kw) -> str:
+def render(result: Result, cwd: str, **_kw) -> str:
     seen: dict[str, int] = {}
     out = []
     for d in result.diagnostics:

@@ -13,6 +13,10 @@ import xml.etree.ElementTree as ET
 
 from moos_lint.output import display_path
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from moos_lint.result import Result
+
 # Characters XML 1.0 does not allow, even escaped.
 _INVALID_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff\ud800-\udfff]")
 
@@ -21,9 +25,9 @@ def _clean(text: str) -> str:
     return _INVALID_XML.sub("\ufffd", text)
 
 
-def render(result, cwd: str, **_kw) -> str:
+def render(result: Result, cwd: str, **_kw) -> str:
     by_file: dict[str, list] = {}
-    for path in getattr(result, "files", []):
+    for path in result.files:
         by_file.setdefault(path, [])
     for d in result.diagnostics:
         by_file.setdefault(d.span.path, []).append(d)

@@ -18,6 +18,10 @@ from moos_lint import __version__
 from moos_lint.diagnostics import Diagnostic, Severity, Span
 from moos_lint.registry import Rule, all_rules, doc_sections
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from moos_lint.result import Result
+
 SCHEMA_URI = "https://json.schemastore.org/sarif-2.1.0.json"
 INFORMATION_URI = "https://github.com/moos-lint/moos-lint"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
@@ -119,7 +123,7 @@ def _result(d: Diagnostic, index: int, cwd: str) -> dict:
     return out
 
 
-def to_sarif(result, cwd: str) -> dict:
+def to_sarif(result: Result, cwd: str) -> dict:
     rules = all_rules()
     descriptors = [_rule_descriptor(r) for r in rules]
     index = {r.code: i for i, r in enumerate(rules)}
@@ -146,12 +150,12 @@ def to_sarif(result, cwd: str) -> dict:
                 },
                 "originalUriBaseIds": {SRCROOT: {"uri": root_uri}},
                 "columnKind": "unicodeCodePoints",
-                "invocations": [{"executionSuccessful": not getattr(result, "internal_errors", 0)}],
+                "invocations": [{"executionSuccessful": not result.internal_errors}],
                 "results": results,
             }
         ],
     }
 
 
-def render(result, cwd: str, **_kw) -> str:
+def render(result: Result, cwd: str, **_kw) -> str:
     return json.dumps(to_sarif(result, cwd), indent=2) + "\n"

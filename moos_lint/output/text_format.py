@@ -6,6 +6,10 @@ from collections import Counter
 
 from moos_lint.output import display_path
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from moos_lint.result import Result
+
 MAX_EXCERPT = 160
 
 
@@ -21,7 +25,9 @@ def _excerpt(text: str, col: int, end_col: int, end_line_same: bool) -> tuple[st
     return text, " " * start + "^" * max(1, min(width, len(text) - start if text else 1))
 
 
-def render(result, cwd: str, *, statistics: bool = False, quiet: bool = False, **_kw) -> str:
+def render(
+    result: Result, cwd: str, *, statistics: bool = False, quiet: bool = False, **_kw
+) -> str:
     out: list[str] = []
     for d in result.diagnostics:
         s = d.span
@@ -49,7 +55,7 @@ def render(result, cwd: str, *, statistics: bool = False, quiet: bool = False, *
             out.append(f"Found {n} finding{'s' if n != 1 else ''} in {files} file(s).")
         else:
             out.append(f"All checks passed ({files} file(s)).")
-        hidden = getattr(result, "baselined", 0)
+        hidden = result.baselined
         if hidden:
             out.append(f"{hidden} older finding(s) hidden by the baseline.")
     return "\n".join(out) + ("\n" if out else "")
