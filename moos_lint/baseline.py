@@ -36,6 +36,7 @@ from __future__ import annotations
 import json
 import os
 from collections import Counter
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from moos_lint.diagnostics import INTERNAL_ERROR, Diagnostic
@@ -139,7 +140,7 @@ def build(
     sources,
     *,
     previous: Baseline | None = None,
-    linted: list[str] = (),
+    linted: Sequence[str] = (),
     ran_codes: set[str] | None = None,
 ) -> Baseline:
     """A baseline of ``diags``, merged into ``previous`` (see the module docs)."""

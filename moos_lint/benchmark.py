@@ -202,7 +202,7 @@ def _floor(tree: str) -> None:
 
     def work(part: list[str]) -> None:
         for p in part:
-            data = read_bytes(p)  # type: ignore[arg-type]
+            data = read_bytes(p)
             if p.endswith(CPP_SUFFIXES) and isinstance(data, bytes) and mentions_moos(data):
                 be.matches(be.parse(data))
 

@@ -373,7 +373,7 @@ def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[An
 
 def cached_lint(
     paths: list[Path], settings: Settings, *, context: bool, jobs: int | None, cache_dir: str
-) -> Any:
+) -> Result:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
     found, folders = _discover(paths, settings, cache_dir)
     key = run_key(settings, paths, found.files, context)

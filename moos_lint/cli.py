@@ -80,7 +80,7 @@ def _columns() -> int:
         columns = 0
     if columns <= 0:
         try:
-            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns
+            columns = os.get_terminal_size(sys.__stdout__.fileno()).columns  # type: ignore[union-attr]
         except (AttributeError, ValueError, OSError):
             columns = 0
     return columns or 80
@@ -373,7 +373,7 @@ def _check(args: argparse.Namespace, settings) -> int:
     # an unchanged run prints the report it printed before, rendered the same way
     replay = cache_dir is not None and not args.baseline
     render_key = repr((fmt, bool(args.statistics), bool(args.quiet), os.getcwd()))
-    if replay:
+    if replay and cache_dir is not None:
         from moos_lint.cache import cached_output
 
         shown = cached_output(
@@ -440,12 +440,12 @@ def _check(args: argparse.Namespace, settings) -> int:
         outcome = fix_until_stable(lint, first=result)
         if args.diff:
             return _show_diff(args, outcome)
-        status = _write_fixes(outcome)
-        if status is not None:
-            return status
+        written = _write_fixes(outcome)
+        if written is not None:
+            return written
         result = outcome.result
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
-    if replay:  # (no cache with --fix or --diff)
+    if replay and cache_dir is not None:  # (no cache with --fix or --diff)
         from moos_lint.cache import store_output
 
         store_output(cache_dir, result, render_key, text, bool(result.diagnostics))
@@ -459,7 +459,7 @@ def _check(args: argparse.Namespace, settings) -> int:
         )
         return EXIT_ERROR
     status = EXIT_FINDINGS if result.diagnostics and not args.exit_zero else EXIT_CLEAN
-    if replay and result.cache_watch is not None:
+    if replay and cache_dir is not None and result.cache_watch is not None:
         _remember(args, cache_dir, result.cache_watch, text, status)
     return status
 

@@ -30,6 +30,10 @@ NAME_RE = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
 DOCS_URL = "https://github.com/moos-lint/moos-lint/blob/main/rules/{name}.md"
 
 
+#: a rule's check: takes the rule's context (:class:`moos_lint.engine.Context`), yields findings
+Check = Callable[..., Iterable[Any]]
+
+
 class Scope(enum.Enum):
     FILE = "file"  # one file, after nsplug expansion
     MISSION = "mission"  # one mission: a .moos file with an ANTLER block, with its includes
@@ -49,7 +53,7 @@ class Rule:
     name: str
     severity: Severity
     scope: Scope
-    check: Callable[..., Iterable[Any]]
+    check: Check
     kinds: tuple[Kind, ...] = (Kind.MOOS,)
     default_enabled: bool = True
     options: dict[str, Any] = field(default_factory=dict)
@@ -84,10 +88,10 @@ def rule(
     default_enabled: bool = True,
     options: dict[str, Any] | None = None,
     fixable: bool = False,
-) -> Callable:
+) -> Callable[[Check], Check]:
     """Declare a rule; the decorated function is its check."""
 
-    def wrap(fn: Callable) -> Callable:
+    def wrap(fn: Check) -> Check:
         if not CODE_RE.match(code):
             raise ValueError(f"bad rule code {code!r}")
         if not NAME_RE.match(name):

@@ -312,6 +312,7 @@ def lint_files(
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
     found: dict[tuple[Any, ...], Diagnostic] = {d.identity: d for d in cpp_errors}
+    per_unit: Iterable[tuple[list[Diagnostic], int]]
     if checked is not None:
         per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
     elif jobs > 1 and len(run.units) > 1:

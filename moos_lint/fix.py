@@ -30,6 +30,7 @@ from pathlib import Path
 
 from moos_lint.diagnostics import Diagnostic, Edit, Fix
 from moos_lint.nsplug import FileCache
+from moos_lint.result import Result
 from moos_lint.source import ReadProblem, SourceFile, decode, read_source
 
 MAX_PASSES = 10
@@ -100,7 +101,9 @@ def _newline_at(text: str, lines: list[tuple[int, int]], line: int) -> str:
     return m.group() if m else "\n"
 
 
-def _resolve(doc: Document, edit: Edit, lines) -> tuple[int, int, str] | None:
+def _resolve(
+    doc: Document, edit: Edit, lines: list[tuple[int, int]]
+) -> tuple[int, int, str] | None:
     s = edit.span
     start = _offset(lines, len(doc.text), s.line, s.col)
     end = _offset(lines, len(doc.text), s.end_line, s.end_col)
@@ -161,7 +164,7 @@ def apply_fixes(diagnostics: list[Diagnostic], docs: dict[str, Document]) -> Pas
                 break
             resolved.append((path, r))
         if ok:
-            fresh = []
+            fresh: list[tuple[str, tuple[int, int, str]]] = []
             for path, r in resolved:
                 mine = taken.get(path, [])
                 if r in mine or any(r == f for _, f in fresh):
@@ -215,8 +218,8 @@ class FixOutcome:
 
 
 def fix_until_stable(
-    lint: Callable[[FileCache], object],
-    first=None,
+    lint: Callable[[FileCache], Result],
+    first: Result | None = None,
     max_passes: int = MAX_PASSES,
 ) -> FixOutcome:
     """Lint, apply the fixes, lint again ... until a pass applies nothing.

@@ -97,11 +97,11 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
             sub.setdefault(name, {}).setdefault(proc, ref.param)
         elif ref.role == PUBLISH:
             pub.setdefault(name, {}).setdefault(proc, "config")
-    for p in model.processes:
-        if p.app is None:
+    for proc_ in model.processes:
+        if proc_.app is None:
             continue
-        for var in p.app.subscribes:
-            sub.setdefault(var, {}).setdefault(p.name, "app")
+        for var in proc_.app.subscribes:
+            sub.setdefault(var, {}).setdefault(proc_.name, "app")
     for ref in model.waits:  # waits satisfied by a dynamic name (prefix/suffix)
         name = bare_name(ref.name)
         if name and name not in pub:
@@ -118,15 +118,15 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
             keep.add(var)
     # ---- nodes
     proc_findings = _process_findings(diags, model)
-    for p in model.processes:
+    for proc_ in model.processes:
         g.processes.append(
             {
-                "id": "p:" + p.name,
-                "name": p.name,
-                "binary": p.binary,
-                "known": p.app is not None or p.binary.lower() in ("moosdb", "pantler"),
-                "source": p.app.provenance if p.app else "",
-                "findings": proc_findings.get(p.name, []),
+                "id": "p:" + proc_.name,
+                "name": proc_.name,
+                "binary": proc_.binary,
+                "known": proc_.app is not None or proc_.binary.lower() in ("moosdb", "pantler"),
+                "source": proc_.app.provenance if proc_.app else "",
+                "findings": proc_findings.get(proc_.name, []),
             }
         )
     if any(("(outside)" in pub.get(v, {})) for v in keep):

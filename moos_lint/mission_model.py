@@ -461,7 +461,7 @@ _KEPT_LOCK = threading.Lock()
 def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
     """A sibling's model's publishers, as the missions beside it see them."""
     who = f"{os.path.basename(path)} (another community)"
-    found = []
+    found: list[tuple[str, Publisher] | None] = []
     for var, pubs in sub.publishers.items():
         found.extend(_publisher(var, who, "external", p.line) for p in pubs)
     for ref in sub.refs:

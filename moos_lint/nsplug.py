@@ -30,7 +30,7 @@ import os
 import re
 import threading
 from collections import OrderedDict
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -282,7 +282,7 @@ class Preprocessor:
     def __init__(
         self,
         defines: dict[str, str] | None = None,
-        include_paths: list[str | Path] | None = None,
+        include_paths: Sequence[str | Path] | None = None,
         mode: str = "lint",
         cache: FileCache | None = None,
     ) -> None:

@@ -28,7 +28,7 @@ class ReadProblem:
 class SourceFile:
     """One file's text, split into lines, with how it was decoded."""
 
-    path: Path
+    path: str | Path
     text: str
     encoding: str = "utf-8"
     bom: bool = False
@@ -76,7 +76,7 @@ def _newline_of(text: str) -> str:
     return "\n"
 
 
-def decode(data: bytes, path: Path) -> SourceFile | ReadProblem:
+def decode(data: bytes, path: str | Path) -> SourceFile | ReadProblem:
     """Decode bytes as a text file, or say why they are not text."""
     if b"\x00" in data[:8192] or b"\x00" in data:
         return ReadProblem("not-text", "file contains NUL bytes: it is binary, not a text file")
@@ -99,7 +99,7 @@ def decode(data: bytes, path: Path) -> SourceFile | ReadProblem:
     )
 
 
-def read_source(path: Path) -> SourceFile | ReadProblem:
+def read_source(path: str | Path) -> SourceFile | ReadProblem:
     """Read a regular file as text without ever blocking or raising."""
     data = read_bytes(path)
     if isinstance(data, ReadProblem):
@@ -107,7 +107,7 @@ def read_source(path: Path) -> SourceFile | ReadProblem:
     return decode(data, path)
 
 
-def read_bytes(path: Path) -> bytes | ReadProblem:
+def read_bytes(path: str | Path) -> bytes | ReadProblem:
     """Read a regular file's bytes without ever blocking or raising."""
     try:
         st = os.stat(path)

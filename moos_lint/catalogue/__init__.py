@@ -279,8 +279,8 @@ DELEGATE = re.compile(
 )
 
 
-def _repo_app(app: AppModel) -> AppInfo:
-    """What the app's own C++ says it reads, publishes and subscribes to.
+def _repo_app(app: AppModel, name: str) -> AppInfo:
+    """What the app's own C++ (named ``name``) says it reads, publishes and subscribes to.
 
     It is strict (other keys are reported) only when the app reports
     unhandled lines and hands no key to code elsewhere. An app that the stock
@@ -300,7 +300,7 @@ def _repo_app(app: AppModel) -> AppInfo:
     prefixes = {p.name.prefix for p in app.publications if p.name.dynamic and p.name.prefix}
     dynamic = any(p.name.dynamic and not p.name.prefix for p in app.publications)
     info = AppInfo(
-        name=app.process_name,
+        name=name,
         params={c.text for c in app.config_params} | _base_keys(),
         strict=bool(_UNHANDLED.search(text)) and not DELEGATE.search(text),
         publishes=pubs,
@@ -313,7 +313,7 @@ def _repo_app(app: AppModel) -> AppInfo:
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
         info.publish_suffixes |= {"_ITER_GAP", "_ITER_LEN"}
-    known = stock().app(app.process_name)
+    known = stock().app(name)
     if known is not None:
         info.params |= known.params
         info.param_prefixes |= known.param_prefixes
@@ -351,7 +351,7 @@ def catalogue_for(run: RunView) -> Catalogue:
     for unit in run.units:
         app = unit.cpp
         if app is not None and app.is_app and app.process_name:
-            cat.add_app(_repo_app(app))
+            cat.add_app(_repo_app(app, app.process_name))
             inputs = None
     cat.inputs = inputs
     run.memos.catalogue = cat

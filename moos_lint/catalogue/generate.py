@@ -379,7 +379,7 @@ def _git_commit(src: str) -> tuple[str, str]:
 
 
 def _cpp_files(folder: str) -> list[str]:
-    out = []
+    out: list[str] = []
     for dirpath, _dirs, files in os.walk(folder):
         out.extend(os.path.join(dirpath, f) for f in files if f.endswith(CPP_EXT))
     return sorted(out)
@@ -447,15 +447,17 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
     folders = sorted(
         os.path.join(ivp, d) for d in os.listdir(ivp) if os.path.isdir(os.path.join(ivp, d))
     )
-    for c in core:
-        if os.path.isdir(c):
-            if os.path.exists(os.path.join(c, "CMakeLists.txt")) and c.endswith("MOOSDB"):
-                folders.append(c)
+    for core_dir in core:
+        if os.path.isdir(core_dir):
+            if os.path.exists(os.path.join(core_dir, "CMakeLists.txt")) and core_dir.endswith(
+                "MOOSDB"
+            ):
+                folders.append(core_dir)
             else:
                 folders.extend(
-                    os.path.join(c, d)
-                    for d in sorted(os.listdir(c))
-                    if os.path.isdir(os.path.join(c, d))
+                    os.path.join(core_dir, d)
+                    for d in sorted(os.listdir(core_dir))
+                    if os.path.isdir(os.path.join(core_dir, d))
                 )
     files: list[str] = []
     for f in folders:
@@ -528,9 +530,9 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
             continue
         params: set[str] = set()
         forms: dict[str, dict[str, str]] = {}
-        for c in reversed(chain):
-            params |= class_params.get(c, set())
-            forms.update(class_forms.get(c, {}))
+        for base in reversed(chain):
+            params |= class_params.get(base, set())
+            forms.update(class_forms.get(base, {}))
         text = _read(path)
         header = _read(os.path.splitext(path)[0] + ".h")
         delegated = []
@@ -558,10 +560,10 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
             "params_from_members": delegated,
             "param_forms": dict(sorted(forms.items())),
         }
-        corr = BEHAVIOR_CORRECTIONS.get(cls)
-        if corr:
-            entry["param_forms"] = dict(sorted({**forms, **corr["param_forms"]}.items()))
-            entry["corrected"] = [corr["why"]]
+        bhv_corr = BEHAVIOR_CORRECTIONS.get(cls)
+        if bhv_corr:
+            entry["param_forms"] = dict(sorted({**forms, **bhv_corr["param_forms"]}.items()))
+            entry["corrected"] = [bhv_corr["why"]]
         behaviors[cls] = entry
     return {
         "source": {
@@ -683,7 +685,7 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
     for lib in _linked_libs(m.folder):
         folder = lib_folder.get(lib)
         lm = by_folder.get(folder) if folder else None
-        if lm is None or lm is m:
+        if folder is None or lm is None or lm is m:
             continue
         got = set().union(*(_keys(cf) for cf in lm.files)) - params
         if got:

@@ -22,7 +22,7 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
     """
     out: dict[str, SourceFile] = {}
     for path in paths:
-        data = read_bytes(path)  # type: ignore[arg-type]
+        data = read_bytes(path)
         if not isinstance(data, bytes):
             continue
         kept = _read_memo.get(path) if PARSE_MEMO_SIZE else None
@@ -31,7 +31,7 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
         else:
             src = None
             if mentions_moos(data):
-                decoded = decode(data, path)  # type: ignore[arg-type]
+                decoded = decode(data, path)
                 if isinstance(decoded, SourceFile):
                     src = decoded
             if PARSE_MEMO_SIZE:

@@ -193,7 +193,7 @@ def enrich(apps: list[AppModel], settings: Settings) -> None:
 def _enrich_app(ci: Any, index: Any, db: Any, inc: str | None, ev: _Eval, app: AppModel) -> None:
     calls: dict[str, list[Publication | Subscription]] = {}
     for f in app.files:
-        items = [*f.publications, *f.subscriptions]
+        items: list[Publication | Subscription] = [*f.publications, *f.subscriptions]
         if items:
             calls[f.path] = items
     if not calls:

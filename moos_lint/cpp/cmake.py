@@ -17,7 +17,7 @@ _COMMENT = re.compile(r"#[^\n]*")
 
 
 def _read(path: str) -> str | None:
-    src = read_source(path)  # type: ignore[arg-type]
+    src = read_source(path)
     return src.text if isinstance(src, SourceFile) else None
 
 

@@ -281,8 +281,8 @@ class ParsedFile:
 def collect_tables(files: list[ParsedFile]) -> FolderTables:
     t = FolderTables()
     for pf in files:
-        for name, val in pf.defines:
-            m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', val)
+        for name, define in pf.defines:
+            m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
             if m:
                 t.defines[name] = m.group(1)
         for a in pf.asgs:
@@ -353,7 +353,7 @@ class Extractor:
                 v = self.tables.defines[key]
                 return v, v
             vals = self.tables.assigns.get(key)
-            if vals and all(v is not None for v in vals) and len(set(vals)) == 1:
+            if vals and len(set(vals)) == 1 and vals[0] is not None:
                 return vals[0], vals[0]
         return None, ""
 

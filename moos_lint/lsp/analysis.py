@@ -11,6 +11,7 @@ shown on the ``#include`` line that pulls it in.
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -145,7 +146,7 @@ def _may_include(path: str, name: bytes) -> bool:
 def analyse(
     path: str,
     texts: dict[str, str],
-    includers: list[str] = (),
+    includers: Sequence[str] = (),
     settings: Settings | None = None,
 ) -> Analysis:
     """Lint the document at ``path``; ``texts`` holds every open document's text."""

@@ -120,7 +120,7 @@ def from_app_catalogue(cat: object) -> Catalogue:
 def default_catalogue() -> Catalogue:
     """The stock app catalogue, or :data:`EMPTY` when moos-lint has none."""
     try:
-        from moos_lint.catalogue import stock  # type: ignore[attr-defined]
+        from moos_lint.catalogue import stock
 
         return from_app_catalogue(stock())
     except Exception:  # no catalogue, or one this adapter cannot read

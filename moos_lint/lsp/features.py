@@ -291,7 +291,7 @@ def _catalogue_hover(
         return None
     comp = _component(lines, enclosing_header(lines, lineno), catalogue)
     info = comp.param(kv.group("key")) if comp else None
-    if info is None:
+    if comp is None or info is None:
         return None
     return f"**{comp.name}** `{info.name}`\n\n{info.doc}".rstrip()
 

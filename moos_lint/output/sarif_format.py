@@ -15,7 +15,7 @@ from pathlib import Path
 from urllib.parse import quote
 
 from moos_lint import __version__
-from moos_lint.diagnostics import Diagnostic, Severity, Span
+from moos_lint.diagnostics import Diagnostic, Fix, Severity, Span
 from moos_lint.registry import Rule, all_rules, doc_sections
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
@@ -76,14 +76,14 @@ def _extra_descriptor(d: Diagnostic) -> dict:
     }
 
 
-def _fix(d: Diagnostic, cwd: str) -> dict:
+def _fix(fix: Fix, cwd: str) -> dict:
     by_path: dict[str, list[dict]] = {}
-    for e in d.fix.edits:
+    for e in fix.edits:
         by_path.setdefault(e.span.path, []).append(
             {"deletedRegion": _region(e.span), "insertedContent": {"text": e.text}}
         )
     return {
-        "description": {"text": d.fix.message},
+        "description": {"text": fix.message},
         "artifactChanges": [
             {"artifactLocation": _artifact(p, cwd), "replacements": reps}
             for p, reps in by_path.items()
@@ -119,7 +119,7 @@ def _result(d: Diagnostic, index: int, cwd: str) -> dict:
             for i, site in enumerate(reversed(d.chain))
         ]
     if d.fix is not None and d.fix.edits:
-        out["fixes"] = [_fix(d, cwd)]
+        out["fixes"] = [_fix(d.fix, cwd)]
     return out
 
 

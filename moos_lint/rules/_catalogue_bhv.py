@@ -34,9 +34,9 @@ def repo_classes(ctx: Context) -> frozenset[str]:
     root = _root(ctx)
     for count, (_dirpath, dirs, files) in enumerate(os.walk(root)):
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
-        for f in files:
-            if f.endswith(_CPP):
-                stems.add(os.path.splitext(f)[0].lower())
+        for name in files:
+            if name.endswith(_CPP):
+                stems.add(os.path.splitext(name)[0].lower())
         if count > 20000:  # a huge tree: stop looking
             break
     run.memos.repo_cpp_stems = found = frozenset(stems)

@@ -48,7 +48,7 @@ import os
 
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
-from moos_lint.model import antler_runs, has_macro
+from moos_lint.model import Block, antler_runs, has_macro
 
 
 @rule(
@@ -59,9 +59,12 @@ from moos_lint.model import antler_runs, has_macro
     kinds=(Kind.MOOS,),
 )
 def check(ctx):
-    effective = []
+    effective: list[Block] = []
     for block in ctx.moos.antler_blocks:
-        if any(not b.header.excludes(block.header) for b in effective):
+        header = block.header
+        if any(
+            b.header is None or header is None or not b.header.excludes(header) for b in effective
+        ):
             continue  # pAntler reads the first ANTLER block only
         effective.append(block)
     seen: dict[str, list] = {}

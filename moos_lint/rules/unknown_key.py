@@ -66,6 +66,7 @@ today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 """
 
 import difflib
+from collections.abc import Sequence
 
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
@@ -165,7 +166,7 @@ def check(ctx):
             yield from _judge(ctx, p, known, "ANTLER-block", r007)
 
 
-def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: list[str] = ()):
+def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequence[str] = ()):
     key = p.key
     if _skip_key(key):
         return

@@ -70,7 +70,7 @@ from moos_lint.model import has_macro
 def block_apps(ctx):
     """(block, AppInfo) for each ProcessConfig block of an app the catalogue knows."""
     cat = catalogue_for(ctx.run)
-    aliases = {}
+    aliases: dict[str, str] = {}
     for run in ctx.moos.runs:
         if run.name and not has_macro(run.name):
             aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
