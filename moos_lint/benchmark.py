@@ -193,8 +193,9 @@ def _floor(tree: str) -> None:
     mention the MOOS API, shared between the processes a cold run uses."""
     from moos_lint import parallel
     from moos_lint.cpp.parse import backend
-    from moos_lint.cpp.prefilter import CPP_SUFFIXES, mentions_moos
+    from moos_lint.cpp.prefilter import mentions_moos
     from moos_lint.source import read_bytes
+    from moos_lint.suffixes import is_cpp
 
     files = _lintable(tree)
     jobs = parallel.effective_jobs(None, len(files))
@@ -203,7 +204,7 @@ def _floor(tree: str) -> None:
     def work(part: list[str]) -> None:
         for p in part:
             data = read_bytes(p)
-            if p.endswith(CPP_SUFFIXES) and isinstance(data, bytes) and mentions_moos(data):
+            if is_cpp(p) and isinstance(data, bytes) and mentions_moos(data):
                 be.matches(be.parse(data))
 
     children = []
@@ -220,10 +221,11 @@ def _floor(tree: str) -> None:
 
 def _cpp_near(files: list[str], lines: int) -> str | None:
     from moos_lint.cpp.prefilter import mentions_moos
+    from moos_lint.suffixes import is_cpp_source
 
     best, best_gap = None, None
     for p in files:
-        if not p.endswith((".cpp", ".cc", ".cxx")):
+        if not is_cpp_source(p):
             continue
         try:
             data = Path(p).read_bytes()

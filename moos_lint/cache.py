@@ -65,6 +65,7 @@ from pathlib import Path
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR
 from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
+from moos_lint.suffixes import is_cpp
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
@@ -131,10 +132,10 @@ def _side_files(result: Result, settings: Settings) -> set[str]:
     cc = settings.compile_commands
     if cc:
         out.add(os.path.join(cc, "compile_commands.json") if os.path.isdir(cc) else cc)
-    moos_dirs = {os.path.dirname(p) for p in result.files if not p.endswith(_CPP)}
+    moos_dirs = {os.path.dirname(p) for p in result.files if not is_cpp(p)}
     for d in moos_dirs:
         out.update(glob.glob(os.path.join(glob.escape(d), "*.sh")))
-    cpp_dirs = {os.path.dirname(p) for p in result.files if p.endswith(_CPP)}
+    cpp_dirs = {os.path.dirname(p) for p in result.files if is_cpp(p)}
     for d in cpp_dirs:
         for cm in (
             os.path.join(d, "CMakeLists.txt"),
@@ -142,9 +143,6 @@ def _side_files(result: Result, settings: Settings) -> set[str]:
         ):
             out.add(cm)
     return out
-
-
-_CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".CPP", ".CC", ".CXX", ".H", ".HPP")
 
 
 def _dependencies(

@@ -9,10 +9,8 @@ import re
 from pathlib import Path
 
 from moos_lint.config import DEFAULT_EXCLUDE
+from moos_lint.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES
 
-MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
-BHV_SUFFIXES = (".bhv",)
-CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".h", ".hpp")
 SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
 
 

@@ -31,8 +31,8 @@ from moos_lint.catalogue import DELEGATE
 from moos_lint.cpp.app import build_apps
 from moos_lint.cpp.model import AppModel
 from moos_lint.source import SourceFile, read_source
+from moos_lint.suffixes import is_cpp, is_cpp_source
 
-CPP_EXT = (".cpp", ".cc", ".cxx", ".h", ".hpp")
 _POST = re.compile(
     r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\"([A-Za-z0-9_]+)\"", re.MULTILINE
 )
@@ -381,7 +381,7 @@ def _git_commit(src: str) -> tuple[str, str]:
 def _cpp_files(folder: str) -> list[str]:
     out: list[str] = []
     for dirpath, _dirs, files in os.walk(folder):
-        out.extend(os.path.join(dirpath, f) for f in files if f.endswith(CPP_EXT))
+        out.extend(os.path.join(dirpath, f) for f in files if is_cpp(f))
     return sorted(out)
 
 
@@ -486,11 +486,11 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
         for cf in m.files:
             for c in cf.classes:
                 class_bases.setdefault(c.name, []).extend(c.bases)
-                if cf.path.endswith((".cpp", ".cc", ".cxx")) or c.name not in class_file:
+                if is_cpp_source(cf.path) or c.name not in class_file:
                     class_file.setdefault(c.name, cf.path)
     for m in models:
         for cf in m.files:
-            if not cf.path.endswith((".cpp", ".cc", ".cxx")):
+            if not is_cpp_source(cf.path):
                 continue
             stem = os.path.splitext(os.path.basename(cf.path))[0]
             class_params.setdefault(stem, set()).update(_keys(cf))

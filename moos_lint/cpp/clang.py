@@ -19,6 +19,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from moos_lint.cpp.model import AppModel, Publication, Subscription
+from moos_lint.suffixes import is_cpp_source
 
 if TYPE_CHECKING:
     from moos_lint.config import Settings
@@ -199,7 +200,7 @@ def _enrich_app(ci: Any, index: Any, db: Any, inc: str | None, ev: _Eval, app: A
     if not calls:
         return
     done: set[str] = set()
-    units = [f.path for f in app.files if not f.path.endswith((".h", ".hpp"))]
+    units = [f.path for f in app.files if is_cpp_source(f.path)]
     for path in units:
         cmds = db.getCompileCommands(path)
         if not cmds:

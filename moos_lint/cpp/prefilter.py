@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import re
 
-CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".h", ".hpp")
-
 _MOOS_API = re.compile(
     rb"\b(?:Notify|Register|UnRegister|CMOOSApp|AppCastingMOOSApp|CMOOSInstrument|"
     rb"OnNewMail|OnStartUp|GetConfigurationParam|CMOOSSerialPort)\b|\.Run\s*\("

@@ -7,12 +7,12 @@ from typing import TYPE_CHECKING
 
 from moos_lint.catalogue import BehaviorInfo, catalogue_for
 from moos_lint.markers import VCS_MARKERS
+from moos_lint.suffixes import is_cpp
 
 if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
     from moos_lint.engine import Context
 
 _SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
-_CPP = (".cpp", ".cc", ".cxx", ".h", ".hpp")
 
 
 def repo_classes(ctx: Context) -> frozenset[str]:
@@ -35,7 +35,7 @@ def repo_classes(ctx: Context) -> frozenset[str]:
     for count, (_dirpath, dirs, files) in enumerate(os.walk(root)):
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
-            if name.endswith(_CPP):
+            if is_cpp(name):
                 stems.add(os.path.splitext(name)[0].lower())
         if count > 20000:  # a huge tree: stop looking
             break

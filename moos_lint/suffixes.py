@@ -1,0 +1,39 @@
+"""The file names moos-lint reads, by kind: the one definition every layer uses.
+
+Suffixes compare without regard to case (``Foo.CPP`` is C++, ``M.MOOS`` a
+mission), as the file discovery always has.
+"""
+
+from __future__ import annotations
+
+#: missions and their fragments (nsplug plugs and definition files)
+MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
+#: helm behavior files
+BHV_SUFFIXES = (".bhv",)
+#: C++ translation units
+CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx")
+#: C++ headers
+CPP_HEADER_SUFFIXES = (".h", ".hpp")
+#: every C++ file moos-lint reads
+CPP_SUFFIXES = CPP_SOURCE_SUFFIXES + CPP_HEADER_SUFFIXES
+
+
+def is_cpp(path: str) -> bool:
+    """Whether the file is C++ (a source or a header)."""
+    return path.lower().endswith(CPP_SUFFIXES)
+
+
+def is_cpp_source(path: str) -> bool:
+    """Whether the file is a C++ translation unit (not a header)."""
+    return path.lower().endswith(CPP_SOURCE_SUFFIXES)
+
+
+__all__ = [
+    "BHV_SUFFIXES",
+    "CPP_HEADER_SUFFIXES",
+    "CPP_SOURCE_SUFFIXES",
+    "CPP_SUFFIXES",
+    "MOOS_SUFFIXES",
+    "is_cpp",
+    "is_cpp_source",
+]
