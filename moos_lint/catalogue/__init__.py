@@ -19,6 +19,10 @@ A user catalogue is a JSON or TOML file::
     strict = true                   # the list is complete: report other keys
     publishes = ["MY_STATUS"]
     subscribes = ["NAV_X"]
+    needs_origin = false            # reads LatOrigin/LongOrigin
+    needs_process_config = true     # runs as intended only with its block
+    launched_manually = false       # started by hand with the mission file
+    observer = false                # shows or logs what it is told (a viewer, a logger)
 
     [behaviors.BHV_MyBhv]
     params = ["speed"]              # besides IvPBehavior's generic keys
@@ -60,8 +64,21 @@ class AppInfo:
     publish_suffixes: set[str] = field(default_factory=set)
     publishes_dynamic: bool = False
     subscribes: set[str] = field(default_factory=set)
+    #: the app subscribes to names it builds at run time
+    subscribes_dynamic: bool = False
+    #: those run-time names are the variables its configuration names, which
+    #: :mod:`moos_lint.variables` reads from its block: it reads nothing unforeseen
+    subscriptions_from_config: bool = False
+    #: it registers for whatever it is told to show or log (a viewer, a logger, a
+    #: scope): what it subscribes to is watched, not consumed
+    observer: bool = False
+    #: it reads LatOrigin/LongOrigin (converts between lat/long and the local grid)
     needs_origin: bool = False
-    needs_process_config: bool = False
+    #: it does not run as intended without its ProcessConfig block
+    needs_process_config: bool = True
+    #: users start it by hand with the mission file (``uXMS targ.moos``): its block is
+    #: read although no Run line launches it
+    launched_manually: bool = False
     provenance: str = ""
     #: key -> (form, source line): value forms the app's parser enforces
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
@@ -92,9 +109,21 @@ class CatalogueError(Exception):
     """A user catalogue file that cannot be read."""
 
 
+@dataclass(frozen=True)
+class ProgramInfo:
+    """A program pAntler may launch that is not a MOOS app with a block of its own
+    (MOOSDB, pAntler, the uMS scope)."""
+
+    name: str
+    needs_process_config: bool = False
+    launched_manually: bool = False
+    provenance: str = ""
+
+
 class Catalogue:
     def __init__(self) -> None:
         self.apps: dict[str, AppInfo] = {}
+        self.programs: dict[str, ProgramInfo] = {}
         self.behaviors: dict[str, BehaviorInfo] = {}
         self.generic_behavior_params: set[str] = set()
         self.source: dict[str, str] = {}
@@ -109,9 +138,20 @@ class Catalogue:
     def behavior(self, kind: str) -> BehaviorInfo | None:
         return self.behaviors.get(kind.lower())
 
+    def needs_process_config(self, program: str) -> bool | None:
+        """Whether ``program`` (a binary name) needs its ProcessConfig block; None: unknown."""
+        facts = self.app(program) or self.programs.get(program.lower())
+        return None if facts is None else facts.needs_process_config
+
+    def launched_manually(self, name: str) -> bool:
+        """Whether users start ``name`` by hand with the mission file."""
+        facts = self.app(name) or self.programs.get(name.lower())
+        return facts is not None and facts.launched_manually
+
     def copy(self) -> Catalogue:
         c = Catalogue()
         c.apps = dict(self.apps)
+        c.programs = dict(self.programs)
         c.behaviors = dict(self.behaviors)
         c.generic_behavior_params = set(self.generic_behavior_params)
         c.source = dict(self.source)
@@ -138,8 +178,12 @@ def _stock_app(name: str, d: dict[str, Any], bases: dict[str, Any], commit: str)
         publish_suffixes=set(d.get("publish_suffixes", [])),
         publishes_dynamic=bool(d.get("publishes_dynamic")),
         subscribes=set(d.get("subscribes", [])),
+        subscribes_dynamic=bool(d.get("subscribes_dynamic")),
+        subscriptions_from_config=bool(d.get("subscriptions_from_config")),
+        observer=bool(d.get("observer")),
         needs_origin=bool(d.get("needs_origin")),
-        needs_process_config=bool(d.get("needs_process_config")),
+        needs_process_config=bool(d.get("needs_process_config", True)),
+        launched_manually=bool(d.get("launched_manually")),
         provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}".strip(),
         forms=_forms(d),
     )
@@ -178,6 +222,13 @@ def stock() -> Catalogue:
     bases = data.get("base_classes", {})
     for name, d in data.get("apps", {}).items():
         cat.add_app(_stock_app(name, d, bases, commit))
+    for name, d in data.get("programs", {}).items():
+        cat.programs[name.lower()] = ProgramInfo(
+            name=name,
+            needs_process_config=bool(d.get("needs_process_config")),
+            launched_manually=bool(d.get("launched_manually")),
+            provenance=f"moos-ivp {commit[:8]}: {d.get('why', '')}",
+        )
     extra = {k.lower() for k in data.get("behavior_extra_params", {})}
     cat.generic_behavior_params = set(extra)
     for name, d in data.get("behaviors", {}).items():
@@ -198,6 +249,18 @@ def _strings(path: str, where: str, value: Any) -> list[str]:
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
         raise CatalogueError(f"{path}: `{where}` must be a list of strings")
     return value
+
+
+_USER_APP_KEYS = (
+    "params",
+    "strict",
+    "publishes",
+    "subscribes",
+    "needs_origin",
+    "needs_process_config",
+    "launched_manually",
+    "observer",
+)
 
 
 def load_user_catalogue(path: str, into: Catalogue) -> None:
@@ -221,7 +284,7 @@ def load_user_catalogue(path: str, into: Catalogue) -> None:
         if not isinstance(d, dict):
             raise CatalogueError(f"{path}: `apps.{name}` must be a table")
         for key in d:
-            if key not in ("params", "strict", "publishes", "subscribes", "needs_origin"):
+            if key not in _USER_APP_KEYS:
                 raise CatalogueError(f"{path}: unknown key `apps.{name}.{key}`")
         info = AppInfo(
             name=name,
@@ -230,6 +293,9 @@ def load_user_catalogue(path: str, into: Catalogue) -> None:
             publishes=set(_strings(path, f"apps.{name}.publishes", d.get("publishes", []))),
             subscribes=set(_strings(path, f"apps.{name}.subscribes", d.get("subscribes", []))),
             needs_origin=bool(d.get("needs_origin", False)),
+            needs_process_config=bool(d.get("needs_process_config", True)),
+            launched_manually=bool(d.get("launched_manually", False)),
+            observer=bool(d.get("observer", False)),
             provenance=f"catalogue {os.path.basename(path)}",
         )
         info.params |= _base_keys()
@@ -272,6 +338,11 @@ def _generic_bhv_keys() -> frozenset[str]:
 
 
 _UNHANDLED = re.compile(r"reportUnhandledConfigWarning")
+#: an AppCasting app whose start-up declares its block optional (``OnStartUpDirectives(
+#: "must_have_moosblock=false")``); any other app needs its block
+OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
+#: the app reads the origin of the local grid (the stock catalogue's test, generate.py)
+READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 #: ``else handled = m_viewer.setParam(param, value);``: a final ``else`` that hands any
 #: other key to code elsewhere (a library), whose keys the app's own files do not list
 DELEGATE = re.compile(
@@ -307,7 +378,9 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
         publish_prefixes=prefixes,
         publishes_dynamic=dynamic,
         subscribes={s.name.text for s in app.subscriptions if s.name.text},
-        needs_origin='"LatOrigin"' in text or '"LATORIGIN"' in text,
+        subscribes_dynamic=any(s.name.dynamic for s in app.subscriptions),
+        needs_origin=bool(READS_ORIGIN.search(text)),
+        needs_process_config=not OPTIONAL_BLOCK.search(text),
         provenance=f"C++ {_shown(app.folder)}",
     )
     if any(b.startswith("AppCasting") for b in app.base_chain):
@@ -322,6 +395,11 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
         info.publish_suffixes |= known.publish_suffixes
         info.publishes_dynamic = info.publishes_dynamic or known.publishes_dynamic
         info.subscribes |= known.subscribes
+        # what its own files cannot show: how it subscribes, how it is started
+        info.subscribes_dynamic = info.subscribes_dynamic or known.subscribes_dynamic
+        info.subscriptions_from_config = known.subscriptions_from_config
+        info.observer = known.observer
+        info.launched_manually = known.launched_manually
     return info
 
 
@@ -363,6 +441,7 @@ __all__ = [
     "BehaviorInfo",
     "Catalogue",
     "CatalogueError",
+    "ProgramInfo",
     "catalogue_for",
     "load_user_catalogue",
     "stock",

@@ -27,7 +27,7 @@ import subprocess
 import sys
 from collections.abc import Iterable
 
-from moos_lint.catalogue import DELEGATE
+from moos_lint.catalogue import DELEGATE, OPTIONAL_BLOCK, READS_ORIGIN
 from moos_lint.cpp.app import build_apps
 from moos_lint.cpp.model import AppModel
 from moos_lint.source import SourceFile, read_source
@@ -157,6 +157,9 @@ CORRECTIONS: dict[str, dict] = {
         "the behavior file's set blocks",
     },
 }
+
+_SRC = "ivp/src/"
+
 
 _MARINE = "ivp/src/lib_behaviors-marine/"
 
@@ -338,6 +341,97 @@ CORRECTIONS["pObstacleMgr"] = {
 }
 
 
+def _fact(app: str, key: str, why: str) -> None:
+    """One more hand fact (a boolean set true, unless ``key`` says otherwise) for ``app``."""
+    value = not key.startswith("!")
+    entry = CORRECTIONS.setdefault(app, {})
+    entry[key.lstrip("!")] = value
+    entry["why"] = f"{entry['why']}; {why}" if entry.get("why") else why
+
+
+# Apps that run as intended without a ProcessConfig block although the extractor cannot
+# tell (they do not declare ``must_have_moosblock=false``).
+_fact(
+    "uMAC",
+    "!needs_process_config",
+    "reads its block only when there is one (ivp/src/uMAC/AppCastMonitor.cpp:177)",
+)
+_fact(
+    "uPokeDB",
+    "!needs_process_config",
+    "ignores a missing block: what it pokes comes from the command line "
+    "(ivp/src/uPokeDB/PokeDB.cpp:252, PokeDB_Info.cpp:55)",
+)
+# Tools users start by hand with the mission file: their block is read although no
+# Run line launches them. Evidence: the usage line of each.
+for _app, _usage in (
+    ("uXMS", "uXMS/XMS_Info.cpp:55"),
+    ("uMAC", "uMAC/AppCastMonitor_Info.cpp:59"),
+    ("uMACView", "uMACView/UMV_Info.cpp:54"),
+    ("uPokeDB", "uPokeDB/PokeDB_Info.cpp:55"),
+    ("uQueryDB", "uQueryDB/QueryDB_Info.cpp:60"),
+    ("uMayFinish", "uMayFinish/MayFinish_Info.cpp:38"),
+    ("uTermCommand", "uTermCommand/TermCommand_Info.cpp:51"),
+    ("uHelmScope", "uHelmScope/HelmScope_Info.cpp:52"),
+):
+    _fact(_app, "launched_manually", f"started by hand: `{_app} file.moos` ({_SRC}{_usage})")
+# Observers: they register for whatever they are told to show or log, so what they
+# subscribe to is not read by a consumer, and their dynamic subscriptions are no reader.
+for _app, _at in (
+    ("uXMS", "ivp/src/uXMS/XMS.cpp:185,832"),
+    ("uMAC", "ivp/src/uMAC/AppCastMonitor.cpp:202"),
+    ("uMACView", "ivp/src/uMACView/UMV_MOOSApp.cpp:151-154,293 (appcasts, watch clusters)"),
+    ("uHelmScope", "ivp/src/uHelmScope/HelmScope.cpp:483,524"),
+    ("pMarineViewer", "ivp/src/pMarineViewer/PMV_MOOSApp.cpp:262-291"),
+    ("pRealm", "ivp/src/pRealm/Realm.cpp:184-262"),
+    ("uFldScope", "ivp/src/uFldScope/UFS_MOOSApp.cpp:138"),
+    ("pLogger", "MOOS_Jul2724/MOOSEssentials/Essentials/pLogger/MOOSLogger.cpp:224-439"),
+):
+    _fact(_app, "observer", f"an observer: registers for what it is told to show or log ({_at})")
+# Apps whose run-time subscriptions are the variables their configuration names, which
+# moos_lint.variables reads from their blocks: not open-ended.
+for _app, _at in (
+    ("pHelmIvP", "pHelmIvP/HelmIvP.cpp:1186 (the behaviors' variables)"),
+    ("pShare", "MOOS_Jul2724/MOOSEssentials/Essentials/pShare/Share.cpp:757 (output routes)"),
+    ("uFldNodeBroker", "uFldNodeBroker/NodeBroker.cpp:337-352 (bridge src)"),
+    ("uFldShoreBroker", "uFldShoreBroker/ShoreBroker.cpp:592-645 (bridge src, qbridge)"),
+    ("uTimerScript", "uTimerScript/TS_MOOSApp.cpp:470-471 (condition, forward_var, pause_var)"),
+    ("pEchoVar", "pEchoVar/EchoVar.cpp:194-197 (echo sources, conditions)"),
+    ("pNodeReporter", "pNodeReporter/NodeReporter.cpp:297-313 (NAV_*, riders)"),
+    ("uProcessWatch", "uProcessWatch/ProcessWatch.cpp:611 (<PROC>_STATUS of watched apps)"),
+    ("pContactMgrV20", "pContactMgrV20/ContactMgrV20.cpp:357-361 (disable_var, enable_var)"),
+    ("pBasicContactMgr", "dep_pBasicContactMgr/BasicContactMgr.cpp:404-406 (alerts)"),
+    ("pDeadManPost", "pDeadManPost/DeadManPost.cpp:183 (heartbeat_var)"),
+    ("pObstacleMgr", "pObstacleMgr/ObstacleManager.cpp:283-297 (point_var)"),
+    ("pXRelay", "pXRelay/PXR_MOOSApp.cpp:84 (incoming_var)"),
+    ("uFldCollisionDetect", "uFldCollisionDetect/CollisionDetector.cpp:420 (condition)"),
+    ("uQueryDB", "uQueryDB/QueryDB.cpp:265-272 (conditions)"),
+    ("uPlotViewer", "uPlotViewer/UPV_MOOSApp.cpp:123 (plot_var)"),
+    ("pMissionEval", "pMissionEval/MissionEval.cpp:306-313 (lead/pass/fail conditions)"),
+):
+    where = _at if _at.startswith("MOOS_") else _SRC + _at
+    _fact(_app, "subscriptions_from_config", f"subscribes to what its block names ({where})")
+
+#: programs pAntler launches that are not configured by a ProcessConfig block of their own
+PROGRAMS: dict[str, dict] = {
+    "MOOSDB": {
+        "needs_process_config": False,
+        "why": "reads the top-of-file settings only "
+        "(MOOS_Jul2724/MOOSCore/Core/libMOOS/DB/MOOSDB.cpp:278-320)",
+    },
+    "pAntler": {
+        "needs_process_config": False,
+        "why": "reads the ANTLER block, under the name ANTLER "
+        "(MOOS_Jul2724/MOOSEssentials/Essentials/pAntler/Antler.cpp:379-383)",
+    },
+    "uMS": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "the MOOS scope GUI, started by hand; it asks for the server to watch "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uMS/uMS.cpp:139)",
+    },
+}
+
 #: apps the extractor does not see as apps (no CMOOSApp class), described by hand
 EXTRA_APPS: dict[str, dict] = {
     "pMOOSBridge": {
@@ -508,6 +602,8 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
     for name, entry in EXTRA_APPS.items():
         apps.setdefault(name, dict(entry))
     for name, corr in CORRECTIONS.items():
+        if name not in apps:
+            raise SystemExit(f"a correction names an app the sources do not have: {name}")
         if name in apps:
             entry = apps[name]
             for key, vals in corr.items():
@@ -576,6 +672,7 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
         "base_classes": BASE_PARAMS,
         "behavior_extra_params": BEHAVIOR_EXTRA_PARAMS,
         "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
+        "programs": PROGRAMS,
         "behaviors": behaviors,
     }
 
@@ -715,8 +812,10 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
         "subscribes": subs,
         "subscribe_prefixes": sub_prefixes,
         "subscribes_dynamic": sub_dynamic,
-        "needs_process_config": base.startswith("AppCasting") or "No config block" in text,
-        "needs_origin": bool(re.search(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"", text)),
+        # every app needs its block unless its start-up declares it optional
+        # (AppCastingMOOSApp.cpp:308-368: "No mission config block found" otherwise)
+        "needs_process_config": not OPTIONAL_BLOCK.search(text),
+        "needs_origin": bool(READS_ORIGIN.search(text)),
     }
     return entry
 
