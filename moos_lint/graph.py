@@ -86,17 +86,18 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
                 pub.setdefault(var, {}).setdefault("(outside)", p.how)
     named: set[str] = set()
     for ref in model.refs:
-        name = bare_name(ref.name)
-        if not name or "*" in name:
-            continue
         proc = model.ref_process.get(id(ref))
         if proc is None:
             continue
-        named.add(name)
-        if ref.role == SUBSCRIBE:
-            sub.setdefault(name, {}).setdefault(proc, ref.param)
-        elif ref.role == PUBLISH:
-            pub.setdefault(name, {}).setdefault(proc, "config")
+        for read in ref.read_names if ref.role == SUBSCRIBE else (ref.name,):
+            name = bare_name(read)
+            if not name or "*" in name:
+                continue
+            named.add(name)
+            if ref.role == SUBSCRIBE:
+                sub.setdefault(name, {}).setdefault(proc, ref.param)
+            elif ref.role == PUBLISH:
+                pub.setdefault(name, {}).setdefault(proc, "config")
     for proc_ in model.processes:
         if proc_.app is None:
             continue

@@ -148,9 +148,10 @@ class MissionModel:
         out: dict[str, list[tuple[str, VarRef | None]]] = {}
         for r in self.refs:
             if r.role == SUBSCRIBE:
-                name = bare_name(r.name)
-                if name:
-                    out.setdefault(name, []).append((r.app, r))
+                for read in r.read_names:
+                    name = bare_name(read)
+                    if name:
+                        out.setdefault(name, []).append((r.app, r))
         for p in self.processes:
             if p.app is None:
                 continue

@@ -51,10 +51,18 @@ class VarRef:
     app: str  # the ProcessConfig block (or behavior kind, or ``helm``) that reads the value
     param: str  # the parameter key, lower case
     wildcard: bool = False  # the app accepts ``*`` and ``?`` here
+    #: what the app subscribes to for this name, when not the name itself (see
+    #: :data:`SUBSCRIBED_AS`); ``*`` stands for any text
+    reads: tuple[str, ...] = ()
 
     @property
     def span(self) -> Span:
         return self.line.span(self.start, self.start + len(self.name))
+
+    @property
+    def read_names(self) -> tuple[str, ...]:
+        """The variables the app reads for this reference (a subscription's)."""
+        return self.reads or (self.name,)
 
 
 # ------------------------------------------------------------------ text pieces
@@ -465,10 +473,24 @@ APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
         "pass_condition": (_COND, False),
         "fail_condition": (_COND, False),
     },
+    # MissionEval.cpp:158-163 (the conditions), 306-313 (it registers their variables)
+    "pmissioneval": {
+        "lead_condition": (_COND, False),
+        "pass_condition": (_COND, False),
+        "fail_condition": (_COND, False),
+    },
     "pevalloiter": {"condition": (_COND, False)},
 }
 
 _BUTTON = hash_pairs(("color",), True)
+
+#: (app, key) -> what the app subscribes to for a name ``X`` the key gives, when not
+#: ``X`` itself. uFldShoreBroker ``qbridge = X`` is shorthand for
+#: ``bridge = src=X_ALL, alias=X`` and ``bridge = src=X_$V, alias=X``
+#: (ShoreBroker.cpp:626-647): the shoreside reads X_ALL and X_<VNAME>.
+SUBSCRIBED_AS: dict[tuple[str, str], tuple[str, ...]] = {
+    ("ufldshorebroker", "qbridge"): ("{}_ALL", "{}_*"),
+}
 
 
 def _prefixed(app: str, key: str) -> tuple[Syntax, bool] | None:
@@ -515,8 +537,10 @@ def _block_variables(block: Block, app: str) -> Iterator[VarRef]:
             continue
         syntax, wildcard = spec
         text = param.line.text[param.value_start : param.value_end]
+        reads = SUBSCRIBED_AS.get((app, key), ())
         for (name, start), role in syntax((text, param.value_start)):
-            yield VarRef(name, param.line, start, role, block.name, key, wildcard)
+            as_read = tuple(r.format(name) for r in reads) if role == SUBSCRIBE else ()
+            yield VarRef(name, param.line, start, role, block.name, key, wildcard, as_read)
 
 
 def moos_variables(mf: MoosFile) -> Iterator[VarRef]:

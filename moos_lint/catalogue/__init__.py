@@ -143,10 +143,11 @@ class Catalogue:
         facts = self.app(program) or self.programs.get(program.lower())
         return None if facts is None else facts.needs_process_config
 
-    def launched_manually(self, name: str) -> bool:
-        """Whether users start ``name`` by hand with the mission file."""
-        facts = self.app(name) or self.programs.get(name.lower())
-        return facts is not None and facts.launched_manually
+    def started_by_hand(self) -> list[str]:
+        """The apps and programs users start by hand with the mission file (lower case)."""
+        found = [k for k, a in self.apps.items() if a.launched_manually]
+        found += [k for k, p in self.programs.items() if p.launched_manually]
+        return sorted(found)
 
     def copy(self) -> Catalogue:
         c = Catalogue()
@@ -395,8 +396,11 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
         info.publish_suffixes |= known.publish_suffixes
         info.publishes_dynamic = info.publishes_dynamic or known.publishes_dynamic
         info.subscribes |= known.subscribes
-        # what its own files cannot show: how it subscribes, how it is started
-        info.subscribes_dynamic = info.subscribes_dynamic or known.subscribes_dynamic
+        # what its own files cannot show: how it subscribes, how it is started (the
+        # stock entry's hand corrections win: a block it reads only when present,
+        # run-time subscriptions that read no mission variable)
+        info.needs_process_config = info.needs_process_config and known.needs_process_config
+        info.subscribes_dynamic = info.subscribes_dynamic and known.subscribes_dynamic
         info.subscriptions_from_config = known.subscriptions_from_config
         info.observer = known.observer
         info.launched_manually = known.launched_manually

@@ -412,6 +412,14 @@ for _app, _at in (
     where = _at if _at.startswith("MOOS_") else _SRC + _at
     _fact(_app, "subscriptions_from_config", f"subscribes to what its block names ({where})")
 
+# Dynamic subscriptions that are no reader of the mission's variables.
+_fact(
+    "uMemWatch",
+    "!subscribes_dynamic",
+    "its only run-time subscriptions are <CLIENT>_PID, the process id each DB client "
+    "posts (ivp/src/uMemWatch/MemWatch.cpp:148-158)",
+)
+
 #: programs pAntler launches that are not configured by a ProcessConfig block of their own
 PROGRAMS: dict[str, dict] = {
     "MOOSDB": {

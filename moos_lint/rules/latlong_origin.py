@@ -5,9 +5,10 @@ Checks the origin of the local grid (MOOSGrid) in a mission, after nsplug
 expansion with its includes:
 - **missing**: the mission launches an app that converts between lat/long and
   local x/y (the helm, the simulators, pNodeReporter, pMarineViewer, contact
-  managers, uFld sensors and referees: see the option), but the file has no
-  `LatOrigin` or no `LongOrigin` line. Reported once, at the first such
-  `Run` line;
+  managers, uFld sensors and referees; the app catalogue says which: the
+  stock apps whose sources read `LatOrigin`, and the repository's own apps
+  whose C++ does), but the file has no `LatOrigin` or no `LongOrigin` line.
+  Reported once, at the first such `Run` line;
 - **not a number**: MOOS reads the origin as a number and ignores anything
   else, so the apps run as if it were missing;
 - **out of range**: a latitude beyond ±90° or a longitude beyond ±180°
@@ -31,7 +32,7 @@ Deliberately not reported:
 - a missing origin when an `#include` could not be followed (the origin is
   often in a plug such as `plug_origin_warp.moos`), or when the file is itself
   included by another linted file;
-- missions that launch no app from the option's list (a bare MOOSDB with
+- missions that launch no app that reads the origin (a bare MOOSDB with
   pLogger and uXMS needs no origin);
 - `LatOrigin = 0, LongOrigin = 0`, a common "no geodesy" choice in simulation.
 
@@ -55,38 +56,25 @@ LongOrigin = -70.330400
 ```
 
 ## Options
-- `needs-origin` (list of strings): the apps (binary names, compared without
-  regard to case; an alias does not matter) that read the origin. Default:
-  the MOOS-IvP apps that read it: pHelmIvP, pMarineViewer, pNodeReporter,
+- `needs-origin` (list of strings): when given, the apps (binary names,
+  compared without regard to case; an alias does not matter) that read the
+  origin, instead of what the app catalogue says. By default the catalogue
+  decides: among the stock apps pHelmIvP, pMarineViewer, pNodeReporter,
   uSimMarine, uSimMarineV22, uSimMarineV23, pBasicContactMgr,
   pContactMgrV20, uFldNodeComms, uFldObstacleSim, uFldBeaconRangeSensor,
-  uFldContactRangeSensor, uFldCollisionDetect, uFldCollObDetect.
+  uFldContactRangeSensor, uFldCollisionDetect and uFldCollObDetect read it;
+  an app linted in the same run reads it when its C++ names `LatOrigin`; a
+  user catalogue says so with `needs_origin = true`.
 """
 
 import math
 import os
 import re
 
+from moos_lint.catalogue import catalogue_for
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
-
-NEEDS_ORIGIN = [
-    "pHelmIvP",
-    "pMarineViewer",
-    "pNodeReporter",
-    "uSimMarine",
-    "uSimMarineV22",
-    "uSimMarineV23",
-    "pBasicContactMgr",
-    "pContactMgrV20",
-    "uFldNodeComms",
-    "uFldObstacleSim",
-    "uFldBeaconRangeSensor",
-    "uFldContactRangeSensor",
-    "uFldCollisionDetect",
-    "uFldCollObDetect",
-]
 
 # What MOOSIsNumeric accepts, roughly: a plain decimal number.
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
@@ -123,7 +111,7 @@ def _nmea_hint(value: float, limit: float) -> str:
     severity=Severity.WARNING,
     scope=Scope.MISSION,
     kinds=(Kind.MOOS,),
-    options={"needs-origin": NEEDS_ORIGIN},
+    options={"needs-origin": None},
 )
 def check(ctx):
     mf = ctx.moos
@@ -198,11 +186,22 @@ def _missing(ctx, lats, lons):
         return
     if ctx.expansion.incomplete or ctx.unit.path in ctx.run.included_elsewhere:
         return
-    wanted = {str(name).lower() for name in ctx.options.get("needs-origin", NEEDS_ORIGIN)}
+    given = ctx.options.get("needs-origin")
+    if isinstance(given, str):
+        given = [given]
+    wanted = None if given is None else {str(name).lower() for name in given}
+    cat = catalogue_for(ctx.run)
     for run in ctx.moos.runs:
         binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1]
-        if has_macro(binary) or binary.lower() not in wanted:
+        if has_macro(binary):
             continue
+        if wanted is not None:
+            if binary.lower() not in wanted:
+                continue
+        else:
+            app = cat.app(binary)
+            if app is None or not app.needs_origin:
+                continue
         keys = " and ".join(k for k, v in (("LatOrigin", lats), ("LongOrigin", lons)) if not v)
         yield ctx.report(
             run.binary_span,

@@ -30,16 +30,19 @@ Add the block (or the `#include` that brings it in), or fix the alias so that
 it names the existing block.
 
 ## Options
-- `needs-no-config` (list of strings, default `["MOOSDB", "pAntler", "pRealm",
-  "pMissionHash", "iSay", "uLoadWatch", "uMACView", "uMayFinish", "uQueryDB",
-  "uXMS", "uMAC", "uPokeDB", "uHelmScope", "uMS"]`): programs that run
-  correctly without a block. They are compared with the program of the Run
-  line (not its alias). The IvP apps in the list declare
+- `needs-no-config` (list of strings): when given, the programs that run
+  correctly without a block, instead of what the app catalogue says. They are
+  compared with the program of the Run line (not its alias). By default the
+  catalogue decides, from the sources: the IvP apps that declare
   `must_have_moosblock=false` at start-up (pRealm, pMissionHash, iSay,
-  uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS) or read their block only
-  when there is one (uMAC, uPokeDB, uHelmScope); MOOSDB and the uMS scope read
-  the top-of-file settings only. In MOOS-IvP's own missions none of the 109
-  MOOSDB Run lines and 45 of the 49 pRealm Run lines have a block, by design.
+  uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS), those that read their
+  block only when there is one (uMAC, uPokeDB), MOOSDB and the uMS scope
+  (top-of-file settings only) and pAntler (it reads the ANTLER block); an app
+  linted in the same run needs its block unless its C++ declares it optional;
+  a user catalogue says `needs_process_config = false`. A program the
+  catalogue does not know is expected to have a block. In MOOS-IvP's own
+  missions none of the 109 MOOSDB Run lines and 45 of the 49 pRealm Run lines
+  have a block, by design.
 
 MOOS-IvP caveats, deliberately not reported:
 - a mission with an `#include` that could not be followed (a macro in its path
@@ -53,27 +56,11 @@ A Run line and a block in mutually exclusive `#ifdef` branches do not count as
 a match: in the branch that launches the process, the block is missing.
 """
 
+from moos_lint.catalogue import catalogue_for
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
 from moos_lint.rules._hygiene import app_of, exclusive, names_match
-
-NEEDS_NO_CONFIG = [
-    "MOOSDB",
-    "pAntler",
-    "pRealm",
-    "pMissionHash",
-    "iSay",
-    "uLoadWatch",
-    "uMACView",
-    "uMayFinish",
-    "uQueryDB",
-    "uXMS",
-    "uMAC",
-    "uPokeDB",
-    "uHelmScope",
-    "uMS",
-]
 
 
 @rule(
@@ -81,13 +68,17 @@ NEEDS_NO_CONFIG = [
     name="missing-process-config",
     severity=Severity.WARNING,
     scope=Scope.MISSION,
-    options={"needs-no-config": NEEDS_NO_CONFIG},
+    options={"needs-no-config": None},
 )
 def check(ctx):
     moos = ctx.moos
     if ctx.expansion.incomplete:
         return
-    exempt = {str(a).lower() for a in ctx.options.get("needs-no-config", NEEDS_NO_CONFIG)}
+    given = ctx.options.get("needs-no-config")
+    if isinstance(given, str):
+        given = [given]
+    exempt = None if given is None else {str(a).lower() for a in given}
+    cat = catalogue_for(ctx.run)
     blocks = [b for b in moos.blocks if b.header is not None and b.name]
     for run in moos.runs:
         name = run.name
@@ -95,7 +86,11 @@ def check(ctx):
             continue
         if not run.has_at and "~" in run.param.value:
             continue  # not a program pAntler can start: run-alias-without-at
-        if app_of(run.binary).lower() in exempt:
+        program = app_of(run.binary)
+        if exempt is not None:
+            if program.lower() in exempt:
+                continue
+        elif cat.needs_process_config(program) is False:
             continue
         if run.options.get("inhibitmoosparams", "").lower() == "true":
             continue

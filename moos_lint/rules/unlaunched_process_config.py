@@ -32,16 +32,19 @@ ProcessConfig = uTimerScript
 
 ## How to fix
 Launch the process (restore its Run line), or delete the block. To keep a
-block around for a process started by hand, add its name to `manual-apps` or
+block around for a process started by hand, declare the app
+`launched_manually = true` in a catalogue file, list it in `manual-apps`, or
 suppress the finding on the header line.
 
 ## Options
-- `manual-apps` (list of strings, default `["uXMS", "uMAC", "uMACView",
-  "uPokeDB", "uQueryDB", "uMayFinish", "uTermCommand", "uHelmScope", "uMS"]`):
-  tools that users start by hand with the mission file
-  (`uXMS targ_shoreside.moos`), so their block is read although no Run line
-  starts them. A block whose name *starts with* one of these names
-  (`uTermCommandFoo`, `uXMS_nav`) is never reported.
+- `manual-apps` (list of strings): when given, the tools that users start by
+  hand with the mission file (`uXMS targ_shoreside.moos`), instead of what the
+  app catalogue says; their block is read although no Run line starts them.
+  By default the catalogue decides: uXMS, uMAC, uMACView, uPokeDB, uQueryDB,
+  uMayFinish, uTermCommand and uHelmScope (each documents
+  `Usage: APP file.moos`), the uMS scope, and the apps a user catalogue
+  declares `launched_manually = true`. A block whose name *starts with* one of
+  these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
@@ -58,22 +61,12 @@ MOOS-IvP caveats, deliberately not reported:
 
 import re
 
+from moos_lint.catalogue import catalogue_for
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.model import has_macro
 from moos_lint.rules._hygiene import exclusive, names_match, where
 
-MANUAL_APPS = [
-    "uXMS",
-    "uMAC",
-    "uMACView",
-    "uPokeDB",
-    "uQueryDB",
-    "uMayFinish",
-    "uTermCommand",
-    "uHelmScope",
-    "uMS",
-]
 _COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s*([^\s,]+))?", re.I)
 
 
@@ -82,13 +75,19 @@ _COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s
     name="unlaunched-process-config",
     severity=Severity.WARNING,
     scope=Scope.MISSION,
-    options={"manual-apps": MANUAL_APPS},
+    options={"manual-apps": None},
 )
 def check(ctx):
     moos = ctx.moos
     if ctx.expansion.incomplete:
         return
-    manual = [str(a).lower() for a in ctx.options.get("manual-apps", MANUAL_APPS)]
+    given = ctx.options.get("manual-apps")
+    if isinstance(given, str):
+        given = [given]
+    if given is None:
+        manual = catalogue_for(ctx.run).started_by_hand()
+    else:
+        manual = [str(a).lower() for a in given]
     runs = moos.runs
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":

@@ -47,57 +47,54 @@ MOOS-IvP caveats, deliberately not reported:
   variables with them.
 """
 
+import fnmatch
+
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
-from moos_lint.mission_model import mission_model
+from moos_lint.mission_model import MissionModel, mission_model
 from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name
 
-#: apps whose subscriptions only observe (log, display)
-OBSERVERS = {"plogger", "uxms", "uhelmscope", "pmarineviewer", "umacview", "prealm", "ufldscope"}
-#: apps whose run-time subscriptions come from their configuration (modelled there)
-CONFIG_DRIVEN = {
-    "phelmivp",
-    "pshare",
-    "ufldnodebroker",
-    "ufldshorebroker",
-    "pmoosbridge",
-    "utimerscript",
-    "pechovar",
-    "pnodereporter",
-    "uprocesswatch",
-    "pcontactmgrv20",
-    "pbasiccontactmgr",
-}
 
+def readers(model: MissionModel) -> tuple[set[str], bool]:
+    """Names read in the mission (``*`` in a name: any text), and whether some process
+    may read any name.
 
-def readers(model) -> tuple[set[str], bool]:
-    """Names read in the mission, and whether some process may read any name."""
+    What the catalogue says of each launched app decides: an observer's
+    configuration (what a viewer shows, a logger logs) reads nothing, its
+    conditions aside; an app that subscribes to names built at run time may read
+    anything, unless those names are the ones its configuration gives (modelled
+    in :mod:`moos_lint.variables`) or it is an observer.
+    """
     names: set[str] = set()
     open_ended = bool(model.unknown_apps or model.unresolved_behaviors)
+    apps = {p.name: p.app for p in model.processes}
     for ref in model.refs:
         if ref.role != SUBSCRIBE:
             continue
-        app = ref.app.lower()
-        if any(app.startswith(o) for o in OBSERVERS) and ref.param not in ("condition",):
+        app = apps.get(model.ref_process.get(id(ref), ""))
+        if app is not None and app.observer and ref.param != "condition":
             continue
-        name = bare_name(ref.name)
-        if name:
-            names.add(name)
+        for read in ref.read_names:
+            name = bare_name(read)
+            if name:
+                names.add(name)
     for _path, bf in model.behavior_files:
         for bhv in bf.behaviors:
             info = model.catalogue.behavior(bhv.kind)
             if info is not None:
                 names |= info.reads
     for proc in model.processes:
-        if proc.app is None:
+        app = proc.app
+        if app is None:
             continue
-        low = proc.binary.lower()
-        names |= proc.app.subscribes  # a viewer that registers for VIEW_POINT draws it
-        if proc.app.subscribes and low not in CONFIG_DRIVEN:
-            raw = proc.app
-            if getattr(raw, "subscribes_dynamic", False):
-                open_ended = True
+        names |= app.subscribes  # a viewer that registers for VIEW_POINT draws it
+        if app.subscribes_dynamic and not (app.observer or app.subscriptions_from_config):
+            open_ended = True
     return names, open_ended
+
+
+def _is_read(name: str, names: set[str]) -> bool:
+    return name in names or any("*" in n and fnmatch.fnmatchcase(name, n) for n in names)
 
 
 @rule(
@@ -121,7 +118,7 @@ def check(ctx):
         if not name or name != ref.name or "*" in name or name in seen:
             continue
         seen.add(name)
-        if name in names:
+        if _is_read(name, names):
             continue
         yield ctx.report(
             ref.span,
