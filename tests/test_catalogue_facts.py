@@ -1,0 +1,90 @@
+"""What an app needs and does comes from the catalogue, each hand fact with its evidence."""
+
+from __future__ import annotations
+
+import json
+import re
+
+from moos_lint.catalogue import STOCK, stock
+from moos_lint.diagnostics import Diagnostic, Severity, Span, Subject
+from moos_lint.graph import _flagged_vars
+from moos_lint.nsplug import Preprocessor
+from moos_lint.parsers.bhv import parse_bhv
+from moos_lint.suffixes import is_cpp, is_cpp_source
+
+#: a source file and line (or line range) of MOOS-IvP or MOOS core
+_EVIDENCE = re.compile(r"(ivp/src|MOOS_Jul2724)/[\w/.-]+\.(cpp|h):\d+")
+
+
+def test_the_stock_catalogue_loads_every_start_up_fact():
+    cat = stock()
+    evald = cat.app("pMissionEval")
+    assert evald.subscribes_dynamic and evald.subscriptions_from_config
+    viewer = cat.app("pMarineViewer")
+    assert viewer.subscribes_dynamic and viewer.observer and viewer.needs_origin
+    xms = cat.app("uXMS")
+    assert xms.observer and xms.launched_manually and not xms.needs_process_config
+    # AppCastingMOOSApp posts "No mission config block found" for uHelmScope
+    assert cat.app("uHelmScope").needs_process_config
+    assert cat.app("pLogger").needs_process_config and cat.app("pLogger").observer
+    assert not cat.app("uMemWatch").subscribes_dynamic  # only <CLIENT>_PID
+    assert cat.needs_process_config("MOOSDB") is False
+    assert cat.needs_process_config("pAntler") is False
+    assert cat.needs_process_config("pNoSuchApp") is None
+    assert "ums" in cat.started_by_hand() and "uxms" in cat.started_by_hand()
+
+
+def test_every_hand_fact_names_its_source_line():
+    with open(STOCK, encoding="utf-8") as fh:
+        data = json.load(fh)
+    apps = data["apps"]
+    hand = ("observer", "launched_manually", "subscriptions_from_config")
+    for name, entry in apps.items():
+        if any(entry.get(k) for k in hand):
+            why = " ".join(entry.get("corrected", []))
+            assert _EVIDENCE.search(why), f"{name}: {why!r}"
+    for name, entry in data["programs"].items():
+        assert _EVIDENCE.search(entry["why"]), name
+
+
+def test_blocks_declared_optional_are_read_from_the_sources():
+    cat = stock()
+    for app in ("pRealm", "pMissionHash", "iSay", "uLoadWatch", "uMACView", "uMayFinish"):
+        assert not cat.app(app).needs_process_config, app
+    for app in ("pHelmIvP", "uTimerScript", "pShare", "uTermCommand"):
+        assert cat.app(app).needs_process_config, app
+
+
+def test_one_definition_of_the_cpp_suffixes():
+    assert is_cpp("App.CPP") and is_cpp("a/b.hpp") and not is_cpp("m.moos")
+    assert is_cpp_source("x.cc") and not is_cpp_source("x.h")
+
+
+def test_the_bhv_reader_does_not_edit_the_shared_lines(tmp_path):
+    path = tmp_path / "a.bhv"
+    path.write_text(
+        "Behavior = BHV_Waypoint\n{\n  name = a\n  points = 0,0: \\   \n    10,10\n}\n",
+        encoding="utf-8",
+    )
+    exp = Preprocessor().expand(str(path))
+    before = [line.text for line in exp.lines]
+    first = parse_bhv(exp)
+    assert [line.text for line in exp.lines] == before
+    second = parse_bhv(exp)
+    assert [p.value for b in first.behaviors for p in b.params] == [
+        p.value for b in second.behaviors for p in b.params
+    ]
+
+
+def test_the_graph_reads_what_a_finding_is_about_not_its_message():
+    span = Span("m.moos", 1, 1)
+    ticked = Diagnostic("M005", "unpublished-subscription", Severity.WARNING, span, "`FOO`")
+    about = Diagnostic(
+        "M005",
+        "unpublished-subscription",
+        Severity.WARNING,
+        span,
+        "no names here",
+        subject=Subject(variable="BAR"),
+    )
+    assert _flagged_vars([ticked, about]) == {"BAR"}
