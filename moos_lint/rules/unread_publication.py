@@ -10,7 +10,11 @@ app subscribes to (the catalogue's `Register` calls: pMarineViewer draws
 the `VIEW_*` it registers for), no condition or `updates` line reads, and no
 share or bridge route carries away. Names that only an observer's
 configuration lists (pLogger `log`, uXMS `var`, a viewer's `scope`) do not
-count as read.
+count as read. Which apps are observers (pLogger, uXMS, uMAC, pMarineViewer,
+...) and which subscribe to names they build at run time comes from the app
+catalogue, with its evidence in the app sources: pMissionEval reads the
+variables of its conditions, uFldShoreBroker `qbridge = X` reads `X_ALL` and
+`X_<VNAME>`.
 
 It is off by default and an `info`: a flag posted for the log or for a person
 watching is fine. Use it to find dead configuration and misspelled names
