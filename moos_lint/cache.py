@@ -187,11 +187,15 @@ def _valid_header(fh: Any, key: str) -> dict | None:
     return header
 
 
-def _watch(watch: dict, folders: dict[str, int | None]) -> dict:
+def _watch(watch: dict, walked: dict) -> dict:
     """What a result depends on, in stat terms: each file's (mtime, size) and each
-    folder's mtime (the run entry's ``watch`` and the folders discovery walked).
+    folder's mtime (the run entry's ``watch``, and the folders discovery walked and
+    the ignore files that decided it: ``walked``, from :func:`_discover`).
     :mod:`moos_lint.replay` checks these before anything else loads."""
-    return {"files": watch["files"], "dirs": {**watch["dirs"], **folders}}
+    return {
+        "files": {**watch["files"], **walked["files"]},
+        "dirs": {**watch["dirs"], **walked["dirs"]},
+    }
 
 
 def load(folder: str, key: str) -> Any | None:
@@ -280,7 +284,7 @@ def cached_output(
     never unpickled, nor is the report rendered again.
     """
     try:
-        found, folders = _discover(paths, settings, cache_dir)
+        found, walked = _discover(paths, settings, cache_dir)
         key = run_key(settings, paths, found.files, context)
         with open(os.path.join(cache_dir, f"run-{key}.pickle"), "rb") as fh:
             header = _valid_header(fh, key)
@@ -290,7 +294,7 @@ def cached_output(
             entry = pickle.load(fh)
         if not isinstance(entry, dict) or entry.get("render_key") != render_key:
             return None
-        return entry["text"], bool(entry["has_findings"]), _watch(header["watch"], folders)
+        return entry["text"], bool(entry["has_findings"]), _watch(header["watch"], walked)
     except Exception:  # no entry, a changed run, or a corrupt file: render afresh
         return None
 
@@ -336,7 +340,9 @@ def cached_discover(paths: list[Path], settings: Settings, cache_dir: str) -> An
 
 
 def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[Any, dict]:
-    """:func:`cached_discover`, and the modification time of each folder it depends on."""
+    """:func:`cached_discover`, and what it depends on: ``{"dirs": the mtime of each
+    folder it walked, "files": the stamp of each ignore file that decided (None: absent)}``.
+    """
     from moos_lint.discovery import Discovered, discover
 
     data = json.dumps(
@@ -346,6 +352,7 @@ def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[An
             [os.path.abspath(p) for p in paths],
             settings.exclude,
             os.path.abspath(settings.root),
+            settings.respect_gitignore,
         ]
     )
     key = hashlib.sha256(data.encode("utf-8", "surrogatepass")).hexdigest()[:40]
@@ -353,32 +360,46 @@ def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[An
     try:
         with open(path, "rb") as fh:
             entry = pickle.load(fh)
-        if entry["key"] == key and all(folder_mtime(d) == m for d, m in entry["folders"].items()):
-            found = Discovered(list(entry["files"]), list(entry["missing"]), list(entry["folders"]))
-            return found, dict(entry["folders"])
+        if (
+            entry["key"] == key
+            and all(folder_mtime(d) == m for d, m in entry["folders"].items())
+            and all(file_stamp(f) == m for f, m in entry["ignore"].items())
+        ):
+            found = Discovered(
+                list(entry["files"]), list(entry["missing"]), list(entry["folders"]), []
+            )
+            found.ignore_files = list(entry["ignore"])
+            return found, {"dirs": dict(entry["folders"]), "files": dict(entry["ignore"])}
     except Exception:  # missing, partial or corrupt: walk the folders
         pass
     with contextlib.suppress(OSError):  # first: creating it changes its parent's mtime
         os.makedirs(cache_dir, exist_ok=True)
-    found = discover(paths, settings.exclude, settings.root)
+    found = discover(paths, settings.exclude, settings.root, settings.respect_gitignore)
     folders = {d: folder_mtime(d) for d in found.folders}
+    ignore = {f: file_stamp(f) for f in found.ignore_files}
     if all(m is not None for m in folders.values()):
-        entry = {"key": key, "folders": folders, "files": found.files, "missing": found.missing}
+        entry = {
+            "key": key,
+            "folders": folders,
+            "ignore": ignore,
+            "files": found.files,
+            "missing": found.missing,
+        }
         with contextlib.suppress(Exception):
             atomic_write(cache_dir, path, pickle.dumps(entry, protocol=pickle.HIGHEST_PROTOCOL))
-    return found, folders
+    return found, {"dirs": folders, "files": ignore}
 
 
 def cached_lint(
     paths: list[Path], settings: Settings, *, context: bool, jobs: int | None, cache_dir: str
 ) -> Result:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
-    found, folders = _discover(paths, settings, cache_dir)
+    found, walked = _discover(paths, settings, cache_dir)
     key = run_key(settings, paths, found.files, context)
     hit = load(cache_dir, key)
     if hit is not None:
         hit.missing = list(found.missing)
-        hit.cache_watch = _watch(hit.cache_watch, folders)
+        hit.cache_watch = _watch(hit.cache_watch, walked)
         return hit
     from moos_lint.engine import lint_paths  # the parsers and rules: only on a miss
     from moos_lint.nsplug import FileCache
@@ -388,7 +409,7 @@ def cached_lint(
     if not result.internal_errors:  # a crash is never replayed from the cache
         store(cache_dir, key, result, settings, reader.paths(), reader.probed)
         if result.cache_watch is not None:
-            result.cache_watch = _watch(result.cache_watch, folders)
+            result.cache_watch = _watch(result.cache_watch, walked)
     return result
 
 

@@ -194,6 +194,26 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         check.add_argument(
             "--cache-dir", type=Path, metavar="DIR", help="keep the result cache in DIR"
         )
+        check.add_argument(
+            "--respect-gitignore",
+            dest="respect_gitignore",
+            action="store_true",
+            default=None,
+            help="leave out files git ignores (.gitignore, .ignore, global excludes; the default)",
+        )
+        check.add_argument(
+            "--no-respect-gitignore",
+            dest="respect_gitignore",
+            action="store_false",
+            help="also lint files git ignores (a file named on the command line always is)",
+        )
+        check.add_argument(
+            "--color",
+            choices=("auto", "always", "never"),
+            default="auto",
+            help="colour the text output: auto (on a terminal; NO_COLOR, FORCE_COLOR), "
+            "always or never",
+        )
 
     if only in (None, "expand"):
         expand = sub.add_parser(
@@ -320,6 +340,8 @@ def _settings(args: argparse.Namespace):
         settings.cpp_backend = args.cpp_backend
     if getattr(args, "compile_commands", None):
         settings.compile_commands = os.path.abspath(args.compile_commands)
+    if getattr(args, "respect_gitignore", None) is not None:
+        settings.respect_gitignore = args.respect_gitignore
     return settings
 
 

@@ -37,6 +37,7 @@ KNOWN_KEYS = {
     "compile-commands",
     "catalogues",
     "cache-dir",
+    "respect-gitignore",
 }
 CPP_BACKENDS = ("tree-sitter", "clang")
 DEFAULT_EXCLUDE = (
@@ -77,6 +78,7 @@ class Settings:
         compile_commands: str | None = None,
         catalogues: list[str] | None = None,
         cache_dir: str | None = None,
+        respect_gitignore: bool = True,
     ) -> None:
         self.select = select
         self.extend_select = [] if extend_select is None else extend_select
@@ -95,6 +97,8 @@ class Settings:
         self.catalogues = [] if catalogues is None else catalogues
         #: where the result cache lives (None: ``.moos_lint_cache`` in the root)
         self.cache_dir = cache_dir
+        #: leave out what git ignores (``.gitignore``, ``.ignore``, global excludes)
+        self.respect_gitignore = respect_gitignore
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items())
@@ -131,6 +135,7 @@ class Settings:
             "compile-commands": self.compile_commands,
             "catalogues": self.catalogues,
             "cache-dir": self.cache_dir,
+            "respect-gitignore": self.respect_gitignore,
             "rules": {r.name: self.options_for(r.name) for r in all_rules() if r.options},
         }
 
@@ -242,6 +247,10 @@ def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Se
         if not isinstance(cd, str) or not cd:
             raise ConfigError(f"{path}: `{prefix}cache-dir` must be a path")
         s.cache_dir = str((root / cd).resolve())
+    if "respect-gitignore" in data:
+        if not isinstance(data["respect-gitignore"], bool):
+            raise ConfigError(f"{path}: `{prefix}respect-gitignore` must be true or false")
+        s.respect_gitignore = data["respect-gitignore"]
     if "catalogues" in data:
         s.catalogues = _check_catalogues(path, prefix + "catalogues", data["catalogues"], root)
     defines = data.get("defines", {})

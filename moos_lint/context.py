@@ -115,7 +115,9 @@ def related_missions(
     if not fragments:
         return []
     root = project_root(settings, files)
-    candidates = discover([Path(root)], settings.exclude, settings.root).files
+    candidates = discover(
+        [Path(root)], settings.exclude, settings.root, settings.respect_gitignore
+    ).files
     # Which behavior files include a fragment (a .bhv may #include pieces).
     bhv_users: dict[str, bool] = {}
 

@@ -9,6 +9,7 @@ import re
 from pathlib import Path
 
 from moos_lint.config import DEFAULT_EXCLUDE
+from moos_lint.gitignore import Frame, Ignorer, ignored
 from moos_lint.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES
 
 SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
@@ -27,17 +28,23 @@ def kind_of(path: str) -> str | None:
 
 
 class Discovered:
-    """The files to lint (absolute paths, sorted), the paths given that do not exist, and
-    the folders whose listing decided the files (walked, or holding a path given)."""
+    """The files to lint (absolute paths, sorted), the paths given that do not exist, the
+    folders whose listing decided the files (walked, or holding a path given), and the
+    ignore files (``.gitignore``, ...) that did, present or not (:mod:`moos_lint.gitignore`)."""
 
-    __slots__ = ("files", "folders", "missing")
+    __slots__ = ("files", "folders", "ignore_files", "missing")
 
     def __init__(
-        self, files: list[str], missing: list[str], folders: list[str] | None = None
+        self,
+        files: list[str],
+        missing: list[str],
+        folders: list[str] | None = None,
+        ignore_files: list[str] | None = None,
     ) -> None:
         self.files = files
         self.missing = missing
         self.folders = [] if folders is None else folders
+        self.ignore_files = [] if ignore_files is None else ignore_files
 
 
 def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
@@ -60,9 +67,18 @@ def _matcher(patterns: tuple[str, ...]) -> re.Pattern | None:
     return re.compile("|".join(f"(?:{p})" for p in parts))
 
 
-def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
-    """Walk ``paths``; directories are searched, files given by name are always taken."""
+def discover(
+    paths: list[Path], exclude: list[str], root: str, respect_gitignore: bool = True
+) -> Discovered:
+    """Walk ``paths``; directories are searched, files given by name are always taken.
+
+    With ``respect_gitignore``, what git ignores is not linted (see
+    :mod:`moos_lint.gitignore`). A file named on the command line is linted even when
+    git ignores it, as ruff does; a folder named there is walked, and what is
+    ignored below it is left out.
+    """
     patterns = [*DEFAULT_EXCLUDE, *exclude]
+    ignorer = Ignorer(root) if respect_gitignore else None
     files: set[str] = set()
     missing: list[str] = []
     folders: list[str] = []
@@ -77,6 +93,7 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
             files.add(p)
             continue
         seen_dirs: set[tuple[int, int]] = set()
+        frames: dict[str, Frame] = {}
         for dirpath, dirnames, filenames in os.walk(p, followlinks=True):
             try:
                 st = os.stat(dirpath)
@@ -91,10 +108,20 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
             folders.append(dirpath)
             rel_dir = os.path.relpath(dirpath, root)  # normalised: a name joins it as is
             prefix = "" if rel_dir == "." else rel_dir + os.sep
+            frame = active = None
+            if ignorer is not None:
+                if dirpath == p:
+                    frame = ignorer.start(p)
+                else:
+                    names = {*dirnames, *filenames}
+                    frame = ignorer.enter(frames[os.path.dirname(dirpath)], dirpath, names)
+                active = frame if frame.layers else None
             keep = []
             for d in sorted(dirnames):
                 rel = prefix + d
                 if _excluded(rel, d, patterns):
+                    continue
+                if active is not None and ignored(active, os.path.join(dirpath, d), True):
                     continue
                 if kind_of(d) in ("moos", "bhv"):
                     # A directory named like a mission file: report it, do not descend.
@@ -102,11 +129,17 @@ def discover(paths: list[Path], exclude: list[str], root: str) -> Discovered:
                     continue
                 keep.append(d)
             dirnames[:] = keep
+            if ignorer is not None and keep:
+                frames[dirpath] = frame
             for f in filenames:
                 if kind_of(f) is None:
                     continue
                 rel = prefix + f
                 if _excluded(rel, f, patterns):
                     continue
-                files.add(os.path.join(dirpath, f))
-    return Discovered(sorted(files), missing, folders)
+                full = os.path.join(dirpath, f)
+                if active is not None and ignored(active, full, False):
+                    continue
+                files.add(full)
+    inputs = sorted(ignorer.inputs) if ignorer is not None else []
+    return Discovered(sorted(files), missing, folders, inputs)

@@ -379,7 +379,7 @@ def lint_paths(
         from moos_lint.cache import cached_lint
 
         return cached_lint(paths, settings, context=context, jobs=jobs, cache_dir=cache_dir)
-    found = discover(paths, settings.exclude, settings.root)
+    found = discover(paths, settings.exclude, settings.root, settings.respect_gitignore)
     if not context:
         result = lint_files(found.files, settings, cache=cache, jobs=jobs)
         result.missing = found.missing

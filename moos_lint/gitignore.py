@@ -1,0 +1,225 @@
+"""What git ignores, as discovery needs it: ``.gitignore``, ``.ignore``, the repository's
+``info/exclude`` and the user's global excludes file.
+
+The patterns are read with pathspec's ``gitwildmatch`` (the gitignore syntax,
+negations and ``dir/`` patterns included); git itself is never run. Running
+``git check-ignore`` or ``git ls-files`` would read the linted repository's
+own ``.git/config``, which can name programs git starts (``core.fsmonitor``,
+for one): nothing a linted repository contains is executed. It would also
+cost a process start per run.
+
+The precedence is git's (and ripgrep's, which ruff follows): a pattern in a
+deeper folder wins over one in a shallower folder; in one folder ``.ignore``
+wins over ``.gitignore``; the repository's ``info/exclude`` and the global
+excludes file come last. A ``.gitignore`` (and ``info/exclude``) counts only
+inside a git work tree, as for git; ``.ignore`` counts anywhere at or below
+the project root. A nested repository (a folder holding ``.git``) starts
+afresh: its parent's patterns do not reach into it.
+
+The global excludes file is ``core.excludesFile`` in the user's git config
+(``~/.gitconfig`` or ``$XDG_CONFIG_HOME/git/config``, read as text), else
+``$XDG_CONFIG_HOME/git/ignore`` (``~/.config/git/ignore``).
+
+Every file that decided (or whose absence decided) what is ignored is listed
+in :attr:`Ignorer.inputs`, for the caches to compare.
+"""
+
+from __future__ import annotations
+
+import os
+
+#: per-folder ignore files, weakest first
+FOLDER_FILES = (".gitignore", ".ignore")
+
+
+class _Layer:
+    """The patterns of one ignore file, relative to its folder ``base``."""
+
+    __slots__ = ("base", "patterns")
+
+    def __init__(self, base: str, lines: list[str]) -> None:
+        from pathspec.patterns.gitwildmatch import GitWildMatchPattern
+
+        self.base = base
+        patterns = []
+        for line in lines:
+            try:
+                p = GitWildMatchPattern(line)
+            except Exception:  # a malformed pattern: git skips it too
+                continue
+            if p.include is not None:
+                patterns.append(p)
+        self.patterns = patterns
+
+
+class Frame:
+    """The ignore layers in force in one folder of a walk (shared with its parent when
+    the folder adds none)."""
+
+    __slots__ = ("git", "layers")
+
+    def __init__(self, layers: tuple[_Layer, ...], git: bool) -> None:
+        self.layers = layers
+        self.git = git  # inside a git work tree (``.gitignore`` counts)
+
+
+EMPTY = Frame((), False)
+
+
+def _read_lines(path: str) -> list[str] | None:
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(1 << 20)
+    except OSError:
+        return None
+    return data.decode("utf-8", "replace").splitlines()
+
+
+def _git_dir(top: str) -> str | None:
+    """The git folder of the work tree ``top`` (``.git``, or where a ``.git`` file points)."""
+    dot = os.path.join(top, ".git")
+    if os.path.isdir(dot):
+        return dot
+    lines = _read_lines(dot) or []
+    for line in lines[:1]:
+        if line.startswith("gitdir:"):
+            target = os.path.join(top, line[len("gitdir:") :].strip())
+            common = _read_lines(os.path.join(target, "commondir"))
+            if common:  # a linked work tree: info/exclude is in the common folder
+                return os.path.normpath(os.path.join(target, common[0].strip()))
+            return os.path.normpath(target)
+    return None
+
+
+def global_excludes_file() -> str:
+    """The user's global git excludes file (which may not exist)."""
+    home = os.path.expanduser("~")
+    xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config")
+    found = None
+    for config in (os.path.join(xdg, "git", "config"), os.path.join(home, ".gitconfig")):
+        section = ""
+        for raw in _read_lines(config) or ():
+            line = raw.strip()
+            if line.startswith("["):
+                section = line[1:].split("]", 1)[0].strip().lower()
+            elif section == "core" and "=" in line:
+                key, _, value = line.partition("=")
+                if key.strip().lower() == "excludesfile":
+                    found = value.split("#", 1)[0].split(";", 1)[0].strip().strip('"')
+    if found:
+        return os.path.expanduser(found)
+    return os.path.join(xdg, "git", "ignore")
+
+
+class Ignorer:
+    """Decides which paths of a walk are ignored; collects the files it read."""
+
+    def __init__(self, root: str) -> None:
+        self.root = os.path.abspath(root)
+        #: every ignore file consulted, present or not
+        self.inputs: set[str] = set()
+        self._global: _Layer | None | bool = False  # not read yet
+
+    def _layer(self, path: str, base: str) -> _Layer | None:
+        self.inputs.add(path)
+        lines = _read_lines(path)
+        if not lines:
+            return None
+        layer = _Layer(base, lines)
+        return layer if layer.patterns else None
+
+    def _repo_frame(self, top: str) -> Frame:
+        """The layers of a git work tree's top folder before its own ignore files."""
+        layers: list[_Layer] = []
+        if self._global is False:
+            self._global = self._layer(global_excludes_file(), "")
+        git_dir = _git_dir(top)
+        if git_dir is not None:
+            exclude = self._layer(os.path.join(git_dir, "info", "exclude"), top)
+            if self._global:
+                layers.append(_rebase(self._global, top))
+            if exclude is not None:
+                layers.append(exclude)
+        return Frame(tuple(layers), True)
+
+    def enter(self, parent: Frame, folder: str, names: set[str] | None = None) -> Frame:
+        """The frame of ``folder`` (a child of the folder of ``parent``); ``names``: the
+        folder's entries when the walk has them (else they are probed)."""
+        has = (lambda n: n in names) if names is not None else None
+        is_repo = has(".git") if has else os.path.lexists(os.path.join(folder, ".git"))
+        frame = self._repo_frame(folder) if is_repo else parent
+        added = []
+        for name in FOLDER_FILES:
+            if name == ".gitignore" and not frame.git:
+                continue
+            path = os.path.join(folder, name)
+            if has is not None and not has(name):
+                continue
+            layer = self._layer(path, folder)
+            if layer is not None:
+                added.append(layer)
+        if not added:
+            return frame
+        return Frame(frame.layers + tuple(added), frame.git)
+
+    def start(self, folder: str) -> Frame:
+        """The frame of a folder a walk starts in: the ignore files of the folders from
+        the git work tree's top (or the project root) down to it."""
+        folder = os.path.abspath(folder)
+        chain = [folder]
+        here = folder
+        top = None
+        while True:
+            if os.path.lexists(os.path.join(here, ".git")):
+                top = here
+                break
+            parent = os.path.dirname(here)
+            if parent == here:
+                break
+            here = parent
+            chain.append(here)
+        if top is None:  # outside git: the ``.ignore`` files from the project root down
+            if not _within(folder, self.root):
+                chain = [folder]
+            else:
+                chain = chain[: len(_parts(folder)) - len(_parts(self.root)) + 1]
+        frame = EMPTY
+        for here in reversed(chain):
+            frame = self.enter(frame, here)
+            if here != folder:  # the parents' listings were probed: their absence counts
+                for name in FOLDER_FILES:
+                    self.inputs.add(os.path.join(here, name))
+        return frame
+
+
+def _parts(path: str) -> list[str]:
+    return [p for p in path.split(os.sep) if p]
+
+
+def _within(path: str, folder: str) -> bool:
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
+
+
+def _rebase(layer: _Layer, base: str) -> _Layer:
+    """The global layer, relative to a repository's top."""
+    copy = _Layer.__new__(_Layer)
+    copy.base = base
+    copy.patterns = layer.patterns
+    return copy
+
+
+def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
+    """Whether ``path`` (a file, or a folder when ``is_dir``) is ignored in ``frame``."""
+    decision = None
+    for layer in frame.layers:
+        rel = os.path.relpath(path, layer.base)
+        if rel.startswith(".."):
+            continue
+        if os.sep != "/":
+            rel = rel.replace(os.sep, "/")
+        if is_dir:
+            rel += "/"
+        for p in layer.patterns:
+            if p.include != decision and p.regex.match(rel) is not None:
+                decision = p.include
+    return bool(decision)
