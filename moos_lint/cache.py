@@ -353,6 +353,8 @@ def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[An
             settings.exclude,
             os.path.abspath(settings.root),
             settings.respect_gitignore,
+            # where the user's git config and global excludes are
+            [os.environ.get(k) for k in ("HOME", "XDG_CONFIG_HOME")],
         ]
     )
     key = hashlib.sha256(data.encode("utf-8", "surrogatepass")).hexdigest()[:40]

@@ -27,9 +27,37 @@ in :attr:`Ignorer.inputs`, for the caches to compare.
 from __future__ import annotations
 
 import os
+import re
 
 #: per-folder ignore files, weakest first
 FOLDER_FILES = (".gitignore", ".ignore")
+
+
+#: how pathspec's regex of a pattern ends when it also matches what lies below a match
+_BELOW = "(?:(?P<ps_d>/).*)?$"
+#: ... and when the pattern names folders only (``name/``)
+_FOLDER_ONLY = "(?P<ps_d>/).*$"
+
+
+def _exact(line: str) -> tuple[bool, re.Pattern | None, re.Pattern] | None:
+    """A pattern as (include, regex for a file, regex for a folder), matching one path
+    itself: a walk decides each folder before it goes below it, as git does (a file
+    in an ignored folder stays ignored whatever a deeper ``!`` pattern says)."""
+    from pathspec.patterns.gitwildmatch import GitWildMatchPattern
+
+    try:
+        p = GitWildMatchPattern(line)
+    except Exception:  # a malformed pattern: git skips it too
+        return None
+    if p.include is None:
+        return None
+    src = p.regex.pattern
+    if src.endswith(_FOLDER_ONLY):
+        return p.include, None, re.compile(src[: -len(_FOLDER_ONLY)] + "$")
+    if src.endswith(_BELOW):
+        one = re.compile(src[: -len(_BELOW)] + "$")
+        return p.include, one, one
+    return p.include, p.regex, p.regex
 
 
 class _Layer:
@@ -38,18 +66,8 @@ class _Layer:
     __slots__ = ("base", "patterns")
 
     def __init__(self, base: str, lines: list[str]) -> None:
-        from pathspec.patterns.gitwildmatch import GitWildMatchPattern
-
         self.base = base
-        patterns = []
-        for line in lines:
-            try:
-                p = GitWildMatchPattern(line)
-            except Exception:  # a malformed pattern: git skips it too
-                continue
-            if p.include is not None:
-                patterns.append(p)
-        self.patterns = patterns
+        self.patterns = [p for p in map(_exact, lines) if p is not None]
 
 
 class Frame:
@@ -91,12 +109,19 @@ def _git_dir(top: str) -> str | None:
     return None
 
 
+def user_git_configs() -> tuple[str, str]:
+    """The user's git config files, in the order git reads them (later ones win)."""
+    home = os.path.expanduser("~")
+    xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config")
+    return os.path.join(xdg, "git", "config"), os.path.join(home, ".gitconfig")
+
+
 def global_excludes_file() -> str:
     """The user's global git excludes file (which may not exist)."""
     home = os.path.expanduser("~")
     xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(home, ".config")
     found = None
-    for config in (os.path.join(xdg, "git", "config"), os.path.join(home, ".gitconfig")):
+    for config in user_git_configs():
         section = ""
         for raw in _read_lines(config) or ():
             line = raw.strip()
@@ -132,6 +157,7 @@ class Ignorer:
         """The layers of a git work tree's top folder before its own ignore files."""
         layers: list[_Layer] = []
         if self._global is False:
+            self.inputs.update(user_git_configs())
             self._global = self._layer(global_excludes_file(), "")
         git_dir = _git_dir(top)
         if git_dir is not None:
@@ -217,9 +243,8 @@ def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
             continue
         if os.sep != "/":
             rel = rel.replace(os.sep, "/")
-        if is_dir:
-            rel += "/"
-        for p in layer.patterns:
-            if p.include != decision and p.regex.match(rel) is not None:
-                decision = p.include
+        for include, file_re, dir_re in layer.patterns:
+            regex = dir_re if is_dir else file_re
+            if include != decision and regex is not None and regex.match(rel) is not None:
+                decision = include
     return bool(decision)

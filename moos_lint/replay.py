@@ -50,7 +50,14 @@ from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
 #: bump when the entry layout changes
 FORMAT = 1
 #: the environment variables a check run reads
-ENV = ("GITHUB_ACTIONS", "MOOS_LINT_CACHE_DIR")
+ENV = (
+    "GITHUB_ACTIONS",
+    "MOOS_LINT_CACHE_DIR",
+    "HOME",
+    "XDG_CONFIG_HOME",
+    "NO_COLOR",
+    "FORCE_COLOR",
+)
 _PACKAGE = os.path.dirname(os.path.abspath(__file__))
 
 
