@@ -143,7 +143,8 @@ class Ignorer:
         self.root = os.path.abspath(root)
         #: every ignore file consulted, present or not
         self.inputs: set[str] = set()
-        self._global: _Layer | None | bool = False  # not read yet
+        self._global: _Layer | None = None
+        self._global_read = False
 
     def _layer(self, path: str, base: str) -> _Layer | None:
         self.inputs.add(path)
@@ -156,7 +157,8 @@ class Ignorer:
     def _repo_frame(self, top: str) -> Frame:
         """The layers of a git work tree's top folder before its own ignore files."""
         layers: list[_Layer] = []
-        if self._global is False:
+        if not self._global_read:
+            self._global_read = True
             self.inputs.update(user_git_configs())
             self._global = self._layer(global_excludes_file(), "")
         git_dir = _git_dir(top)
