@@ -72,6 +72,7 @@ if TYPE_CHECKING:
     from typing import Any
 
     from moos_lint.config import Settings
+    from moos_lint.progress import Progress
     from moos_lint.result import Result
 
 ENV_VAR = "MOOS_LINT_CACHE_DIR"
@@ -393,7 +394,13 @@ def _discover(paths: list[Path], settings: Settings, cache_dir: str) -> tuple[An
 
 
 def cached_lint(
-    paths: list[Path], settings: Settings, *, context: bool, jobs: int | None, cache_dir: str
+    paths: list[Path],
+    settings: Settings,
+    *,
+    context: bool,
+    jobs: int | None,
+    cache_dir: str,
+    progress: Progress | None = None,
 ) -> Result:
     """:func:`moos_lint.engine.lint_paths` through the cache."""
     found, walked = _discover(paths, settings, cache_dir)
@@ -407,7 +414,9 @@ def cached_lint(
     from moos_lint.nsplug import FileCache
 
     reader = FileCache()
-    result = lint_paths(paths, settings, context=context, cache=reader, jobs=jobs)
+    result = lint_paths(
+        paths, settings, context=context, cache=reader, jobs=jobs, progress=progress
+    )
     if not result.internal_errors:  # a crash is never replayed from the cache
         store(cache_dir, key, result, settings, reader.paths(), reader.probed)
         if result.cache_watch is not None:

@@ -394,7 +394,12 @@ def _check(args: argparse.Namespace, settings) -> int:
     fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
     # an unchanged run prints the report it printed before, rendered the same way
     replay = cache_dir is not None and not args.baseline
-    render_key = repr((fmt, bool(args.statistics), bool(args.quiet), os.getcwd()))
+    color = False
+    if fmt in ("text", "concise"):
+        from moos_lint.output.color import wanted
+
+        color = wanted(args.color, 1 if args.output_file is None else -1)
+    render_key = repr((fmt, bool(args.statistics), bool(args.quiet), os.getcwd(), color))
     if replay and cache_dir is not None:
         from moos_lint.cache import cached_output
 
@@ -414,8 +419,12 @@ def _check(args: argparse.Namespace, settings) -> int:
             _remember(args, cache_dir, watch, text, status)
             return status
 
+    from moos_lint.progress import for_terminal
+
+    progress = for_terminal(sys.stderr, fmt, args.quiet, _outside_any_project(settings, root))
+
     def lint(cache=None, *, filtered: bool = True):
-        with _CyclicGCPaused():
+        with _CyclicGCPaused(), _Cleared(progress):
             if cache_dir is not None and cache is None:
                 from moos_lint.cache import cached_lint  # the engine loads only on a miss
 
@@ -425,12 +434,18 @@ def _check(args: argparse.Namespace, settings) -> int:
                     context=args.context,
                     jobs=args.jobs,
                     cache_dir=cache_dir,
+                    progress=progress,
                 )
             else:
                 from moos_lint.engine import lint_paths
 
                 result = lint_paths(
-                    args.paths, settings, context=args.context, cache=cache, jobs=args.jobs
+                    args.paths,
+                    settings,
+                    context=args.context,
+                    cache=cache,
+                    jobs=args.jobs,
+                    progress=progress,
                 )
         from moos_lint.diagnostics import Diagnostic, Severity, Span
 
@@ -466,7 +481,7 @@ def _check(args: argparse.Namespace, settings) -> int:
         if written is not None:
             return written
         result = outcome.result
-    text = render(fmt, result, statistics=args.statistics, quiet=args.quiet)
+    text = render(fmt, result, statistics=args.statistics, quiet=args.quiet, color=color)
     if replay and cache_dir is not None:  # (no cache with --fix or --diff)
         from moos_lint.cache import store_output
 
@@ -496,6 +511,32 @@ def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, 
     config = str(args.config) if args.config else None
     output = str(args.output_file) if args.output_file is not None else None
     remember(cache_dir, args.argv, paths, config, watch, text, status, output)
+
+
+def _outside_any_project(settings, root: str) -> str | None:
+    """The folder a run lints when it has no moos-lint config and no version-control
+    checkout (None when it has either): a large run there is announced."""
+    if settings.config_path:
+        return None
+    from moos_lint.project import vcs_top
+
+    if vcs_top(root) is not None:
+        return None
+    return os.path.abspath(root)
+
+
+class _Cleared:
+    """The progress line cleared when a lint ends, however it ends."""
+
+    def __init__(self, progress) -> None:
+        self.progress = progress
+
+    def __enter__(self) -> None:
+        return None
+
+    def __exit__(self, *exc: object) -> None:
+        if self.progress is not None:
+            self.progress.close()
 
 
 class _CyclicGCPaused:

@@ -29,6 +29,7 @@ from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
+from moos_lint.progress import Progress
 from moos_lint.registry import (
     Kind,
     Rule,
@@ -275,6 +276,7 @@ def lint_files(
     cache: FileCache | None = None,
     jobs: int | None = 1,
     checked: Callable[[Unit], bool] | None = None,
+    progress: Progress | None = None,
 ) -> Result:
     """Lint the given files with the given settings.
 
@@ -283,11 +285,14 @@ def lint_files(
     ``checked``: when given, only the units it accepts are checked by the rules;
     the others are still read, expanded and parsed (they include files, share
     behavior files, are sibling missions). The language server uses it to keep
-    only the findings one document can show.
+    only the findings one document can show. ``progress``: told of each file read and
+    checked (:mod:`moos_lint.progress`).
     """
     from moos_lint import parallel
 
     jobs = parallel.effective_jobs(jobs, len(files))
+    if progress is not None:
+        progress.start(len(files))
     cpp_files = [p for p in files if kind_of(p) == "cpp"]
     workers = parallel.pool(jobs) if jobs > 1 and cpp_files else None
     try:
@@ -301,9 +306,13 @@ def lint_files(
         for path in files:
             if kind_of(path) != "cpp":
                 run.units.append(run.build_unit(path))
+                if progress is not None:
+                    progress.advance()
         cpp_errors: list[Diagnostic] = []
         if cpp_files:
             units, cpp_errors = _build_cpp_units(run, cpp_files, cpp_parsed)
+            if progress is not None:
+                progress.advance(len(cpp_files))
             run.units.extend(units)
             result.internal_errors += len(cpp_errors)
     finally:
@@ -313,13 +322,18 @@ def lint_files(
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
     found: dict[tuple[Any, ...], Diagnostic] = {d.identity: d for d in cpp_errors}
     per_unit: Iterable[tuple[list[Diagnostic], int]]
+    if progress is not None:
+        progress.begin("checking", len(run.units))
+    parallel_rules = checked is None and jobs > 1 and len(run.units) > 1
     if checked is not None:
         per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
-    elif jobs > 1 and len(run.units) > 1:
-        per_unit = parallel.run_rules_parallel(run, jobs)
+    elif parallel_rules:
+        per_unit = parallel.run_rules_parallel(run, jobs, progress)
     else:
         per_unit = (run.run_rules(unit) for unit in run.units)
     for diags, errors in per_unit:
+        if progress is not None and not parallel_rules:
+            progress.advance()
         result.internal_errors += errors
         for d in diags:
             found.setdefault(d.identity, d)
@@ -364,6 +378,7 @@ def lint_paths(
     cache: FileCache | None = None,
     jobs: int | None = 1,
     cache_dir: str | None = None,
+    progress: Progress | None = None,
 ) -> Result:
     """Discover files under ``paths`` and lint them.
 
@@ -378,17 +393,21 @@ def lint_paths(
     if cache_dir is not None and cache is None:
         from moos_lint.cache import cached_lint
 
-        return cached_lint(paths, settings, context=context, jobs=jobs, cache_dir=cache_dir)
+        return cached_lint(
+            paths, settings, context=context, jobs=jobs, cache_dir=cache_dir, progress=progress
+        )
     found = discover(paths, settings.exclude, settings.root, settings.respect_gitignore)
     if not context:
-        result = lint_files(found.files, settings, cache=cache, jobs=jobs)
+        result = lint_files(found.files, settings, cache=cache, jobs=jobs, progress=progress)
         result.missing = found.missing
         return result
     from moos_lint.context import related_missions
 
     cache = cache or FileCache()
     missions = related_missions(found.files, settings, cache)
-    result = lint_files([*found.files, *missions], settings, cache=cache, jobs=jobs)
+    result = lint_files(
+        [*found.files, *missions], settings, cache=cache, jobs=jobs, progress=progress
+    )
     keep = {os.path.normpath(p) for p in (*found.files, *missions)}
     result.diagnostics = [
         d

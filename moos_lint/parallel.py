@@ -44,6 +44,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:  # the engine starts the workers: this module does not import it
     from moos_lint.diagnostics import Diagnostic
     from moos_lint.engine import LintRun
+    from moos_lint.progress import Progress
     from moos_lint.unit import Unit
 
 #: below this many files a run stays in one process
@@ -178,8 +179,11 @@ def rule_batches(units: list[Unit]) -> list[list[int]]:
     return sorted(folders.values(), key=lambda b: (-sum(_unit_weight(units[i]) for i in b), b[0]))
 
 
-def run_rules_parallel(run: LintRun, jobs: int) -> list[tuple[list[Diagnostic], int]]:
-    """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order."""
+def run_rules_parallel(
+    run: LintRun, jobs: int, progress: Progress | None = None
+) -> list[tuple[list[Diagnostic], int]]:
+    """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order.
+    ``progress``: told of each unit done (:mod:`moos_lint.progress`)."""
     global _RUN
     batches = rule_batches(run.units)
     results: list[tuple[list[Diagnostic], int]] = [([], 0)] * len(run.units)
@@ -195,6 +199,8 @@ def run_rules_parallel(run: LintRun, jobs: int) -> list[tuple[list[Diagnostic], 
             for i, diags, errors in batch:
                 results[i] = (diags, errors)
                 done.add(i)
+            if progress is not None:
+                progress.advance(len(batch))
             # what the workers read counts for the result cache (moos_lint.cache)
             run.cache.read_elsewhere.update(read)
             run.cache.probed.update(probed)

@@ -73,6 +73,7 @@ def identity(argv: list[str]) -> list:
         list(argv),
         os.getcwd(),
         [os.environ.get(k) for k in ENV],
+        os.isatty(1),  # (``--color auto``)
     ]
 
 

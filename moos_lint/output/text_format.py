@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections import Counter
 
 from moos_lint.output import display_path
+from moos_lint.output.color import Palette
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
@@ -26,21 +27,29 @@ def _excerpt(text: str, col: int, end_col: int, end_line_same: bool) -> tuple[st
 
 
 def render(
-    result: Result, cwd: str, *, statistics: bool = False, quiet: bool = False, **_kw
+    result: Result,
+    cwd: str,
+    *,
+    statistics: bool = False,
+    quiet: bool = False,
+    color: bool = False,
+    **_kw,
 ) -> str:
     out: list[str] = []
+    pal = Palette(color)
     for d in result.diagnostics:
         s = d.span
-        path = display_path(s.path, cwd)
-        out.append(f"{path}:{s.line}:{s.col}: {d.code} [{d.name}] {d.message}")
+        where = pal.location(display_path(s.path, cwd), s.line, s.col)
+        out.append(f"{where} {pal.code(d.code)} [{d.name}] {d.message}")
         src = result.sources.get(s.path)
         if src is not None and 1 <= s.line <= len(src.lines):
             text, caret = _excerpt(src.lines[s.line - 1], s.col, s.end_col, s.end_line == s.line)
             num = str(s.line)
             pad = " " * len(num)
-            out.append(f"  {pad} |")
-            out.append(f"  {num} | {text}")
-            out.append(f"  {pad} | {caret}")
+            bar = pal.gutter("|")
+            out.append(f"  {pad} {bar}")
+            out.append(f"  {pal.gutter(num)} {bar} {text}")
+            out.append(f"  {pad} {bar} {pal.caret(caret)}")
         for site in reversed(d.chain):
             out.append(f"  = included from {display_path(site.path, cwd)}:{site.line}")
         out.append("")
