@@ -6,9 +6,9 @@ marked on the processes and variables they concern. Three formats:
 
 - ``json``: the graph as data (processes, variables, edges, findings);
 - ``dot``: Graphviz;
-- ``html``: one self-contained page (no network): an inline SVG laid out in
-  columns, processes on the left and variables on the right, with a little
-  JavaScript that highlights the neighbours of what you point at.
+- ``html``: one self-contained page (no network), laid out as a layered graph
+  by the inlined dagre, with pan, zoom and the neighbours of what you point at
+  highlighted (:mod:`moos_lint.graph_html`).
 
 By default a variable is drawn when two processes of the mission exchange it
 (a publisher and a reader), when a finding concerns it, or when a
@@ -18,7 +18,6 @@ catalogue says an app publishes too.
 
 from __future__ import annotations
 
-import html
 import json
 import os
 from dataclasses import dataclass, field
@@ -262,176 +261,11 @@ def to_dot(g: Graph) -> str:
     return "\n".join(out) + "\n"
 
 
-_ROW = 24
-_PROC_H = 34
-_PROC_W = 210
-_VAR_W = 230
-_COL_GAP = 120
-_MAX_ROWS = 36
-
-
 def to_html(g: Graph) -> str:
-    """One self-contained page: inline SVG, inline CSS and JS, no network."""
-    esc = html.escape
-    n_proc = max(len(g.processes), 1)
-    cols = max(1, -(-len(g.variables) // _MAX_ROWS))
-    rows = -(-len(g.variables) // cols) if g.variables else 0
-    height = max(n_proc * (_PROC_H + 10), rows * _ROW) + 60
-    width = 40 + _PROC_W + _COL_GAP + cols * (_VAR_W + 40) + 20
-    pos: dict[str, tuple[float, float, float, float]] = {}
-    parts: list[str] = []
-    # processes
-    step = (height - 60) / n_proc
-    for i, p in enumerate(g.processes):
-        x, y = 20, 40 + i * step + (step - _PROC_H) / 2
-        pos[p["id"]] = (x, y, _PROC_W, _PROC_H)
-        cls = "proc" + (" bad" if p["findings"] else "") + ("" if p["known"] else " unknown")
-        tip = f"{p['name']} ({p['binary']})"
-        if p["source"]:
-            tip += f"\n{p['source']}"
-        for f in p["findings"]:
-            tip += f"\n{f['code']} {f['message']}"
-        label = p["name"] if p["name"] == p["binary"] else f"{p['name']} ({p['binary']})"
-        mark = " \u26a0" if p["findings"] else ""
-        parts.append(
-            f'<g class="{cls}" id="{esc(p["id"])}" data-id="{esc(p["id"])}">'
-            f"<title>{esc(tip)}</title>"
-            f'<rect x="{x}" y="{y:.1f}" width="{_PROC_W}" height="{_PROC_H}" rx="6"/>'
-            f'<text x="{x + 10}" y="{y + 22:.1f}">{esc(_clip(label, 30))}{mark}</text></g>'
-        )
-    # variables
-    x0 = 20 + _PROC_W + _COL_GAP
-    for i, v in enumerate(g.variables):
-        c, r = divmod(i, rows) if rows else (0, 0)
-        x, y = x0 + c * (_VAR_W + 40), 40 + r * _ROW
-        pos[v["id"]] = (x, y, _VAR_W, _ROW - 6)
-        cls = "var" + (" bad" if v["findings"] else "")
-        tip = v["name"] + "".join(f"\n{f['code']} {f['message']}" for f in v["findings"])
-        mark = " \u26a0" if v["findings"] else ""
-        parts.append(
-            f'<g class="{cls}" id="{esc(v["id"])}" data-id="{esc(v["id"])}">'
-            f"<title>{esc(tip)}</title>"
-            f'<rect x="{x}" y="{y}" width="{_VAR_W}" height="{_ROW - 6}" rx="9"/>'
-            f'<text x="{x + 8}" y="{y + 13}">{esc(_clip(v["name"], 32))}{mark}</text></g>'
-        )
-    edges: list[str] = []
-    for e in g.edges:
-        if e["from"] not in pos or e["to"] not in pos:
-            continue
-        proc = e["from"] if e["kind"] == "publish" else e["to"]
-        var = e["to"] if e["kind"] == "publish" else e["from"]
-        px, py, pw, ph = pos[proc]
-        vx, vy, _vw, vh = pos[var]
-        off = 8 if e["kind"] == "publish" else -8
-        x1, y1 = px + pw, py + ph / 2 + off / 2
-        x2, y2 = vx, vy + vh / 2
-        mid = (x1 + x2) / 2
-        d = f"M{x1:.1f},{y1:.1f} C{mid:.1f},{y1:.1f} {mid:.1f},{y2:.1f} {x2:.1f},{y2:.1f}"
-        edges.append(
-            f'<path class="edge {e["kind"]}" d="{d}" data-a="{esc(proc)}" data-b="{esc(var)}">'
-            f"<title>{esc(e['kind'])} ({esc(str(e['how']))})</title></path>"
-        )
-    findings = "".join(
-        f'<li class="{esc(f["severity"])}"><b>{esc(f["code"])}</b> '
-        f"{esc(os.path.basename(f['path']))}:{f['line']}: {esc(f['message'])}</li>"
-        for f in g.findings
-    )
-    notes = "".join(f"<li>{esc(n)}</li>" for n in g.notes)
-    title = esc(os.path.basename(g.mission))
-    return _PAGE.format(
-        title=title,
-        width=int(width),
-        height=int(height),
-        edges="".join(edges),
-        nodes="".join(parts),
-        findings=findings or "<li>none</li>",
-        notes=notes,
-        n_proc=len(g.processes),
-        n_var=len(g.variables),
-        n_find=len(g.findings),
-        x_var=x0,
-    )
+    """One self-contained page, laid out in the browser (:mod:`moos_lint.graph_html`)."""
+    from moos_lint.graph_html import to_html as page
 
-
-def _clip(s: str, n: int) -> str:
-    return s if len(s) <= n else s[: n - 1] + "\u2026"
-
-
-_PAGE = """<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8">
-<title>{title}: processes and variables</title>
-<style>
-body {{ font-family: Helvetica, Arial, sans-serif; margin: 16px; color: #222; }}
-h1 {{ font-size: 18px; margin: 0 0 4px 0; }}
-p.sum {{ margin: 0 0 8px 0; color: #555; font-size: 13px; }}
-.legend span {{ display: inline-block; margin-right: 14px; font-size: 12px; }}
-svg {{ border: 1px solid #ddd; background: #fcfcfc; }}
-svg text {{ font-size: 12px; pointer-events: none; }}
-.proc rect {{ fill: #e8f0fb; stroke: #3b6fb6; stroke-width: 1.2; }}
-.proc.unknown rect {{ fill: #f0f0f0; stroke: #999; stroke-dasharray: 4 2; }}
-.var rect {{ fill: #fff; stroke: #8aa; }}
-.bad rect {{ stroke: #d22; stroke-width: 2.2; }}
-.bad text {{ fill: #b00; font-weight: bold; }}
-.edge {{ fill: none; stroke-width: 1; opacity: .35; }}
-.edge.publish {{ stroke: #2a62c9; }}
-.edge.subscribe {{ stroke: #1a9a4a; stroke-dasharray: 5 3; }}
-svg.focus .edge {{ opacity: .05; }}
-svg.focus g {{ opacity: .25; }}
-svg.focus .edge.on {{ opacity: 1; stroke-width: 2; }}
-svg.focus g.on {{ opacity: 1; }}
-g {{ cursor: pointer; }}
-ul.findings li.error {{ color: #b00; }}
-ul.findings li.warning {{ color: #a60; }}
-ul {{ font-size: 13px; }}
-</style></head>
-<body>
-<h1>{title}</h1>
-<p class="sum" id="summary">{n_proc} processes, {n_var} variables, {n_find} findings.
-Point at a process or a variable to see its neighbours; click to keep the highlight.</p>
-<div class="legend"><span style="color:#2a62c9">&#9473; publishes</span>
-<span style="color:#1a9a4a">&#9476; subscribes</span>
-<span style="color:#d22">&#9633; has findings</span>
-<span style="color:#999">&#9633; not in the catalogue</span></div>
-<svg id="graph" xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}"
- viewBox="0 0 {width} {height}">
-<text x="20" y="24" style="font-weight:bold">Processes</text>
-<text x="{x_var}" y="24" style="font-weight:bold">Variables</text>
-<g class="edges">{edges}</g>{nodes}
-</svg>
-<h2 style="font-size:15px">Findings</h2><ul class="findings">{findings}</ul>
-<ul class="notes">{notes}</ul>
-<script>
-(function () {{
-  var svg = document.getElementById('graph');
-  var pinned = null;
-  function show(id) {{
-    var on = {{}}; on[id] = true;
-    svg.querySelectorAll('.edge').forEach(function (e) {{
-      var hit = e.dataset.a === id || e.dataset.b === id;
-      e.classList.toggle('on', hit);
-      if (hit) {{ on[e.dataset.a] = true; on[e.dataset.b] = true; }}
-    }});
-    svg.querySelectorAll('g[data-id]').forEach(function (g) {{
-      g.classList.toggle('on', !!on[g.dataset.id]);
-    }});
-    svg.classList.add('focus');
-  }}
-  function clear() {{ if (!pinned) svg.classList.remove('focus'); }}
-  svg.querySelectorAll('g[data-id]').forEach(function (g) {{
-    g.addEventListener('mouseenter', function () {{ if (!pinned) show(g.dataset.id); }});
-    g.addEventListener('mouseleave', clear);
-    g.addEventListener('click', function (ev) {{
-      ev.stopPropagation();
-      pinned = pinned === g.dataset.id ? null : g.dataset.id;
-      if (pinned) show(pinned); else svg.classList.remove('focus');
-    }});
-  }});
-  svg.addEventListener('click', function () {{ pinned = null; svg.classList.remove('focus'); }});
-  document.body.setAttribute('data-rendered', String(svg.querySelectorAll('g[data-id]').length));
-}})();
-</script>
-</body></html>
-"""
+    return page(g)
 
 
 def render(g: Graph, fmt: str) -> str:
