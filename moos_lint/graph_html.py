@@ -113,7 +113,7 @@ p.sum {{ margin: 0 0 8px 0; color: #555; font-size: 13px; }}
 .bar {{ display: flex; gap: 14px; align-items: center; flex-wrap: wrap; margin-bottom: 6px; }}
 .legend span {{ display: inline-block; margin-right: 14px; font-size: 12px; }}
 .bar button {{ font-size: 12px; padding: 2px 10px; }}
-#graph {{ display: block; width: 100%; height: 70vh; border: 1px solid #ddd;
+#graph {{ display: block; border: 1px solid #ddd; box-sizing: border-box;
   background: #fcfcfc; touch-action: none; user-select: none; }}
 #graph.panning {{ cursor: grabbing; }}
 svg text {{ font-size: 12px; pointer-events: none; dominant-baseline: central; }}
@@ -197,7 +197,7 @@ _SCRIPT = r"""
   });
 
   var layout = new dagre.graphlib.Graph({multigraph: true});
-  layout.setGraph({rankdir: 'LR', nodesep: 10, ranksep: 90, edgesep: 6,
+  layout.setGraph({rankdir: 'LR', nodesep: 8, ranksep: 48, edgesep: 4,
                    marginx: 16, marginy: 16, ranker: 'network-simplex'});
   layout.setDefaultEdgeLabel(function () { return {}; });
   data.nodes.forEach(function (n) {
@@ -244,17 +244,20 @@ _SCRIPT = r"""
   });
 
   // the view: fit, zoom about a point, pan
-  var size = layout.graph();
-  var full = {x: 0, y: 0, w: Math.max(size.width, 1), h: Math.max(size.height, 1)};
-  var view = {x: 0, y: 0, w: full.w, h: full.h};
+  var drawn = svg.querySelector('g.view').getBBox();  // the boxes and the routed edges
+  var full = {x: drawn.x - 12, y: drawn.y - 12,
+              w: Math.max(drawn.width, 1) + 24, h: Math.max(drawn.height, 1) + 24};
+  var view = {x: full.x, y: full.y, w: full.w, h: full.h};
   function apply() {
     svg.setAttribute('viewBox', [view.x, view.y, view.w, view.h].join(' '));
   }
   function fit() {
-    // as tall as the drawing needs at the page's width, within the window
-    var width = svg.clientWidth || 1000;
-    var tall = Math.min(Math.max(width * full.h / full.w, 240), window.innerHeight * 0.85);
-    svg.style.height = Math.round(tall) + 'px';
+    // the whole drawing at the page's width, but never so small that labels are
+    // unreadable: a larger mission makes the page scroll (and the wheel zooms out)
+    var avail = Math.max(svg.parentNode.clientWidth, 320);
+    var scale = Math.min(1.25, Math.max(0.75, avail / full.w));
+    svg.style.width = Math.round(full.w * scale) + 'px';
+    svg.style.height = Math.round(full.h * scale) + 'px';
     view = {x: full.x, y: full.y, w: full.w, h: full.h};
     apply();
   }
