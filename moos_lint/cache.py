@@ -30,8 +30,10 @@ run once with ``--no-cache`` after such a change.
 
 **Lighter entries** make an unchanged run cheaper still. The list of
 files discovery found is kept with the modification time of every folder it
-walked (adding, removing or renaming a file changes its folder's), and reused
-while they hold. And the report a cached result was rendered to is kept, named
+walked (adding, removing or renaming a file changes its folder's) and the
+(mtime, size) of every ignore file that decided it (``.gitignore``, ``.ignore``,
+``info/exclude``, the user's git config and global excludes, or their absence),
+and reused while they hold. And the report a cached result was rendered to is kept, named
 by the run entry it came from (a random token written with that entry) and by
 how it was rendered (format, ``--statistics``, ``--quiet``, working folder, the
 paths that do not exist): once the run entry is validated, that text is

@@ -63,10 +63,11 @@ def _exact(line: str) -> tuple[bool, re.Pattern | None, re.Pattern] | None:
 class _Layer:
     """The patterns of one ignore file, relative to its folder ``base``."""
 
-    __slots__ = ("base", "patterns")
+    __slots__ = ("base", "patterns", "prefix")
 
     def __init__(self, base: str, lines: list[str]) -> None:
         self.base = base
+        self.prefix = base.rstrip(os.sep) + os.sep  # what a path below ``base`` starts with
         self.patterns = [p for p in map(_exact, lines) if p is not None]
 
 
@@ -232,17 +233,19 @@ def _rebase(layer: _Layer, base: str) -> _Layer:
     """The global layer, relative to a repository's top."""
     copy = _Layer.__new__(_Layer)
     copy.base = base
+    copy.prefix = base.rstrip(os.sep) + os.sep
     copy.patterns = layer.patterns
     return copy
 
 
 def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
-    """Whether ``path`` (a file, or a folder when ``is_dir``) is ignored in ``frame``."""
+    """Whether ``path`` (a file, or a folder when ``is_dir``; absolute, as the walk joins
+    it) is ignored in ``frame``."""
     decision = None
     for layer in frame.layers:
-        rel = os.path.relpath(path, layer.base)
-        if rel.startswith(".."):
+        if not path.startswith(layer.prefix):
             continue
+        rel = path[len(layer.prefix) :]
         if os.sep != "/":
             rel = rel.replace(os.sep, "/")
         for include, file_re, dir_re in layer.patterns:
