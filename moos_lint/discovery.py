@@ -129,7 +129,7 @@ def discover(
                     continue
                 keep.append(d)
             dirnames[:] = keep
-            if ignorer is not None and keep:
+            if frame is not None and keep:
                 frames[dirpath] = frame
             for f in filenames:
                 if kind_of(f) is None:

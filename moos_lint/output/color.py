@@ -11,6 +11,10 @@ from __future__ import annotations
 
 import os
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from collections.abc import Mapping
+
 CHOICES = ("auto", "always", "never")
 
 BOLD = "\x1b[1m"
@@ -20,19 +24,19 @@ CYAN = "\x1b[36m"
 RESET = "\x1b[0m"
 
 
-def wanted(choice: str, fd: int, env: dict | None = None) -> bool:
+def wanted(choice: str, fd: int, env: Mapping[str, str] | None = None) -> bool:
     """Whether to colour what is written to the file descriptor ``fd``."""
     if choice == "always":
         return True
     if choice == "never":
         return False
-    env = os.environ if env is None else env
-    if env.get("NO_COLOR"):
+    environ = os.environ if env is None else env
+    if environ.get("NO_COLOR"):
         return False
-    if env.get("FORCE_COLOR"):
+    if environ.get("FORCE_COLOR"):
         return True
     try:
-        return os.isatty(fd) and env.get("TERM") != "dumb"
+        return os.isatty(fd) and environ.get("TERM") != "dumb"
     except OSError:
         return False
 
