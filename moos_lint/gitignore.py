@@ -34,29 +34,36 @@ FOLDER_FILES = (".gitignore", ".ignore")
 
 
 #: how pathspec's regex of a pattern ends when it also matches what lies below a match
-_BELOW = "(?:(?P<ps_d>/).*)?$"
-#: ... and when the pattern names folders only (``name/``)
-_FOLDER_ONLY = "(?P<ps_d>/).*$"
+#: (pathspec 0.12, then 1.x), and when the pattern names folders only (``name/``)
+_BELOW = ("(?:(?P<ps_d>/).*)?$", "(?:(?P<ps_d>/)|$)")
+_FOLDER_ONLY = ("(?P<ps_d>/).*$", "(?P<ps_d>/)")
 
 
 def _exact(line: str) -> tuple[bool, re.Pattern | None, re.Pattern] | None:
     """A pattern as (include, regex for a file, regex for a folder), matching one path
     itself: a walk decides each folder before it goes below it, as git does (a file
-    in an ignored folder stays ignored whatever a deeper ``!`` pattern says)."""
-    from pathspec.patterns.gitwildmatch import GitWildMatchPattern
+    in an ignored folder stays ignored whatever a deeper ``!`` pattern says).
+
+    pathspec's regex also matches everything below a match (a ``ps_d`` group marks
+    where); that tail is cut off. The regexes are used with ``search``."""
+    from pathspec import GitIgnoreSpec
 
     try:
-        p = GitWildMatchPattern(line)
+        patterns = GitIgnoreSpec.from_lines([line]).patterns
     except Exception:  # a malformed pattern: git skips it too
         return None
-    if p.include is None:
+    if not patterns or patterns[0].include is None or patterns[0].regex is None:
         return None
+    p = patterns[0]
     src = p.regex.pattern
-    if src.endswith(_FOLDER_ONLY):
-        return p.include, None, re.compile(src[: -len(_FOLDER_ONLY)] + "$")
-    if src.endswith(_BELOW):
-        one = re.compile(src[: -len(_BELOW)] + "$")
-        return p.include, one, one
+    for tail in _FOLDER_ONLY:
+        if src.endswith(tail):
+            head = src[: -len(tail)]
+            return p.include, None, re.compile(head + "$" if head else ".")
+    for tail in _BELOW:
+        if src.endswith(tail):
+            one = re.compile(src[: -len(tail)] + "$")
+            return p.include, one, one
     return p.include, p.regex, p.regex
 
 
@@ -250,6 +257,6 @@ def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
             rel = rel.replace(os.sep, "/")
         for include, file_re, dir_re in layer.patterns:
             regex = dir_re if is_dir else file_re
-            if include != decision and regex is not None and regex.match(rel) is not None:
+            if include != decision and regex is not None and regex.search(rel) is not None:
                 decision = include
     return bool(decision)

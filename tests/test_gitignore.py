@@ -127,14 +127,27 @@ def test_agrees_with_git(repo: Path):
     """moos-lint's answer is git's own, on a mix of patterns."""
     (repo / "deep" / "keep").mkdir(parents=True)
     (repo / "deep" / "drop").mkdir()
-    for rel in ("deep/keep/a.moos", "deep/drop/b.moos", "deep/c.moos", "deep/d.bhv", "e.moos"):
+    (repo / "tools" / "sub").mkdir(parents=True)
+    for rel in (
+        "deep/keep/a.moos",
+        "deep/drop/b.moos",
+        "deep/c.moos",
+        "deep/d.bhv",
+        "e.moos",
+        "tools/x.moos",
+        "tools/y.moos",
+        "tools/sub/z.moos",
+    ):
         (repo / rel).write_text(MISSION)
     (repo / "deep" / ".gitignore").write_text("*\n!*/\n!keep/**\n!d.bhv\n")
-    (repo / ".gitignore").write_text((repo / ".gitignore").read_text() + "/e.moos\n**/drop/\n")
+    (repo / ".gitignore").write_text(
+        (repo / ".gitignore").read_text() + "/e.moos\n**/drop/\ntools/**\n!tools/x.moos\n"
+    )
     git_says = _git(repo, "ls-files", "--others", "--exclude-standard")
     lintable = sorted(p for p in git_says.split() if p.endswith((".moos", ".bhv")))
     assert _lint(repo) == lintable
     assert "deep/keep/a.moos" in lintable and "deep/d.bhv" in lintable
+    assert "tools/x.moos" in lintable and "tools/y.moos" not in lintable
 
 
 def test_a_changed_gitignore_invalidates_the_warm_run(repo: Path, tmp_path: Path):
