@@ -52,19 +52,20 @@ def _exact(line: str) -> tuple[bool, re.Pattern | None, re.Pattern] | None:
         patterns = GitIgnoreSpec.from_lines([line]).patterns
     except Exception:  # a malformed pattern: git skips it too
         return None
-    if not patterns or patterns[0].include is None or patterns[0].regex is None:
+    include = patterns[0].include if patterns else None
+    regex = patterns[0].regex if patterns else None
+    if include is None or regex is None:
         return None
-    p = patterns[0]
-    src = p.regex.pattern
+    src = regex.pattern
     for tail in _FOLDER_ONLY:
         if src.endswith(tail):
             head = src[: -len(tail)]
-            return p.include, None, re.compile(head + "$" if head else ".")
+            return include, None, re.compile(head + "$" if head else ".")
     for tail in _BELOW:
         if src.endswith(tail):
             one = re.compile(src[: -len(tail)] + "$")
-            return p.include, one, one
-    return p.include, p.regex, p.regex
+            return include, one, one
+    return include, regex, regex
 
 
 class _Layer:
