@@ -281,37 +281,6 @@ def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch
     assert incremental == [False, True, True, False, True]
 
 
-def test_the_benchmark_prints_every_figure(tmp_path):
-    """The shipped benchmark runs end to end on a small tree (the figures are not judged)."""
-    tree = tmp_path / "tree"
-    tree.mkdir()
-    _tree(tree)
-    app = tree / "pApp"
-    app.mkdir()
-    (app / "App.cpp").write_text('bool App::OnStartUp() { Notify("APP_X", 1); return true; }\n')
-    before = sorted(p.name for p in tree.rglob("*"))
-    out = subprocess.run(
-        [sys.executable, "-m", "moos_lint.benchmark", str(tree), "--runs", "5"],
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert out.returncode == 0, out.stderr
-    for figure in (
-        "cold (default jobs)",
-        "cold (-j 1)",
-        "warm (cache, nothing changed)",
-        "moos-lint --version",
-        "floor (read + tree-sitter only)",
-        "peak memory (whole tree)",
-        "re-lint a.moos",
-        "re-lint App.cpp (1 lines)",
-    ):
-        line = next((ln for ln in out.stdout.splitlines() if ln.strip().startswith(figure)), "")
-        assert any(ch.isdigit() for ch in line[len(figure) + 2 :]), (figure, out.stdout)
-    assert sorted(p.name for p in tree.rglob("*")) == before  # the tree is not written
-
-
 def test_a_command_line_lint_pauses_the_cyclic_gc_and_restores_it(tree, monkeypatch, capsys):
     import gc
 
@@ -381,16 +350,6 @@ def test_the_server_settles_before_it_takes_requests(monkeypatch):
     monkeypatch.setattr(lsp_server, "settle", lambda: order.append("settle"))
     assert lsp_server.serve(catalogue=lsp_server.EMPTY) == 0
     assert order == ["create", "settle", "start_io"]
-
-
-def test_the_benchmark_runs_the_console_script_pip_installs():
-    import tomllib
-
-    from moos_lint import benchmark
-
-    root = Path(__file__).resolve().parents[2]
-    data = tomllib.loads((root / "pyproject.toml").read_text(encoding="utf-8"))
-    assert data["project"]["scripts"]["moos-lint"] == benchmark.ENTRY_POINT
 
 
 def test_a_replayed_run_loads_nothing_to_render_its_report(tree, tmp_path):
