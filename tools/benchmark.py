@@ -63,6 +63,8 @@ MISSION_SUFFIXES = (".moos", ".bhv")
 RELINT_RUNS = 20
 COPIES = (1, 4, 16)
 SECTIONS = ("missions", "tree", "relint", "start", "linearity")
+#: a pure-Python loop timed before and after the figures: the slower, the busier the machine
+LOAD_PROBE = "for i in range(10**7): pass"
 
 # Targets of the figures (seconds, megabytes, ratios).
 RELINT_P95 = 0.020
@@ -480,7 +482,11 @@ def relints(t: Table, inst: Installation, missions: list[str], cpp: str | None, 
             ranked = sorted(by_file, key=lambda p: by_file[p][0], reverse=True)
             over = sum(1 for wall, _ in by_file.values() if wall > RELINT_P95)
             mid = statistics.median(wall for wall, _ in by_file.values())
-            t.row(f"every mission file ({len(by_file)})", f"median p95 {ms(mid)}", f"{over} over")
+            t.row(
+                f"every mission file ({len(by_file)})",
+                f"median p95 {ms(mid)}",
+                f"{over} files over {target[3:]}",
+            )
             show(f"worst: {os.path.basename(ranked[0])}", *by_file[ranked[0]])
             for p, (wall, cpu) in timed(ranked[:3], runs * 5).items():  # measured again, longer
                 show(f"again: {os.path.basename(p)}", wall, cpu)
@@ -584,6 +590,7 @@ def main(argv: list[str] | None = None) -> int:
         except (OSError, subprocess.CalledProcessError) as exc:
             print(f"installation: this interpreter (no virtual environment: {exc})")
             inst = Installation()
+        load = measure([inst.python, "-c", LOAD_PROBE], inst.env).wall
         only = set(args.only or SECTIONS)
         if "missions" in only:
             missions_alone(t, inst, missions, args.peer, runs, tmp)
@@ -595,7 +602,9 @@ def main(argv: list[str] | None = None) -> int:
             start_figures(t, inst, tree, runs, tmp)
         if "linearity" in only:
             linearity(t, inst, tree, runs, tmp)
-    print(f"\n{len(t.misses)} missed: {', '.join(t.misses) or 'none'}")
+        after = measure([inst.python, "-c", LOAD_PROBE], inst.env).wall
+    print(f"\nload: python -c {LOAD_PROBE!r} took {load:.2f} s before, {after:.2f} s after")
+    print(f"{len(t.misses)} missed: {', '.join(t.misses) or 'none'}")
     return 0
 
 

@@ -75,6 +75,7 @@ def test_the_benchmark_prints_every_figure_with_its_target(tmp_path):
     # a judged figure carries its ratio and a verdict
     assert _figure(out.stdout, "cold default / floor").split()[-1] in ("pass", "MISS")
     assert "peer" in _figure(out.stdout, "peer")  # not given: said, not run
+    assert "took" in _figure(out.stdout, "load: ")  # how busy the machine was
     assert sorted(p.name for p in tree.rglob("*")) == before  # the tree is not written
 
 
