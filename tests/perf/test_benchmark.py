@@ -1,4 +1,4 @@
-"""The benchmark script (tools/benchmark.py) runs end to end; its figures are not judged."""
+"""The benchmark script (scripts/benchmark.py) runs end to end; its figures are not judged."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ from tests.test_performance import _tree
 pytestmark = pytest.mark.perf
 
 ROOT = Path(__file__).resolve().parents[2]
-SCRIPT = ROOT / "tools" / "benchmark.py"
+SCRIPT = ROOT / "scripts" / "benchmark.py"
 
 
 def _load():

@@ -1,6 +1,6 @@
 """How fast moos-lint is on a tree, as a table of figures against their targets.
 
-    python tools/benchmark.py TREE [--runs N] [--peer PATH]
+    python scripts/benchmark.py TREE [--runs N] [--peer PATH]
 
 Every figure is the median of ``N`` runs (default 5) measured in this one run,
 printed with its target and its ratio, so the output reads as a pass/miss
@@ -550,7 +550,7 @@ def linearity(t: Table, inst: Installation, tree: str, runs: int, tmp: str) -> N
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(
-        prog="python tools/benchmark.py",
+        prog="python scripts/benchmark.py",
         description=__doc__,
         formatter_class=argparse.RawDescriptionHelpFormatter,
     )
