@@ -183,10 +183,11 @@ def lintable(tree: str) -> list[str]:
 def cpp_near(files: list[str], lines: int) -> str | None:
     """The C++ file that mentions the MOOS API and is closest to ``lines`` lines."""
     from moos_lint.cpp.prefilter import mentions_moos
+    from moos_lint.suffixes import is_cpp_source
 
     best, best_gap = None, None
     for p in files:
-        if not p.endswith((".cpp", ".cc", ".cxx")):
+        if not is_cpp_source(p):
             continue
         try:
             data = Path(p).read_bytes()
@@ -275,8 +276,9 @@ def floor(tree: str) -> None:
     mention the MOOS API, split between the processes a cold run uses."""
     from moos_lint import parallel
     from moos_lint.cpp.parse import backend
-    from moos_lint.cpp.prefilter import CPP_SUFFIXES, mentions_moos
+    from moos_lint.cpp.prefilter import mentions_moos
     from moos_lint.source import read_bytes
+    from moos_lint.suffixes import is_cpp
 
     files = lintable(tree)
     jobs = parallel.effective_jobs(None, len(files))
@@ -284,8 +286,8 @@ def floor(tree: str) -> None:
 
     def work(part: list[str]) -> None:
         for p in part:
-            data = read_bytes(p)  # type: ignore[arg-type]
-            if p.endswith(CPP_SUFFIXES) and isinstance(data, bytes) and mentions_moos(data):
+            data = read_bytes(p)
+            if is_cpp(p) and isinstance(data, bytes) and mentions_moos(data):
                 be.matches(be.parse(data))
 
     children = []
