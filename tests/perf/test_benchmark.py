@@ -126,4 +126,6 @@ def test_the_benchmark_runs_the_console_script_pip_installs():
     import tomllib
 
     data = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
-    assert data["project"]["scripts"] == {"moos-lint": _load().ENTRY_POINT}
+    scripts = data["project"]["scripts"]
+    assert scripts["moos-lint"] == _load().ENTRY_POINT
+    assert not any("benchmark" in target for target in scripts.values())  # a development script
