@@ -47,7 +47,9 @@ def _actionlint() -> str:
         "actionlint", path=os.path.dirname(sys.executable)
     )
     if found is None:
-        pytest.skip("actionlint is not installed (go install github.com/rhysd/actionlint/cmd/actionlint)")
+        pytest.skip(
+            "actionlint is not installed (go install github.com/rhysd/actionlint/cmd/actionlint)"
+        )
     return found
 
 
