@@ -38,8 +38,12 @@ SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: conversions from degrees that tell what a variable read by mail carries
+FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
-CALLED = PUBLISH | SUBSCRIBE | {"Run"} | CONFIG_CALLS | BAUD_CALLS | SOCKET_CALLS | STRCMP
+CALLED = (
+    PUBLISH | SUBSCRIBE | {"Run"} | CONFIG_CALLS | BAUD_CALLS | SOCKET_CALLS | STRCMP | FROM_DEGREES
+)
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
     "radAngleWrap",
@@ -172,6 +176,8 @@ class FolderTables:
     defines: dict[str, str] = field(default_factory=dict)
     # member/global/constant name -> its assigned values (None: not a literal)
     assigns: dict[str, list[str | None]] = field(default_factory=dict)
+    # member -> the configuration key read into it (``GetConfigurationParam("prefix", m_prefix)``)
+    config_keys: dict[str, str] = field(default_factory=dict)
 
 
 class Spans:
@@ -295,6 +301,13 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             vals = args.named_children
             val = string_value(vals[0]) if len(vals) == 1 else None
             t.assigns.setdefault(name, []).append(val)
+        for _call, fn, args in pf.calls:
+            argv = args.named_children
+            if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
+                key = string_value(strip_parens(argv[-2]))
+                member = target_name(argv[-1])
+                if key is not None and member:
+                    t.config_keys.setdefault(member, key.lower())
     return t
 
 
@@ -307,16 +320,58 @@ def _declared_in(pf: ParsedFile, a: _Asg) -> bool:
 class Extractor:
     """Turns one parsed file into a :class:`CppFile`, given the folder's tables."""
 
-    def __init__(self, pf: ParsedFile, tables: FolderTables):
+    def __init__(self, pf: ParsedFile, tables: FolderTables, evaluator: Any = None):
         self.pf = pf
         self.tables = tables
         self.out = CppFile(path=pf.path)
+        self.evaluator = evaluator
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
         src = text(n)
         val, prefix = self._resolve(n, depth)
-        return Name(source=src, text=val, prefix=prefix if val is None else val)
+        name = Name(source=src, text=val, prefix=prefix if val is None else val)
+        if val is None:
+            name.suffix = self._suffix(strip_parens(n))
+        name.config_key = self._config_key(strip_parens(n))
+        return name
+
+    def _suffix(self, n: Any) -> str:
+        """The known end of a name built at run time (see :attr:`Name.suffix`)."""
+        if n is None:
+            return ""
+        if n.type == "binary_expression" and text(n.child_by_field_name("operator")) == "+":
+            right = strip_parens(n.child_by_field_name("right"))
+            val, _ = self._resolve(right, 1)
+            return val if val is not None else self._suffix(right)
+        if n.type == "call_expression":
+            fn = n.child_by_field_name("function")
+            args = n.child_by_field_name("arguments").named_children
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str") and not args:
+                return self._suffix(strip_parens(fn.child_by_field_name("argument")))
+            # a helper that builds a name from a literal: ``varName("NAV_YAW")``
+            lits = [string_value(strip_parens(a)) for a in args]
+            if len(args) == 1 and lits[0] is not None:
+                return lits[0]
+            return ""
+        if n.type == "subscript_expression":
+            # a table of names indexed by an enumerator: ``m_names[Pitch]``
+            idx = n.child_by_field_name("indices") or n.child_by_field_name("index")
+            inner = [c for c in (idx.named_children if idx is not None else ())]
+            key = strip_parens(inner[0]) if inner else None
+            table = text(n.child_by_field_name("argument"))
+            if key is not None and key.type in ("identifier", "qualified_identifier"):
+                if re.search(r"name|var", table, re.I):
+                    return text(key).split("::")[-1]
+        return ""
+
+    def _config_key(self, n: Any) -> str | None:
+        """The configuration key that sets the member a name is built from."""
+        while n is not None and n.type == "binary_expression":
+            n = strip_parens(n.child_by_field_name("left"))
+        if n is None or n.type not in ("identifier", "field_expression"):
+            return None
+        return self.tables.config_keys.get(target_name(n))
 
     def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
         n = strip_parens(n)
@@ -550,15 +605,25 @@ class Extractor:
         spans = self.pf.spans
         out = self.out
         if name in PUBLISH and argv and _is_moos_call(fn):
+            pub_name = self.name(argv[0])
+            value = self.value(argv[1]) if len(argv) > 1 else None
+            if value is not None and self.evaluator is not None and valued_name(pub_name.last):
+                value.abstract = self.evaluator.of(self.pf, argv[1])
             out.publications.append(
                 Publication(
-                    name=self.name(argv[0]),
-                    value=self.value(argv[1]) if len(argv) > 1 else None,
+                    name=pub_name,
+                    value=value,
                     span=spans.of(call),
                     name_span=spans.of(argv[0]),
                     function=self._fn_of(call),
                 )
             )
+        elif name in FROM_DEGREES and argv:
+            from moos_lint.cpp.values import mail_key_of
+
+            var = mail_key_of(call)
+            if var is not None and _reads_mail(argv[0]):
+                out.consumed_degrees.append((var, spans.of(call), name))
         elif name in SUBSCRIBE and argv and _is_moos_call(fn):
             out.subscriptions.append(
                 Subscription(
@@ -729,6 +794,38 @@ def _top_of(n: Any, start_byte: int) -> Any:
     while p.parent is not None and p.parent.start_byte >= start_byte:
         p = p.parent
     return p
+
+
+def valued_name(name: str) -> bool:
+    """Whether the analysis computes the value published under ``name`` (by its last word)."""
+    from moos_lint.cpp.angles import last_word, words
+
+    w = last_word(name)
+    return w in _VALUED_WORDS or any(x.upper() in _RATE_WORDS for x in words(name))
+
+
+_VALUED_WORDS = {
+    "YAW",
+    "HEADING",
+    "HDG",
+    "PITCH",
+    "ROLL",
+    "Z",
+    "DEPTH",
+    "LAT",
+    "LON",
+    "LONG",
+    "LATITUDE",
+    "LONGITUDE",
+    "RATE",
+}
+_RATE_WORDS = {"GYRO", "GYR", "RATE"}
+
+
+def _reads_mail(arg: Any) -> bool:
+    """The argument is what a message carries (``msg.GetDouble()``, ``dval``)."""
+    t = text(arg)
+    return bool(re.search(r"GetDouble|GetString|dval|dfVal|dValue|atof|stod", t))
 
 
 def _is_moos_call(fn: Any) -> bool:
