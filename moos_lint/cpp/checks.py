@@ -64,24 +64,28 @@ def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
     )
 
 
-def pure_app_does_io(app: AppModel, sockets: bool = False) -> Iterator[Finding]:
+def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     name = app.process_name
-    if not app.is_app or not name or not re.match(r"^p[A-Z0-9_]", name):
+    if not app.is_app or not name or not re.match(r"^[pu][A-Z0-9_]", name):
         return
     uses = [u for u in app.io if u.device]
     termios = [u for u in app.io if u.kind == "termios"]
     if termios and any(u.kind == "serial" for u in uses):
         uses = [*uses, *termios]
-    if sockets and not name.startswith(MOOS_NETWORK_APPS):
+    bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in app.io)
+    if sockets and name.startswith("p") and not bridge:
         uses += [u for u in app.io if u.kind == "socket"]
     if not uses:
         return
     first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))
     kinds = sorted({u.detail for u in uses})
+    kind = "a `p` app" if name.startswith("p") else "a `u` app"
+    what = "device I/O" if all(u.kind != "socket" for u in uses) else "I/O outside the MOOSDB"
     yield (
         first.span,
-        f"{_app_label(app)} is a `p` app but does device I/O ({', '.join(kinds[:4])}): "
-        "an app that talks to hardware is an instrument, named with an `i` prefix",
+        f"{_app_label(app)} is {kind} but does {what} ({', '.join(kinds[:4])}): "
+        "an app that talks to a device, or to a vehicle or service in a protocol that is "
+        "not MOOS, is an interface app, named with an `i` prefix",
     )
 
 
@@ -96,7 +100,7 @@ def _valued(app: AppModel, pred) -> Iterator[tuple[Publication, Any]]:
 def _shown(p: Publication) -> str:
     if p.name.text is not None:
         return p.name.text
-    return f"{p.name.source.strip()} (…{p.name.suffix})"
+    return f"{p.name.suffix}` (named by `{p.name.source.strip()}"
 
 
 def _because(v: Any) -> str:

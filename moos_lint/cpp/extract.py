@@ -34,6 +34,8 @@ PREFIX_CALLS = {"strBegins", "find", "compare", "rfind", "starts_with", "MOOSStr
 IO_TYPES = re.compile(
     r"^(?:CMOOSSerialPort|CMOOSLinuxSerialPort|CMOOSNTSerialPort|SerialPort|QSerialPort|Serial)$"
 )
+#: a MOOS client of another community: a bridge's sockets carry MOOS itself
+MOOS_CLIENT_TYPES = re.compile(r"^(?:CMOOSCommClient|MOOSAsyncCommClient|CMOOSAsyncCommClient)$")
 SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
@@ -581,6 +583,8 @@ class Extractor:
             name = text(t)
             if IO_TYPES.match(name):
                 out.io.append(IOUse("serial", name, pf.spans.of(t)))
+            elif MOOS_CLIENT_TYPES.match(name):
+                out.io.append(IOUse("moos", name, pf.spans.of(t)))
             elif name in ("termios",):
                 out.io.append(IOUse("termios", name, pf.spans.of(t)))
             elif SOCKET_TYPES.search(name):

@@ -111,7 +111,8 @@ class ConfigParam:
 
 @dataclass(slots=True)
 class IOUse:
-    """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network."""
+    """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network
+    (``moos``: a client of another MOOS community, the I/O of a bridge)."""
 
     kind: str
     detail: str

@@ -271,8 +271,6 @@ def name_hint(name: str) -> AbstractValue:
         return AbstractValue(unit="deg", sense="heading", hint=True, why=(why,))
     if _DEG_NAME.search(base):
         return AbstractValue(unit="deg", hint=True, why=(why,))
-    if re.fullmatch(r"(?:\w*_)?yaw|\w*Yaw", base, re.I) and not re.search(r"rate|dot", base, re.I):
-        return AbstractValue(unit="rad", sense="yaw", hint=True, why=(f"`{name}` holds radians",))
     if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
     return UNKNOWN
@@ -574,7 +572,7 @@ class Evaluator:
             return UNKNOWN
         fact = facts.MAIL_UNITS.get(var)
         if fact is None:
-            return AbstractValue(why=(f"mail {var}",))
+            return UNKNOWN
         unit, sense, rng, sign = fact
         return AbstractValue(
             unit=unit,
@@ -866,10 +864,11 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     base = resolver(v.pending)
     if base is None or not base.known:
         base = name_hint(v.pending)  # a getter defined nowhere in the repository
-        if not base.known:
-            return UNKNOWN
     out = apply_ops(base, v.ops)
-    return replace(out, why=(*base.why, *v.why[1:])) if out.known else UNKNOWN
+    if not out.known:
+        return UNKNOWN
+    steps = v.why[1:] if base.known else tuple(s for _op, s in v.ops if isinstance(s, str) and s)
+    return replace(out, why=(*base.why, *steps))
 
 
 _DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{"
