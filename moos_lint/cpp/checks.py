@@ -199,9 +199,11 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
             why = f": {val.text} is more than 2π"  # type: ignore[union-attr]
             unit = "degrees"
         elif v is not None and v.unit in ("deg", "deg/s"):
-            if angles.is_rate_var(p.name.last) and not angles.is_other_angle_var(p.name.last):
-                if v.unit == "deg" and v.hint:
-                    continue
+            rate_only = angles.is_rate_var(p.name.last) and not angles.is_other_angle_var(
+                p.name.last
+            )
+            if rate_only and v.unit == "deg" and v.hint:
+                continue
             why = _because(v)
             unit = "degrees per second" if angles.is_rate_var(p.name.last) else "degrees"
         else:
@@ -260,6 +262,17 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def published_names(app: AppModel) -> Iterator[tuple[str, Span]]:
+    """The names an app publishes that are known statically, each once per place."""
+    seen = set()
+    for p in app.publications:
+        name = p.name.text
+        if not name or p.name.wildcard or (name, p.name_span.path, p.name_span.line) in seen:
+            continue
+        seen.add((name, p.name_span.path, p.name_span.line))
+        yield name, p.name_span
+
+
 def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterator[Finding]:
     """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR."""
     for p in app.publications:
@@ -268,8 +281,10 @@ def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterat
             continue
         word = word_of(name)
         if word:
+            key = p.name.config_key
+            where = f" (its default; the configuration key `{key}` may rename it)" if key else ""
             yield (
                 p.name_span,
-                f"`{name}` names the actuator `{word}`: MOOS actuators are "
+                f"`{name}`{where} names the actuator `{word}`: MOOS actuators are "
                 "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
             )

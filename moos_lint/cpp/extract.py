@@ -298,6 +298,11 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             if a.fn is not None and _declared_in(pf, a):
                 continue
             val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
+            if val is None and a.fn is not None:
+                key = _config_branch_key(pf, a)
+                if key is not None:  # the configuration may change it: the default stands
+                    t.config_keys.setdefault(a.target, key)
+                    continue
             t.assigns.setdefault(a.target, []).append(val)
         for name, args in pf.inits:
             vals = args.named_children
@@ -311,6 +316,24 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 if key is not None and member:
                     t.config_keys.setdefault(member, key.lower())
     return t
+
+
+def _config_branch_key(pf: ParsedFile, a: _Asg) -> str | None:
+    """The configuration key whose branch sets ``a`` (``if (param == "PREFIX") m_prefix = value;``)
+    in a start-up or configuration function, else None."""
+    fname = short(pf.function_name_of(a.node)).lower()
+    if not (fname == "onstartup" or re.search(r"config|param|startup|setparam", fname)):
+        return None
+    from moos_lint.cpp.values import _key_literal
+
+    p, child = a.node.parent, a.node
+    while p is not None and p.type != "function_definition":
+        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
+            lit = _key_literal(p.child_by_field_name("condition"))
+            if lit is not None:
+                return lit.lower()
+        p, child = p.parent, p
+    return None
 
 
 def _declared_in(pf: ParsedFile, a: _Asg) -> bool:
@@ -362,9 +385,12 @@ class Extractor:
             inner = [c for c in (idx.named_children if idx is not None else ())]
             key = strip_parens(inner[0]) if inner else None
             table = text(n.child_by_field_name("argument"))
-            if key is not None and key.type in ("identifier", "qualified_identifier"):
-                if re.search(r"name|var", table, re.I):
-                    return text(key).split("::")[-1]
+            if (
+                key is not None
+                and key.type in ("identifier", "qualified_identifier")
+                and re.search(r"name|var", table, re.I)
+            ):
+                return text(key).split("::")[-1]
         return ""
 
     def _config_key(self, n: Any) -> str | None:

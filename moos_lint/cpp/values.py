@@ -271,6 +271,10 @@ def name_hint(name: str) -> AbstractValue:
         return AbstractValue(unit="deg", sense="heading", hint=True, why=(why,))
     if _DEG_NAME.search(base):
         return AbstractValue(unit="deg", hint=True, why=(why,))
+    if re.search(r"ned|down", name, re.I) and re.search(
+        r"(?:^|[._>])(?:m_)?(?:pos_?)?(?:z|down|d)$", name, re.I
+    ):
+        return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z (positive down)",))
     if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
     return UNKNOWN
@@ -467,7 +471,17 @@ class Evaluator:
     def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
         op = text(n.child_by_field_name("operator"))
         left = self._eval(pf, n.child_by_field_name("left"), depth + 1)
-        right = self._eval(pf, n.child_by_field_name("right"), depth + 1)
+        rnode = strip(n.child_by_field_name("right"))
+        right = self._eval(pf, rnode, depth + 1)
+        if op in ("*", "/") and left.unit is None and rnode is not None:
+            # a raw reading scaled by a factor named in degrees per second (``raw / LSB_PER_DPS``)
+            rname = _target(rnode) if rnode.type != "number_literal" else ""
+            if rname and _RATE_DEG_NAME.search(rname):
+                return AbstractValue(
+                    unit="deg/s",
+                    hint=True,
+                    why=(f"scaled by `{rname}` (degrees per second) at {_at(pf, n)}",),
+                )
         if op in ("+", "-"):
             return add(left, right, op == "-")
         if op == "*":
@@ -556,9 +570,7 @@ class Evaluator:
                         continue
                     v = settle(self._eval(pf, expr, depth + 1))
                     if v.known and v.pending is None:
-                        v = v.because(
-                            f"{name}() returns {text(expr)[:50]} at {place(pf.path, r.start_point[0] + 1)}"
-                        )
+                        v = v.because(f"{name}() returns {_clip(text(expr))} at {_at(pf, r)}")
                     out = v if out is None else join(out, v)
         finally:
             self._stack.discard(key)
@@ -676,6 +688,10 @@ class Evaluator:
         return out
 
 
+def _at(pf: Any, n: Any) -> str:
+    return place(pf.path, n.start_point[0] + 1)
+
+
 def _clip(s: str, n: int = 48) -> str:
     s = " ".join(s.split())
     return s if len(s) <= n else s[: n - 1] + "…"
@@ -784,7 +800,7 @@ def _wrap_step(
             new = (min(lo, bound + step), math.inf)
     else:
         return None
-    why = f"wrapped by `{text(stmt).split(chr(10))[0][:40].strip()}` at {place(pf.path, stmt.start_point[0] + 1)}"
+    why = f"wrapped by `{_clip(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
     return (
         replace(base, range=new, const=None).because(why)
         if base.known
