@@ -98,9 +98,13 @@ def _valued(app: AppModel, pred) -> Iterator[tuple[Publication, Any]]:
 
 
 def _shown(p: Publication) -> str:
+    """The name as a message quotes it (with how it is built when only its end is known)."""
     if p.name.text is not None:
-        return p.name.text
-    return f"{p.name.suffix}` (named by `{p.name.source.strip()}"
+        return f"`{p.name.text}`"
+    source = " ".join(p.name.source.split())
+    if p.name.suffix in source:
+        return f"`{p.name.suffix}` (named by `{source}`)"
+    return f"`{source}` (a {angles.last_word(p.name.suffix)} by its index)"
 
 
 def _because(v: Any) -> str:
@@ -113,7 +117,7 @@ def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
             continue
         yield (
             p.value.span,  # type: ignore[union-attr]
-            f"`{_shown(p)}` is a heading turned into radians without the minus sign"
+            f"{_shown(p)} is a heading turned into radians without the minus sign"
             f"{_because(v)}; yaw is −heading·π/180 (heading turns clockwise, yaw "
             "counter-clockwise)",
         )
@@ -125,7 +129,7 @@ def heading_in_radians(app: AppModel) -> Iterator[Finding]:
             continue
         yield (
             p.value.span,  # type: ignore[union-attr]
-            f"`{_shown(p)}` is published in radians{_because(v)}: "
+            f"{_shown(p)} is published in radians{_because(v)}: "
             "headings are degrees, 0 = north, clockwise",
         )
 
@@ -141,7 +145,7 @@ def depth_z_sign(app: AppModel) -> Iterator[Finding]:
             what = "a Z (positive up) without negation: depth is down, so depth = −Z"
         else:
             continue
-        yield (p.value.span, f"`{_shown(p)}` is published from {what}{_because(v)}")  # type: ignore[union-attr]
+        yield (p.value.span, f"{_shown(p)} is published from {what}{_because(v)}")  # type: ignore[union-attr]
 
 
 def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
@@ -150,7 +154,7 @@ def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
             continue
         yield (
             p.value.span,  # type: ignore[union-attr]
-            f"`{_shown(p)}` is published in radians{_because(v)}: "
+            f"{_shown(p)} is published in radians{_because(v)}: "
             "latitude and longitude are decimal degrees",
         )
 
@@ -161,13 +165,13 @@ def yaw_in_degrees(app: AppModel) -> Iterator[Finding]:
         if angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
             yield (
                 val.span,  # type: ignore[union-attr]
-                f"`{_shown(p)}` is published as {val.text}, more than 2π: "  # type: ignore[union-attr]
+                f"{_shown(p)} is published as {val.text}, more than 2π: "  # type: ignore[union-attr]
                 "a yaw is in radians",
             )
         elif v is not None and v.unit == "deg":
             yield (
                 val.span,  # type: ignore[union-attr]
-                f"`{_shown(p)}` is published in degrees{_because(v)}: a yaw is in radians",
+                f"{_shown(p)} is published in degrees{_because(v)}: a yaw is in radians",
             )
 
 
@@ -181,7 +185,7 @@ def angle_not_wrapped(app: AppModel) -> Iterator[Finding]:
 
         yield (
             p.value.span,  # type: ignore[union-attr]
-            f"`{_shown(p)}` lies in {range_text(v.range, v.unit)}{_because(v)}: "
+            f"{_shown(p)} lies in {range_text(v.range, v.unit)}{_because(v)}: "
             "angles are wrapped to ±π (MOOS_ANGLE_WRAP)",
         )
 
@@ -210,7 +214,7 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
             continue
         yield (
             val.span,  # type: ignore[union-attr]
-            f"`{_shown(p)}` is published in {unit}{why}: "
+            f"{_shown(p)} is published in {unit}{why}: "
             "angles other than heading are radians (rates radians per second)",
         )
 

@@ -390,7 +390,8 @@ class Extractor:
                 and key.type in ("identifier", "qualified_identifier")
                 and re.search(r"name|var", table, re.I)
             ):
-                return text(key).split("::")[-1]
+                enum = text(key).split("::")[-1]
+                return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", enum).upper()
         return ""
 
     def _config_key(self, n: Any) -> str | None:

@@ -81,7 +81,7 @@ NMEA_SENTENCES = (
 )
 
 #: Calls that turn text into a number.
-TEXT_TO_NUMBER = {"atof", "stod", "strtod", "stof", "strtof"}
+TEXT_TO_NUMBER = {"atof", "stod", "strtod", "stof", "strtof", "stold", "strtold"}
 
 #: Degrees to radians and back as plain numbers.
 DEG2RAD = math.pi / 180.0

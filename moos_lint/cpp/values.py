@@ -41,6 +41,8 @@ class AbstractValue:
     pending: str | None = None  # the function whose return this is, to resolve later
     ops: tuple[tuple[str, Any], ...] = ()  # applied to the pending value, in order
     hint: bool = False  # the unit comes from a name or a comment only
+    #: the array an element was read from (``data[0]``), to judge its siblings alike
+    origin: str | None = None
 
     @property
     def known(self) -> bool:
@@ -61,20 +63,20 @@ def constant(c: float, why: str = "") -> AbstractValue:
     return AbstractValue(const=c, range=(c, c), why=(why,) if why else ())
 
 
-def settle(v: AbstractValue) -> AbstractValue:
+def settle(v: AbstractValue, why: str = "") -> AbstractValue:
     """Apply a pending numeric factor: a degree/radian conversion or a loss of the unit."""
     s = v.scale
     if s == 1.0 or v.const is not None:
         return v
     v = replace(v, scale=1.0)
+    if s < 0:
+        return neg(settle(replace(v, scale=-s), why))
+    if abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG:
+        return to_deg(v, why)
+    if abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD:
+        return to_rad(v, why)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("scale", s)))
-    if s < 0:
-        return neg(settle(replace(v, scale=-s)))
-    if abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG:
-        return to_deg(v, "")
-    if abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD:
-        return to_rad(v, "")
     rng = (v.range[0] * s, v.range[1] * s) if v.range else None
     return replace(v, unit=None, range=rng, sense=None, hint=False, why=())
 
@@ -145,8 +147,9 @@ def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
     if b.const is not None and a.const is None:  # a constant (an initial 0) takes any unit
         rng = (min(a.range[0], b.const), max(a.range[1], b.const)) if a.range else None
         return replace(a, range=rng)
+    origin = a.origin if a.origin == b.origin else None
     if a.pending is not None or b.pending is not None:
-        return a if a == b else UNKNOWN
+        return a if a == b else replace(UNKNOWN, origin=origin)
     if a.const is not None and b.const is not None:
         return (
             constant(a.const)
@@ -163,6 +166,7 @@ def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
         sign=a.sign if a.sign == b.sign else None,
         why=a.why if a.unit == b.unit else (),
         hint=a.hint and b.hint,
+        origin=origin,
     )
 
 
@@ -251,6 +255,7 @@ _RATE_DEG_NAME = re.compile(r"dps|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec", re.I
 _DEG_NAME = re.compile(r"(?:^|_)deg(?:ree)?s?(?:_|$)|[a-z0-9]Deg(?:ree)?s?(?:[A-Z_]|$)|degree")
 _HEADING_NAME = re.compile(r"heading|hdg|compass", re.I)
 _DEPTH_NAME = re.compile(r"depth", re.I)
+_SIGN_NAME = re.compile(r"polarity|(?:^|_)sign(?:_|$)|Sign$|(?:^|_)dir(?:ection)?(?:_|$)", re.I)
 _COMMENT_UNIT = re.compile(
     r"//.*?\b(deg(?:rees?)?\s*/\s*s(?:ec)?|rad(?:ians?)?\s*/\s*s(?:ec)?|"
     r"deg(?:rees?)?|rad(?:ians?)?)\b|//.*?(°)",
@@ -453,7 +458,18 @@ class Evaluator:
         if t == "call_expression":
             return self._call(pf, n, depth)
         if t == "subscript_expression":
-            return self._eval(pf, n.child_by_field_name("argument"), depth + 1)
+            arr = strip(n.child_by_field_name("argument"))
+            v = self._eval(pf, arr, depth + 1)
+            idx = n.child_by_field_name("indices")
+            key = _target(arr) if arr is not None else ""
+            if (
+                key
+                and idx is not None
+                and all(c.type == "number_literal" for c in idx.named_children)
+            ):
+                fnode = pf.function_of(n)
+                v = replace(v, origin=f"{pf.path}#{fnode.id if fnode else 0}#{key}")
+            return v
         return UNKNOWN
 
     def _binary(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -463,9 +479,7 @@ class Evaluator:
             abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG
             or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
         ):
-            v = settle(v)
-            if v.pending is None:
-                v = v.because(f"{_clip(text(n))} at {place(pf.path, n.start_point[0] + 1)}")
+            v = settle(v, f"{_clip(text(n))} at {_at(pf, n)}")
         return v
 
     def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -485,6 +499,17 @@ class Evaluator:
         if op in ("+", "-"):
             return add(left, right, op == "-")
         if op == "*":
+            # a sign factor (``m_RollPolarity * roll``) keeps the unit, not the sense
+            lnode = strip(n.child_by_field_name("left"))
+            for factor, other in ((lnode, right), (rnode, left)):
+                fname = _target(factor) if factor is not None else ""
+                if fname and _SIGN_NAME.search(fname) and other.const is None:
+                    o = settle(other)
+                    rng = None
+                    if o.range:
+                        m = max(abs(o.range[0]), abs(o.range[1]))
+                        rng = (-m, m)
+                    return replace(o, sense=None, sign=None, range=rng)
             if right.const is not None:
                 return _scaled(left, right.const)
             if left.const is not None:
@@ -982,10 +1007,45 @@ def link_values(apps: list[Any], paths: list[str]) -> None:
             if v.unit is None and v.const is None and pub.name.text in consumers:
                 folder, span, helper = consumers[pub.name.text]
                 if folder != app.folder:
-                    v = AbstractValue(
+                    v = replace(
+                        v,
                         unit="deg",
                         why=(
                             f"{place(span.path, span.line)} converts it with {helper}() on arrival",
                         ),
                     )
             pub.value.abstract = v
+    _siblings(apps)
+
+
+def _siblings(apps: list[Any]) -> None:
+    """Angles read from the same array as one proved in degrees are degrees too.
+
+    A device reports its Euler angles in one unit: when one of ``data[0]``,
+    ``data[1]``, ``data[2]`` is shown to be degrees (a consumer converts it), so are
+    the others published from that array.
+    """
+    from moos_lint.cpp.angles import is_heading_var, is_other_angle_var, is_yaw_var
+
+    def angle(name: str) -> bool:
+        return is_yaw_var(name) or is_other_angle_var(name)
+
+    proved: dict[str, tuple[str, AbstractValue]] = {}
+    pubs = [p for a in apps for p in a.publications if p.value is not None and p.value.abstract]
+    for p in pubs:
+        v = p.value.abstract
+        name = p.name.last
+        if v.origin and v.unit == "deg" and not v.hint and (angle(name) or is_heading_var(name)):
+            proved.setdefault(v.origin, (name, v))
+    for p in pubs:
+        v = p.value.abstract
+        if v.origin in proved and v.unit is None and v.const is None and angle(p.name.last):
+            other, ov = proved[v.origin]
+            if other == p.name.last:
+                continue
+            array = v.origin.rsplit("#", 1)[-1]
+            p.value.abstract = replace(
+                v,
+                unit="deg",
+                why=(f"read from the same `{array}[]` as `{other}`", *ov.why[-1:]),
+            )
