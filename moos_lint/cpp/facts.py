@@ -89,3 +89,8 @@ RAD2DEG = 180.0 / math.pi
 
 #: Names of π and 2π in C/C++ code (<cmath>, MOOS's ``PI`` and ``TWO_PI``).
 PI_NAMES = {"M_PI": math.pi, "PI": math.pi, "pi": math.pi, "TWO_PI": 2 * math.pi}
+
+#: Any other conversion function named for what it does (``deg2rad``, ``XsMath_rad2deg``,
+#: ``radToDeg``): the name is the evidence.
+DEG2RAD_NAME = r"(?i)^(?:\w*_)?deg(?:rees?)?_?(?:2|to)_?rad(?:ians?)?$"
+RAD2DEG_NAME = r"(?i)^(?:\w*_)?rad(?:ians?)?_?(?:2|to)_?deg(?:rees?)?$"

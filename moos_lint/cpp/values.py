@@ -546,6 +546,10 @@ class Evaluator:
             if sense is not None and v.pending is None:
                 v = replace(v, sense=sense if sense != "math" else "math")
             return v
+        if args and (re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name)):
+            arg = self._eval(pf, args[0], depth + 1)
+            why = f"{name}() at {at}"
+            return to_rad(arg, why) if re.match(facts.DEG2RAD_NAME, name) else to_deg(arg, why)
         trig = bare[:-1] if bare.endswith("f") and bare[:-1] in facts.INVERSE_TRIG else bare
         if trig in facts.INVERSE_TRIG:
             return AbstractValue(
