@@ -19,11 +19,11 @@ reported. MOOS-IvP's own missions use only standard actuator names.
 
 In C++, it checks the names an app publishes with `Notify` when they are
 known statically (literals, string constants, `#define` macros, a member with
-a default that a configuration key may change). There any published name with
-an actuator word is a command unless a word says it is a report
-(`MOTOR_TEMPERATURE`, `SERVO_CURRENT`, `REPORTED_MOTOR`): per-motor and
-per-servo outputs (`MOTOR_LEFT`, `SERVO_2_PWM`) and control surfaces
-(`DESIRED_AILERON`) are commands by any shape.
+a default that a configuration key may change). There a published name with
+an actuator word is also a command when another word picks one actuator or
+a command value (`MOTOR_LEFT`, `SERVO_2_PWM`, `PROP_PORT`, `FIN_SETPOINT`),
+unless a word says it is a report (`MOTOR_TEMPERATURE`, `SERVO_CURRENT`,
+`REPORTED_MOTOR_LEFT`, `CONSO_PROP`).
 
 ## Why is this bad?
 The MOOS Conventions (section 4.3) know three actuators: THRUST, RUDDER and
@@ -88,6 +88,39 @@ REPORT_WORDS = {
     "CONFIG",
     "ENABLED",
     "DEBUG",
+    "CONSO",
+    "CONSUMPTION",
+    "ENERGY",
+    "LOAD",
+    "USAGE",
+}
+#: words that make a name with an actuator word a command to one actuator
+#: (``MOTOR_LEFT``, ``SERVO_2_PWM``, ``PROP_PORT``)
+COMMAND_SHAPE_WORDS = {
+    "LEFT",
+    "RIGHT",
+    "L",
+    "R",
+    "PORT",
+    "STBD",
+    "STARBOARD",
+    "FRONT",
+    "REAR",
+    "AFT",
+    "FWD",
+    "FORE",
+    "VERTICAL",
+    "HORIZONTAL",
+    "LATERAL",
+    "PWM",
+    "SET",
+    "SETPOINT",
+    "OUT",
+    "OUTPUT",
+    "DEMAND",
+    "REF",
+    "PERCENT",
+    "PCT",
 }
 
 
@@ -101,7 +134,11 @@ def actuator_word(name: str, words: set[str], any_shape: bool = False) -> str | 
     if not parts:
         return None
     is_command = name.upper().startswith("DESIRED_") or any(p in _COMMAND_WORDS for p in parts)
-    if any_shape and not any(p in REPORT_WORDS for p in parts):
+    if (
+        any_shape
+        and not any(p in REPORT_WORDS for p in parts)
+        and any(p in COMMAND_SHAPE_WORDS or p.isdigit() for p in parts)
+    ):
         is_command = True
     if not is_command or any(p.startswith(STANDARD) for p in parts):
         return None
