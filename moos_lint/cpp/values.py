@@ -16,7 +16,6 @@ known facts.
 from __future__ import annotations
 
 import math
-import os
 import re
 from dataclasses import dataclass, replace
 from typing import Any
@@ -514,13 +513,13 @@ class Evaluator:
                 return _scaled(left, right.const)
             if left.const is not None:
                 return _scaled(right, left.const)
-            return _product(left, right)
+            return UNKNOWN  # a product of two quantities: no unit we can name
         if op == "/":
             if right.const is not None and right.const != 0:
                 return _scaled(left, 1.0 / right.const)
             if left.const is not None and right.const is not None:
                 return UNKNOWN
-            return _product(left, AbstractValue())
+            return UNKNOWN
         return UNKNOWN
 
     def _call(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -730,11 +729,6 @@ def _scaled(v: AbstractValue, c: float) -> AbstractValue:
     if v.const is not None:
         return constant(v.const * c)
     return replace(v, scale=v.scale * c)
-
-
-def _product(a: AbstractValue, b: AbstractValue) -> AbstractValue:
-    a, b = settle(a), settle(b)
-    return AbstractValue()
 
 
 def _target(n: Any) -> str:
@@ -977,10 +971,6 @@ class RepositoryResolver:
             pf = None
         self.parsed[path] = pf
         return pf
-
-
-def folder_of(path: str) -> str:
-    return os.path.dirname(path)
 
 
 def link_values(apps: list[Any], paths: list[str]) -> None:

@@ -15,7 +15,9 @@ value (a literal above 2π, a radians-to-degrees conversion, a library getter
 or device value in degrees, an angle read from the same device array as one
 a consumer converts from degrees), and of an angular rate (`*_GYRO_*`,
 `YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a
-`*_DPS` scale). The value is read by moos-lint's value analysis of C++ (unit, sense, range
+`*_DPS` scale).
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

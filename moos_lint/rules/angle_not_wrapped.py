@@ -14,7 +14,9 @@ known not to be ±π: a heading in [0, 360) turned into a yaw
 (`-heading*M_PI/180` without `angle180`), a yaw shifted by π, a one-sided
 wrap (`if (yaw < 0) yaw += 2*M_PI`) or `fmod(yaw, 2*M_PI)` into [0, 2π).
 Wraps are read from `MOOS_ANGLE_WRAP`, `radAngleWrap`, `angle180`, wrap
-loops and `if`s, and `fmod`. The value is read by moos-lint's value analysis of C++ (unit, sense, range
+loops and `if`s, and `fmod`.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

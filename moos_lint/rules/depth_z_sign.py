@@ -6,7 +6,9 @@ the value is positive down without a minus sign: a depth (`m_depth`,
 `record.getDepth()`, `NAV_DEPTH` read by mail) or the z of a NED frame
 (`m_ned.z`); and of a variable whose last word is `DEPTH` published from
 `NAV_Z` as is. A frame used inside the process is free: only what is
-published counts. The value is read by moos-lint's value analysis of C++ (unit, sense, range
+published counts.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

@@ -5,7 +5,9 @@ Reports `Notify` of a variable whose last word is `HEADING` or `HDG`
 (`NAV_HEADING`, `DESIRED_HEADING`, `GPS_HDG`) with a value in radians: an
 `atan2`/`atan`/`asin`/`acos` result, a degrees-to-radians conversion, a
 `NAV_YAW` read by mail or a `*_rad` name, with no conversion back to degrees
-(`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`). The value is read by moos-lint's value analysis of C++ (unit, sense, range
+(`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`).
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

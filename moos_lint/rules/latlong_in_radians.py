@@ -4,7 +4,9 @@
 Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
 `LATITUDE` or `LONGITUDE` with a value in radians: converted to radians
 (`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, or a variable
-named `*_rad`, with no conversion back to degrees. The value is read by moos-lint's value analysis of C++ (unit, sense, range
+named `*_rad`, with no conversion back to degrees.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

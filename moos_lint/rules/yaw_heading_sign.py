@@ -6,7 +6,9 @@ turned into radians as `heading*M_PI/180`, `degToRadians(heading)` or
 `MOOSDeg2Rad(hdg)` with no minus sign, also when the conversion is steps away
 (a member set in one method and published in another). A heading is a value
 read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
-heading. The value is read by moos-lint's value analysis of C++ (unit, sense, range
+heading.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in

@@ -17,7 +17,9 @@ at run time whose last word is YAW) with a value in degrees: a literal above
 2π (with `--cpp-backend clang`, also a constant expression that folds above
 2π), a conversion to degrees (`* 180 / M_PI`, `radToDegrees`), a heading or
 `*_deg` value, an NMEA field, or a value that a consumer converts with
-`MOOSDeg2Rad` on arrival. The value is read by moos-lint's value analysis of C++ (unit, sense, range
+`MOOSDeg2Rad` on arrival.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in
