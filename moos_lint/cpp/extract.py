@@ -43,8 +43,18 @@ SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
 #: conversions from degrees that tell what a variable read by mail carries
 FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
+#: ``Set`` on a table of published ``CMOOSVariable``s (published by ``PublishFreshMOOSVariables``)
+VARIABLE_SET = {"Set"}
 CALLED = (
-    PUBLISH | SUBSCRIBE | {"Run"} | CONFIG_CALLS | BAUD_CALLS | SOCKET_CALLS | STRCMP | FROM_DEGREES
+    PUBLISH
+    | SUBSCRIBE
+    | {"Run"}
+    | CONFIG_CALLS
+    | BAUD_CALLS
+    | SOCKET_CALLS
+    | STRCMP
+    | FROM_DEGREES
+    | VARIABLE_SET
 )
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
@@ -649,6 +659,8 @@ class Extractor:
                     function=self._fn_of(call),
                 )
             )
+        elif name in VARIABLE_SET and argv and fn.type == "field_expression":
+            self._variable_set(call, fn, argv)
         elif name in FROM_DEGREES and argv:
             from moos_lint.cpp.values import mail_key_of
 
@@ -690,6 +702,33 @@ class Extractor:
                     prefix=name == "strBegins",
                     suffix=name == "strEnds",
                 )
+
+    def _variable_set(self, call: Any, fn: Any, argv: list[Any]) -> None:
+        """``m_PublishedVars[NAV_YAW]->Set(v, t)`` (or through a local pointer to it): a
+        published ``CMOOSVariable`` named, as far as we know, by its table index."""
+        obj = strip_parens(fn.child_by_field_name("argument"))
+        if obj is not None and obj.type == "identifier":
+            local = self._local_before(call, text(obj))
+            obj = strip_parens(local.rhs) if local is not None and local.op == "=" else None
+        if obj is None or obj.type != "subscript_expression":
+            return
+        if not re.search(r"publish", text(obj.child_by_field_name("argument")), re.I):
+            return
+        suffix = self._suffix(obj)
+        if not suffix or not valued_name(suffix):
+            return
+        value = self.value(argv[0])
+        if self.evaluator is not None:
+            value.abstract = self.evaluator.of(self.pf, argv[0])
+        self.out.publications.append(
+            Publication(
+                name=Name(source=text(obj), suffix=suffix),
+                value=value,
+                span=self.pf.spans.of(call),
+                name_span=self.pf.spans.of(obj),
+                function=self._fn_of(call),
+            )
+        )
 
     def _comparison(self, cmp: Any, left: Any, right: Any) -> None:
         lit = string_value(right)

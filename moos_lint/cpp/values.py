@@ -361,6 +361,21 @@ class Folder:
                 if name:
                     self.functions.setdefault(name, []).append((pf, fn))
         self.memo: dict[tuple, AbstractValue] = {}
+        self._calls: dict[str, list[tuple[Any, Any]]] | None = None
+
+    def calls(self, name: str) -> list[tuple[Any, Any]]:
+        """The calls of function ``name`` in the folder (indexed on first use)."""
+        if self._calls is None:
+            self._calls = {}
+            for pf in self.files:
+                stack = [pf.tree.root_node]
+                while stack:
+                    n = stack.pop()
+                    if n.type == "call_expression":
+                        fn = n.child_by_field_name("function")
+                        self._calls.setdefault(callee_name(fn), []).append((pf, n))
+                    stack.extend(n.named_children)
+        return self._calls.get(name, [])
 
 
 def _declared_local(pf: Any, a: Any) -> bool:
@@ -399,6 +414,24 @@ def _is_param(fn: Any, key: str) -> bool:
         if d is not None and text(d) == key:
             return True
     return False
+
+
+def _param_index(fn: Any, key: str) -> int | None:
+    decl = _function_declarator(fn)
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    plist = [
+        p for p in (params.named_children if params is not None else ()) if p.type != "comment"
+    ]
+    for i, p in enumerate(plist):
+        d = p.child_by_field_name("declarator")
+        while d is not None and d.type != "identifier":
+            nxt = d.child_by_field_name("declarator")
+            if nxt is None:
+                nxt = next((c for c in d.named_children if c.type == "identifier"), None)
+            d = nxt
+        if d is not None and text(d) == key:
+            return i
+    return None
 
 
 def _inside(n: Any, outer: Any) -> bool:
@@ -651,14 +684,18 @@ class Evaluator:
             a for a in cands if a.node.start_byte < use.start_byte and not _inside(use, a.node)
         ]
         if not before:
-            if declared or _is_param(fnode, key):
-                return name_hint(key) if not declared else UNKNOWN
+            if declared:
+                return UNKNOWN
+            if _is_param(fnode, key):
+                return self._param(fnode, key, depth)
             return None  # a member or a global
         state: AbstractValue | None = None
         for a in before:
             cond = _guard(a.node, fnode)
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
+                if v.pending is not None and name_hint(key).known:
+                    v = name_hint(key)  # an opaque getter kept in a variable that names its unit
                 if cond is not None and state is not None and not _inside(use, cond):
                     state = join(state, v)
                 else:
@@ -669,6 +706,34 @@ class Evaluator:
             )
             state = self._compound(pf, a, base, cond, key, depth)
         return state
+
+    def _param(self, fnode: Any, key: str, depth: int) -> AbstractValue:
+        """A parameter: what the folder's calls of the function pass for it."""
+        name = _function_short_name(fnode)
+        index = _param_index(fnode, key)
+        pkey = ("param", name, index)
+        if index is None or pkey in self._stack or depth > MAX_DEPTH // 2:
+            return name_hint(key)
+        self._stack.add(pkey)
+        out: AbstractValue | None = None
+        try:
+            for cpf, call in self.folder.calls(name):
+                args = [
+                    a
+                    for a in call.child_by_field_name("arguments").named_children
+                    if a.type != "comment"
+                ]
+                if index < len(args):
+                    v = settle(self._eval(cpf, args[index], depth + 1))
+                    if not v.known:
+                        continue  # a call we cannot read says nothing against the others
+                    v = v.because(f"passed to {name}() at {_at(cpf, call)}")
+                    out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(pkey)
+        if out is None or not (out.known or out.pending or out.const is not None):
+            return name_hint(key)
+        return out
 
     def _compound(
         self, pf: Any, a: Any, base: AbstractValue, cond: Any, key: str, depth: int
