@@ -108,7 +108,8 @@ def _shown(p: Publication) -> str:
 
 
 def _because(v: Any) -> str:
-    return f": {v.explanation}" if v is not None and v.why else ""
+    """The chain of reasons, source first, as a parenthesis."""
+    return f" ({v.explanation})" if v is not None and v.why else ""
 
 
 def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
@@ -140,12 +141,15 @@ def depth_z_sign(app: AppModel) -> Iterator[Finding]:
             continue
         name = p.name.last
         if angles.is_z_var(name) and v.sign == "down":
-            what = "a depth (positive down) without negation: Z is up, so Z = −depth"
+            what, rule = "a depth (positive down)", "Z is up, so Z = −depth"
         elif angles.is_depth_var(name) and v.sign == "up" and not v.hint:
-            what = "a Z (positive up) without negation: depth is down, so depth = −Z"
+            what, rule = "a Z (positive up)", "depth is down, so depth = −Z"
         else:
             continue
-        yield (p.value.span, f"{_shown(p)} is published from {what}{_because(v)}")  # type: ignore[union-attr]
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published from {what} without negation{_because(v)}: {rule}",
+        )
 
 
 def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
@@ -200,7 +204,7 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, lambda n: angles.is_other_angle_var(n) or angles.is_rate_var(n)):
         val = p.value
         if angles.is_other_angle_var(p.name.last) and angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
-            why = f": {val.text} is more than 2π"  # type: ignore[union-attr]
+            why = f" ({val.text} is more than 2π)"  # type: ignore[union-attr]
             unit = "degrees"
         elif v is not None and v.unit in ("deg", "deg/s"):
             rate_only = angles.is_rate_var(p.name.last) and not angles.is_other_angle_var(
@@ -212,11 +216,12 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
             unit = "degrees per second" if angles.is_rate_var(p.name.last) else "degrees"
         else:
             continue
-        yield (
-            val.span,  # type: ignore[union-attr]
-            f"{_shown(p)} is published in {unit}{why}: "
-            "angles other than heading are radians (rates radians per second)",
+        rule = (
+            "angular rates are radians per second"
+            if unit == "degrees per second"
+            else "angles other than heading are radians"
         )
+        yield (val.span, f"{_shown(p)} is published in {unit}{why}: {rule}")  # type: ignore[union-attr]
 
 
 def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:

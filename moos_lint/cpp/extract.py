@@ -24,6 +24,7 @@ from moos_lint.cpp.model import (
     Subscription,
     Value,
 )
+from moos_lint.cpp.names import key_literal, mail_key_of, valued_name
 from moos_lint.diagnostics import Span
 
 PUBLISH = {"Notify"}
@@ -334,12 +335,10 @@ def _config_branch_key(pf: ParsedFile, a: _Asg) -> str | None:
     fname = short(pf.function_name_of(a.node)).lower()
     if not (fname == "onstartup" or re.search(r"config|param|startup|setparam", fname)):
         return None
-    from moos_lint.cpp.values import _key_literal
-
     p, child = a.node.parent, a.node
     while p is not None and p.type != "function_definition":
         if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
-            lit = _key_literal(p.child_by_field_name("condition"))
+            lit = key_literal(p.child_by_field_name("condition"))
             if lit is not None:
                 return lit.lower()
         p, child = p.parent, p
@@ -662,8 +661,6 @@ class Extractor:
         elif name in VARIABLE_SET and argv and fn.type == "field_expression":
             self._variable_set(call, fn, argv)
         elif name in FROM_DEGREES and argv:
-            from moos_lint.cpp.values import mail_key_of
-
             var = mail_key_of(call)
             if var is not None and _reads_mail(argv[0]):
                 out.consumed_degrees.append((var, spans.of(call), name))
@@ -864,32 +861,6 @@ def _top_of(n: Any, start_byte: int) -> Any:
     while p.parent is not None and p.parent.start_byte >= start_byte:
         p = p.parent
     return p
-
-
-def valued_name(name: str) -> bool:
-    """Whether the analysis computes the value published under ``name`` (by its last word)."""
-    from moos_lint.cpp.angles import last_word, words
-
-    w = last_word(name)
-    return w in _VALUED_WORDS or any(x.upper() in _RATE_WORDS for x in words(name))
-
-
-_VALUED_WORDS = {
-    "YAW",
-    "HEADING",
-    "HDG",
-    "PITCH",
-    "ROLL",
-    "Z",
-    "DEPTH",
-    "LAT",
-    "LON",
-    "LONG",
-    "LATITUDE",
-    "LONGITUDE",
-    "RATE",
-}
-_RATE_WORDS = {"GYRO", "GYR", "RATE"}
 
 
 def _reads_mail(arg: Any) -> bool:

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from moos_lint.cpp import facts
+from moos_lint.cpp.names import callee_name, mail_key_of, node_text, strip
 
 Range = tuple[float, float]
 _EPS = 1e-3
@@ -52,10 +53,29 @@ class AbstractValue:
 
     @property
     def explanation(self) -> str:
-        return "; ".join(self.why[-3:])
+        """The reasons, source first; of several steps at one place, the last says it all."""
+        steps = [w for w in self.why if w]
+        places = [_place_of(w) for w in steps]
+        steps = [  # "`x` set at L" says less than another step at L (a mail read, a getter)
+            w
+            for w, p in zip(steps, places, strict=True)
+            if not (" set at " in w and places.count(p) > 1)
+        ]
+        kept = [
+            w
+            for i, w in enumerate(steps)
+            if not (_place_of(w) and any(_place_of(x) == _place_of(w) for x in steps[i + 1 :]))
+        ]
+        return "; ".join(kept[-3:])
 
 
 UNKNOWN = AbstractValue()
+_AT = re.compile(r" at (\S+:\d+)\b")
+
+
+def _place_of(step: str) -> str | None:
+    m = _AT.search(step)
+    return m.group(1) if m else None
 
 
 def constant(c: float, why: str = "") -> AbstractValue:
@@ -96,7 +116,7 @@ def to_rad(v: AbstractValue, why: str) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("rad", why)))
-    unit = "rad/s" if v.unit in ("deg/s", "rad/s") else "rad"
+    unit: str | None = "rad/s" if v.unit in ("deg/s", "rad/s") else "rad"
     if v.unit in ("rad", "rad/s"):
         unit = None  # converting radians again: nothing certain
     rng = (v.range[0] * facts.DEG2RAD, v.range[1] * facts.DEG2RAD) if v.range else None
@@ -108,7 +128,7 @@ def to_deg(v: AbstractValue, why: str) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("deg", why)))
-    unit = "deg/s" if v.unit in ("rad/s", "deg/s") else "deg"
+    unit: str | None = "deg/s" if v.unit in ("rad/s", "deg/s") else "deg"
     if v.unit in ("deg", "deg/s"):
         unit = None
     rng = (v.range[0] * facts.RAD2DEG, v.range[1] * facts.RAD2DEG) if v.range else None
@@ -278,7 +298,7 @@ def name_hint(name: str) -> AbstractValue:
     if re.search(r"ned|down", name, re.I) and re.search(
         r"(?:^|[._>])(?:m_)?(?:pos_?)?(?:z|down|d)$", name, re.I
     ):
-        return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z (positive down)",))
+        return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z, positive down",))
     if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
     return UNKNOWN
@@ -300,30 +320,10 @@ def comment_hint(line: str) -> AbstractValue:
 # -- the evaluator ------------------------------------------------------------
 
 
-def text(n: Any) -> str:
-    return n.text.decode("utf-8", "replace") if n is not None else ""
-
-
-def strip(n: Any) -> Any:
-    while n is not None and n.type == "parenthesized_expression" and n.named_child_count == 1:
-        n = n.named_children[0]
-    return n
-
-
-def callee_name(fn: Any) -> str:
-    t = fn.type
-    if t == "identifier":
-        return text(fn)
-    if t == "field_expression":
-        return text(fn.child_by_field_name("field"))
-    if t in ("qualified_identifier", "template_function"):
-        name = fn.child_by_field_name("name")
-        return callee_name(name) if name is not None else ""
-    return ""
+text = node_text
 
 
 _NMEA = re.compile(rb'"\$?(?:[A-Z]{2})?(?:' + "|".join(facts.NMEA_SENTENCES).encode() + rb')[",]')
-_MAIL_CMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "IsName"}
 _PASS_THROUGH = {
     "round",
     "floor",
@@ -593,7 +593,9 @@ class Evaluator:
             if c is None or c <= 0:
                 return replace(x, range=None)
             rng = (-c / 2, c / 2) if bare == "remainder" else (0.0, c)
-            return wrapped(x, rng, None, f"{bare}(·, {c:g}) at {at}")
+            k = c / math.pi
+            shown = f"{round(k)}π" if abs(k - round(k)) < _EPS and round(k) > 1 else f"{c:g}"
+            return wrapped(x, rng, None, f"{bare}(·, {shown}) at {at}")
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
         if name in facts.TEXT_TO_NUMBER:
@@ -602,7 +604,7 @@ class Evaluator:
                     unit="deg",
                     hint=True,
                     why=(
-                        f"an NMEA field read with {name}() at {at} (NMEA 0183 angles are degrees)",
+                        f"an NMEA field read with {name}() at {at}; NMEA 0183 angles are degrees",
                     ),
                 )
             return UNKNOWN
@@ -786,7 +788,13 @@ def _at(pf: Any, n: Any) -> str:
 
 
 def _clip(s: str, n: int = 48) -> str:
+    """An expression for a message: call arguments elided, one line, at most ``n`` characters."""
     s = " ".join(s.split())
+    for _ in range(8):
+        brief = re.sub(r"(\w)\((?!\.\.\.\))[^()]+\)", r"\1(...)", s)
+        if brief == s:
+            break
+        s = brief
     return s if len(s) <= n else s[: n - 1] + "…"
 
 
@@ -916,46 +924,6 @@ def _define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | 
         if a is not None and b is not None:
             return a * b if m.group(2) == "*" else (a / b if b else None)
     return None
-
-
-def mail_key_of(n: Any) -> str | None:
-    """The MOOS variable a ``msg.GetDouble()`` reads: the literal its branch compares the key to."""
-    p, child = n.parent, n
-    while p is not None and p.type != "function_definition":
-        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
-            lit = _key_literal(p.child_by_field_name("condition"))
-            if lit is not None:
-                return lit
-        p, child = p.parent, p
-    return None
-
-
-def _key_literal(cond: Any) -> str | None:
-    if cond is None:
-        return None
-    stack = [cond]
-    while stack:
-        x = stack.pop()
-        if x.type == "binary_expression" and text(x.child_by_field_name("operator")) == "==":
-            for side in ("left", "right"):
-                s = strip(x.child_by_field_name(side))
-                if s is not None and s.type == "string_literal":
-                    return _literal(s)
-        if (
-            x.type == "call_expression"
-            and callee_name(x.child_by_field_name("function")) in _MAIL_CMP
-        ):
-            for a in x.child_by_field_name("arguments").named_children:
-                if a.type == "string_literal":
-                    return _literal(a)
-        if x.type in ("binary_expression", "parenthesized_expression", "condition_clause"):
-            stack.extend(x.named_children)
-    return None
-
-
-def _literal(s: Any) -> str | None:
-    parts = [text(c) for c in s.named_children if c.type == "string_content"]
-    return "".join(parts) if parts else None
 
 
 # -- the repository: pending calls and consumers ---------------------------------
