@@ -66,6 +66,21 @@ def is_other_angle_var(name: str) -> bool:
     return last_word(name) in ("ROLL", "PITCH")
 
 
+def is_depth_var(name: str) -> bool:
+    return last_word(name) == "DEPTH"
+
+
+_ANGLE_WORDS = {"YAW", "PITCH", "ROLL", "TURN", "HEADING", "HDG"}
+
+
+def is_rate_var(name: str) -> bool:
+    """An angular rate: a gyro axis (``IMU_GYRO_Z``) or an angle's ``RATE`` (``YAW_RATE``)."""
+    ws = [w.upper() for w in words(name)]
+    if any(w in ("GYRO", "GYR") for w in ws):
+        return True
+    return len(ws) > 1 and ws[-1] == "RATE" and ws[-2] in _ANGLE_WORDS
+
+
 def strip_calls(expr: str, names: set[str] | frozenset[str]) -> str:
     """``expr`` with each call to one of ``names`` (its arguments included) replaced by ``W``."""
     out = expr

@@ -60,7 +60,10 @@ def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
         tree, matches = _parse(be, path, data)
         parsed.append(ParsedFile(path, data, tree, matches))
     tables = collect_tables(parsed)
-    return [Extractor(pf, tables).run() for pf in parsed]
+    from moos_lint.cpp.values import Evaluator, Folder
+
+    evaluator = Evaluator(Folder(parsed))
+    return [Extractor(pf, tables, evaluator).run() for pf in parsed]
 
 
 #: How many parsed files (tree and query matches, by path and bytes) a process keeps. The

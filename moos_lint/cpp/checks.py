@@ -64,153 +64,164 @@ def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
     )
 
 
-def pure_app_does_io(app: AppModel, sockets: bool = False) -> Iterator[Finding]:
+def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     name = app.process_name
-    if not app.is_app or not name or not re.match(r"^p[A-Z0-9_]", name):
+    if not app.is_app or not name or not re.match(r"^[pu][A-Z0-9_]", name):
         return
     uses = [u for u in app.io if u.device]
     termios = [u for u in app.io if u.kind == "termios"]
     if termios and any(u.kind == "serial" for u in uses):
         uses = [*uses, *termios]
-    if sockets and not name.startswith(MOOS_NETWORK_APPS):
+    bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in app.io)
+    if sockets and name.startswith("p") and not bridge:
         uses += [u for u in app.io if u.kind == "socket"]
     if not uses:
         return
     first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))
     kinds = sorted({u.detail for u in uses})
+    kind = "a `p` app" if name.startswith("p") else "a `u` app"
+    what = "device I/O" if all(u.kind != "socket" for u in uses) else "I/O outside the MOOSDB"
     yield (
         first.span,
-        f"{_app_label(app)} is a `p` app but does device I/O ({', '.join(kinds[:4])}): "
-        "an app that talks to hardware is an instrument, named with an `i` prefix",
+        f"{_app_label(app)} is {kind} but does {what} ({', '.join(kinds[:4])}): "
+        "an app that talks to a device, or to a vehicle or service in a protocol that is "
+        "not MOOS, is an interface app, named with an `i` prefix",
     )
 
 
+def _valued(app: AppModel, pred) -> Iterator[tuple[Publication, Any]]:
+    """Publications whose name (or its known last word) ``pred`` accepts, with their values."""
+    for p in app.publications:
+        name = p.name.last
+        if name and p.value is not None and pred(name):
+            yield p, p.value.abstract
+
+
+def _shown(p: Publication) -> str:
+    """The name as a message quotes it (with how it is built when only its end is known)."""
+    if p.name.text is not None:
+        return f"`{p.name.text}`"
+    source = " ".join(p.name.source.split())
+    if p.name.suffix in source:
+        return f"`{p.name.suffix}` (named by `{source}`)"
+    return f"`{source}` (a {angles.last_word(p.name.suffix)} by its index)"
+
+
+def _because(v: Any) -> str:
+    """The chain of reasons, source first, as a parenthesis."""
+    return f" ({v.explanation})" if v is not None and v.why else ""
+
+
 def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
-    seen: set[tuple] = set()
-    yaw_assignments = [
-        a for a in app.assignments if re.search(r"yaw", a.target, re.I) and not _rate(a.target)
-    ]
-    for p in _named(app, angles.is_yaw_var):
-        m = angles.heading_to_rad_without_minus(p.value.expanded)  # type: ignore[union-attr]
-        if m:
-            raw = p.value.text  # type: ignore[union-attr]
-            if not angles.heading_to_rad_without_minus(raw) and any(
-                a.function == p.function
-                and re.search(r"\b" + re.escape(a.target) + r"\b", raw)
-                and angles.heading_to_rad_without_minus(a.value.text)
-                for a in yaw_assignments
-            ):
-                continue  # reported where the yaw variable is assigned
-            seen.add((p.value.span.path, p.value.span.line))  # type: ignore[union-attr]
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` gets `{m.group(0).strip()}`: yaw is −heading·π/180 "
-                "(heading turns clockwise, yaw counter-clockwise); the minus sign is missing",
-            )
-    for a in yaw_assignments:
-        if (a.value.span.path, a.value.span.line) in seen:
+    for p, v in _valued(app, angles.is_yaw_var):
+        if v is None or v.unit != "rad" or v.sense != "heading":
             continue
-        m = angles.heading_to_rad_without_minus(a.value.text)
-        if m:
-            seen.add((a.value.span.path, a.value.span.line))
-            yield (
-                a.value.span,
-                f"`{a.target}` is assigned `{m.group(0).strip()}`: yaw is −heading·π/180; "
-                "the minus sign is missing",
-            )
-
-
-def _rate(name: str) -> bool:
-    return bool(re.search(r"rate|dot|vel", name, re.I))
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is a heading turned into radians without the minus sign"
+            f"{_because(v)}; yaw is −heading·π/180 (heading turns clockwise, yaw "
+            "counter-clockwise)",
+        )
 
 
 def heading_in_radians(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_heading_var):
-        why = angles.looks_radian(p.value.expanded)  # type: ignore[union-attr]
-        if why:
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published in radians ({why}): "
-                "headings are degrees, 0 = north, clockwise",
-            )
+    for p, v in _valued(app, angles.is_heading_var):
+        if v is None or v.unit != "rad":
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published in radians{_because(v)}: "
+            "headings are degrees, 0 = north, clockwise",
+        )
 
 
 def depth_z_sign(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_z_var):
-        term = angles.depth_without_negation(p.value.expanded)  # type: ignore[union-attr]
-        if term:
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published from the depth `{term}` without negation: "
-                "Z is up, so Z = −depth",
-            )
+    for p, v in _valued(app, lambda n: angles.is_z_var(n) or angles.is_depth_var(n)):
+        if v is None or v.sign is None:
+            continue
+        name = p.name.last
+        if angles.is_z_var(name) and v.sign == "down":
+            what, rule = "a depth (positive down)", "Z is up, so Z = −depth"
+        elif angles.is_depth_var(name) and v.sign == "up" and not v.hint:
+            what, rule = "a Z (positive up)", "depth is down, so depth = −Z"
+        else:
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published from {what} without negation{_because(v)}: {rule}",
+        )
 
 
 def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_latlong_var):
-        why = angles.looks_radian(p.value.expanded)  # type: ignore[union-attr]
-        if why and why != "an expression in π":
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published in radians ({why}): "
-                "latitude and longitude are decimal degrees",
-            )
+    for p, v in _valued(app, angles.is_latlong_var):
+        if v is None or v.unit != "rad":
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published in radians{_because(v)}: "
+            "latitude and longitude are decimal degrees",
+        )
 
 
 def yaw_in_degrees(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_yaw_var):
-        v = p.value
-        if angles.literal_over_two_pi(v.number):  # type: ignore[union-attr]
+    for p, v in _valued(app, angles.is_yaw_var):
+        val = p.value
+        if angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
             yield (
-                v.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published as {v.text}, more than 2π: "  # type: ignore[union-attr]
+                val.span,  # type: ignore[union-attr]
+                f"{_shown(p)} is published as {val.text}, more than 2π: "  # type: ignore[union-attr]
                 "a yaw is in radians",
             )
-            continue
-        term = angles.heading_term(v.expanded)  # type: ignore[union-attr]
-        if term:
+        elif v is not None and v.unit == "deg":
             yield (
-                v.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published from `{term}`, a value in degrees, "
-                "without conversion: a yaw is in radians",
+                val.span,  # type: ignore[union-attr]
+                f"{_shown(p)} is published in degrees{_because(v)}: a yaw is in radians",
             )
 
 
 def angle_not_wrapped(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_yaw_var):
-        e = p.value.expanded  # type: ignore[union-attr]
-        wrap = angles.outer_wrap(e)
-        if wrap == "2pi":
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is wrapped into [0, 2π): a yaw is wrapped to ±π "
-                "(MOOS_ANGLE_WRAP)",
-            )
-        elif wrap is None and angles.has_arithmetic(e) and not angles.converts_to_degrees(e):
-            yield (
-                p.value.span,  # type: ignore[union-attr]
-                f"`{p.name.text}` is published after arithmetic with no wrap to ±π: "
-                "wrap it with MOOS_ANGLE_WRAP",
-            )
+    for p, v in _valued(app, lambda n: angles.is_yaw_var(n) or angles.is_other_angle_var(n)):
+        if v is None or v.unit != "rad" or v.range is None:
+            continue
+        if angles_within(v):
+            continue
+        from moos_lint.cpp.values import range_text
+
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} lies in {range_text(v.range, v.unit)}{_because(v)}: "
+            "angles are wrapped to ±π (MOOS_ANGLE_WRAP)",
+        )
+
+
+def angles_within(v: Any) -> bool:
+    from moos_lint.cpp.values import within_pi
+
+    return within_pi(v.range) is not False
 
 
 def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
-    for p in _named(app, angles.is_other_angle_var):
-        v = p.value
-        e = v.expanded  # type: ignore[union-attr]
-        if angles.literal_over_two_pi(v.number):  # type: ignore[union-attr]
-            why = f"{v.text} is more than 2π"  # type: ignore[union-attr]
-        elif angles.converts_to_degrees(e):
-            why = "converted to degrees"
-        elif re.fullmatch(r"\(?\s*-?\s*[\w.>-]*(?:_deg|Deg|_degrees|Degrees)\w*\s*\)?", e.strip()):
-            why = "the value's name says degrees"
+    for p, v in _valued(app, lambda n: angles.is_other_angle_var(n) or angles.is_rate_var(n)):
+        val = p.value
+        if angles.is_other_angle_var(p.name.last) and angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
+            why = f" ({val.text} is more than 2π)"  # type: ignore[union-attr]
+            unit = "degrees"
+        elif v is not None and v.unit in ("deg", "deg/s"):
+            rate_only = angles.is_rate_var(p.name.last) and not angles.is_other_angle_var(
+                p.name.last
+            )
+            if rate_only and v.unit == "deg" and v.hint:
+                continue
+            why = _because(v)
+            unit = "degrees per second" if angles.is_rate_var(p.name.last) else "degrees"
         else:
             continue
-        yield (
-            v.span,  # type: ignore[union-attr]
-            f"`{p.name.text}` is published in degrees ({why}): "
-            "angles other than heading are radians",
+        rule = (
+            "angular rates are radians per second"
+            if unit == "degrees per second"
+            else "angles other than heading are radians"
         )
+        yield (val.span, f"{_shown(p)} is published in {unit}{why}: {rule}")  # type: ignore[union-attr]
 
 
 def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
@@ -260,6 +271,17 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def published_names(app: AppModel) -> Iterator[tuple[str, Span]]:
+    """The names an app publishes that are known statically, each once per place."""
+    seen = set()
+    for p in app.publications:
+        name = p.name.text
+        if not name or p.name.wildcard or (name, p.name_span.path, p.name_span.line) in seen:
+            continue
+        seen.add((name, p.name_span.path, p.name_span.line))
+        yield name, p.name_span
+
+
 def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterator[Finding]:
     """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR."""
     for p in app.publications:
@@ -268,8 +290,10 @@ def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterat
             continue
         word = word_of(name)
         if word:
+            key = p.name.config_key
+            where = f" (its default; the configuration key `{key}` may rename it)" if key else ""
             yield (
                 p.name_span,
-                f"`{name}` names the actuator `{word}`: MOOS actuators are "
+                f"`{name}`{where} names the actuator `{word}`: MOOS actuators are "
                 "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
             )

@@ -24,6 +24,7 @@ from moos_lint.cpp.model import (
     Subscription,
     Value,
 )
+from moos_lint.cpp.names import key_literal, mail_key_of, valued_name
 from moos_lint.diagnostics import Span
 
 PUBLISH = {"Notify"}
@@ -34,12 +35,28 @@ PREFIX_CALLS = {"strBegins", "find", "compare", "rfind", "starts_with", "MOOSStr
 IO_TYPES = re.compile(
     r"^(?:CMOOSSerialPort|CMOOSLinuxSerialPort|CMOOSNTSerialPort|SerialPort|QSerialPort|Serial)$"
 )
+#: a MOOS client of another community: a bridge's sockets carry MOOS itself
+MOOS_CLIENT_TYPES = re.compile(r"^(?:CMOOSCommClient|MOOSAsyncCommClient|CMOOSAsyncCommClient)$")
 SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: conversions from degrees that tell what a variable read by mail carries
+FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
-CALLED = PUBLISH | SUBSCRIBE | {"Run"} | CONFIG_CALLS | BAUD_CALLS | SOCKET_CALLS | STRCMP
+#: ``Set`` on a table of published ``CMOOSVariable``s (published by ``PublishFreshMOOSVariables``)
+VARIABLE_SET = {"Set"}
+CALLED = (
+    PUBLISH
+    | SUBSCRIBE
+    | {"Run"}
+    | CONFIG_CALLS
+    | BAUD_CALLS
+    | SOCKET_CALLS
+    | STRCMP
+    | FROM_DEGREES
+    | VARIABLE_SET
+)
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
     "radAngleWrap",
@@ -172,6 +189,8 @@ class FolderTables:
     defines: dict[str, str] = field(default_factory=dict)
     # member/global/constant name -> its assigned values (None: not a literal)
     assigns: dict[str, list[str | None]] = field(default_factory=dict)
+    # member -> the configuration key read into it (``GetConfigurationParam("prefix", m_prefix)``)
+    config_keys: dict[str, str] = field(default_factory=dict)
 
 
 class Spans:
@@ -290,12 +309,40 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             if a.fn is not None and _declared_in(pf, a):
                 continue
             val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
+            if val is None and a.fn is not None:
+                key = _config_branch_key(pf, a)
+                if key is not None:  # the configuration may change it: the default stands
+                    t.config_keys.setdefault(a.target, key)
+                    continue
             t.assigns.setdefault(a.target, []).append(val)
         for name, args in pf.inits:
             vals = args.named_children
             val = string_value(vals[0]) if len(vals) == 1 else None
             t.assigns.setdefault(name, []).append(val)
+        for _call, fn, args in pf.calls:
+            argv = args.named_children
+            if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
+                key = string_value(strip_parens(argv[-2]))
+                member = target_name(argv[-1])
+                if key is not None and member:
+                    t.config_keys.setdefault(member, key.lower())
     return t
+
+
+def _config_branch_key(pf: ParsedFile, a: _Asg) -> str | None:
+    """The configuration key whose branch sets ``a`` (``if (param == "PREFIX") m_prefix = value;``)
+    in a start-up or configuration function, else None."""
+    fname = short(pf.function_name_of(a.node)).lower()
+    if not (fname == "onstartup" or re.search(r"config|param|startup|setparam", fname)):
+        return None
+    p, child = a.node.parent, a.node
+    while p is not None and p.type != "function_definition":
+        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
+            lit = key_literal(p.child_by_field_name("condition"))
+            if lit is not None:
+                return lit.lower()
+        p, child = p.parent, p
+    return None
 
 
 def _declared_in(pf: ParsedFile, a: _Asg) -> bool:
@@ -307,16 +354,62 @@ def _declared_in(pf: ParsedFile, a: _Asg) -> bool:
 class Extractor:
     """Turns one parsed file into a :class:`CppFile`, given the folder's tables."""
 
-    def __init__(self, pf: ParsedFile, tables: FolderTables):
+    def __init__(self, pf: ParsedFile, tables: FolderTables, evaluator: Any = None):
         self.pf = pf
         self.tables = tables
         self.out = CppFile(path=pf.path)
+        self.evaluator = evaluator
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
         src = text(n)
         val, prefix = self._resolve(n, depth)
-        return Name(source=src, text=val, prefix=prefix if val is None else val)
+        name = Name(source=src, text=val, prefix=prefix if val is None else val)
+        if val is None:
+            name.suffix = self._suffix(strip_parens(n))
+        name.config_key = self._config_key(strip_parens(n))
+        return name
+
+    def _suffix(self, n: Any) -> str:
+        """The known end of a name built at run time (see :attr:`Name.suffix`)."""
+        if n is None:
+            return ""
+        if n.type == "binary_expression" and text(n.child_by_field_name("operator")) == "+":
+            right = strip_parens(n.child_by_field_name("right"))
+            val, _ = self._resolve(right, 1)
+            return val if val is not None else self._suffix(right)
+        if n.type == "call_expression":
+            fn = n.child_by_field_name("function")
+            args = n.child_by_field_name("arguments").named_children
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str") and not args:
+                return self._suffix(strip_parens(fn.child_by_field_name("argument")))
+            # a helper that builds a name from a literal: ``varName("NAV_YAW")``
+            lits = [string_value(strip_parens(a)) for a in args]
+            if len(args) == 1 and lits[0] is not None:
+                return lits[0]
+            return ""
+        if n.type == "subscript_expression":
+            # a table of names indexed by an enumerator: ``m_names[Pitch]``
+            idx = n.child_by_field_name("indices") or n.child_by_field_name("index")
+            inner = [c for c in (idx.named_children if idx is not None else ())]
+            key = strip_parens(inner[0]) if inner else None
+            table = text(n.child_by_field_name("argument"))
+            if (
+                key is not None
+                and key.type in ("identifier", "qualified_identifier")
+                and re.search(r"name|var", table, re.I)
+            ):
+                enum = text(key).split("::")[-1]
+                return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", enum).upper()
+        return ""
+
+    def _config_key(self, n: Any) -> str | None:
+        """The configuration key that sets the member a name is built from."""
+        while n is not None and n.type == "binary_expression":
+            n = strip_parens(n.child_by_field_name("left"))
+        if n is None or n.type not in ("identifier", "field_expression"):
+            return None
+        return self.tables.config_keys.get(target_name(n))
 
     def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
         n = strip_parens(n)
@@ -526,6 +619,8 @@ class Extractor:
             name = text(t)
             if IO_TYPES.match(name):
                 out.io.append(IOUse("serial", name, pf.spans.of(t)))
+            elif MOOS_CLIENT_TYPES.match(name):
+                out.io.append(IOUse("moos", name, pf.spans.of(t)))
             elif name in ("termios",):
                 out.io.append(IOUse("termios", name, pf.spans.of(t)))
             elif SOCKET_TYPES.search(name):
@@ -550,15 +645,25 @@ class Extractor:
         spans = self.pf.spans
         out = self.out
         if name in PUBLISH and argv and _is_moos_call(fn):
+            pub_name = self.name(argv[0])
+            value = self.value(argv[1]) if len(argv) > 1 else None
+            if value is not None and self.evaluator is not None and valued_name(pub_name.last):
+                value.abstract = self.evaluator.of(self.pf, argv[1])
             out.publications.append(
                 Publication(
-                    name=self.name(argv[0]),
-                    value=self.value(argv[1]) if len(argv) > 1 else None,
+                    name=pub_name,
+                    value=value,
                     span=spans.of(call),
                     name_span=spans.of(argv[0]),
                     function=self._fn_of(call),
                 )
             )
+        elif name in VARIABLE_SET and argv and fn.type == "field_expression":
+            self._variable_set(call, fn, argv)
+        elif name in FROM_DEGREES and argv:
+            var = mail_key_of(call)
+            if var is not None and _reads_mail(argv[0]):
+                out.consumed_degrees.append((var, spans.of(call), name))
         elif name in SUBSCRIBE and argv and _is_moos_call(fn):
             out.subscriptions.append(
                 Subscription(
@@ -594,6 +699,33 @@ class Extractor:
                     prefix=name == "strBegins",
                     suffix=name == "strEnds",
                 )
+
+    def _variable_set(self, call: Any, fn: Any, argv: list[Any]) -> None:
+        """``m_PublishedVars[NAV_YAW]->Set(v, t)`` (or through a local pointer to it): a
+        published ``CMOOSVariable`` named, as far as we know, by its table index."""
+        obj = strip_parens(fn.child_by_field_name("argument"))
+        if obj is not None and obj.type == "identifier":
+            local = self._local_before(call, text(obj))
+            obj = strip_parens(local.rhs) if local is not None and local.op == "=" else None
+        if obj is None or obj.type != "subscript_expression":
+            return
+        if not re.search(r"publish", text(obj.child_by_field_name("argument")), re.I):
+            return
+        suffix = self._suffix(obj)
+        if not suffix or not valued_name(suffix):
+            return
+        value = self.value(argv[0])
+        if self.evaluator is not None:
+            value.abstract = self.evaluator.of(self.pf, argv[0])
+        self.out.publications.append(
+            Publication(
+                name=Name(source=text(obj), suffix=suffix),
+                value=value,
+                span=self.pf.spans.of(call),
+                name_span=self.pf.spans.of(obj),
+                function=self._fn_of(call),
+            )
+        )
 
     def _comparison(self, cmp: Any, left: Any, right: Any) -> None:
         lit = string_value(right)
@@ -729,6 +861,12 @@ def _top_of(n: Any, start_byte: int) -> Any:
     while p.parent is not None and p.parent.start_byte >= start_byte:
         p = p.parent
     return p
+
+
+def _reads_mail(arg: Any) -> bool:
+    """The argument is what a message carries (``msg.GetDouble()``, ``dval``)."""
+    t = text(arg)
+    return bool(re.search(r"GetDouble|GetString|dval|dfVal|dValue|atof|stod", t))
 
 
 def _is_moos_call(fn: Any) -> bool:

@@ -7,6 +7,7 @@ that rules, and a later join with missions, can point at the code.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 from moos_lint.diagnostics import Span
 
@@ -25,6 +26,16 @@ class Name:
     source: str  # the expression as written
     text: str | None = None
     prefix: str = ""
+    #: what is known of the name's end when the whole is not (``m_prefix + "_PITCH"``,
+    #: ``varName("NAV_YAW")``, a table indexed by ``Yaw``): enough for its last word
+    suffix: str = ""
+    #: the app's configuration key that may change the name (``prefix`` for ``m_prefix``)
+    config_key: str | None = None
+
+    @property
+    def last(self) -> str:
+        """The name as far as rules keyed on its last word need it."""
+        return self.text if self.text is not None else self.suffix
 
     @property
     def dynamic(self) -> bool:
@@ -48,6 +59,9 @@ class Value:
     span: Span
     number: float | None = None  # a numeric constant, when the value is one
     type: str | None = None  # "double" | "string" | ... (libclang deep mode)
+    #: unit, sense, range and sign (:mod:`moos_lint.cpp.values`), for published angles,
+    #: headings, positions and depths
+    abstract: Any = None
 
 
 @dataclass(slots=True)
@@ -97,7 +111,8 @@ class ConfigParam:
 
 @dataclass(slots=True)
 class IOUse:
-    """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network."""
+    """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network
+    (``moos``: a client of another MOOS community, the I/O of a bridge)."""
 
     kind: str
     detail: str
@@ -125,6 +140,8 @@ class CppFile:
     mail_keys: list[MailKey] = field(default_factory=list)
     config_params: list[ConfigParam] = field(default_factory=list)
     io: list[IOUse] = field(default_factory=list)
+    #: MOOS variables this file converts from degrees on arrival: (name, span, helper)
+    consumed_degrees: list[tuple[str, Span, str]] = field(default_factory=list)
     run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
     has_main: bool = False
     has_on_new_mail: bool = False

@@ -25,7 +25,7 @@ QUERY_TEMPLATE = r"""
 ((string_literal) @str (#match? @str "/dev/"))
 (preproc_include path: (_) @inc)
 ((type_identifier) @type
-  (#match? @type "Serial|[Ss]ocket|CAN|[Uu]sb|USB|termios|TCP|UDP|Udp|Tcp"))
+  (#match? @type "Serial|[Ss]ocket|CAN|[Uu]sb|USB|termios|TCP|UDP|Udp|Tcp|CommClient"))
 ((namespace_identifier) @ns (#any-of? @ns "asio" "serial"))
 (function_definition declarator: (_) @fn.decl) @fn
 """

@@ -39,6 +39,10 @@ def build_cpp_units(
         linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
         link_apps(linked)
         apps = {a.folder: a for a in linked}
+    if apps:
+        from moos_lint.cpp.values import link_values
+
+        link_values(list(apps.values()), paths)
     if run.settings.cpp_backend == "clang" and apps:
         from moos_lint.cpp.clang import enrich
 

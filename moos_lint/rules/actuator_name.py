@@ -18,7 +18,12 @@ reported. MOOS-IvP's own missions use only standard actuator names.
 
 
 In C++, it checks the names an app publishes with `Notify` when they are
-known statically (literals, string constants, `#define` macros).
+known statically (literals, string constants, `#define` macros, a member with
+a default that a configuration key may change). There a published name with
+an actuator word is also a command when another word picks one actuator or
+a command value (`MOTOR_LEFT`, `SERVO_2_PWM`, `PROP_PORT`, `FIN_SETPOINT`),
+unless a word says it is a report (`MOTOR_TEMPERATURE`, `SERVO_CURRENT`,
+`REPORTED_MOTOR_LEFT`, `CONSO_PROP`).
 
 ## Why is this bad?
 The MOOS Conventions (section 4.3) know three actuators: THRUST, RUDDER and
@@ -42,7 +47,8 @@ with its own option (pMarinePIDV22 `output_suffix`).
 
 ## Options
 - `actuator-words` (list of strings, default
-  `["THROTTLE", "STEERING", "STEER", "MOTOR", "PROPELLER", "PROP", "SERVO", "ESC"]`):
+  `["THROTTLE", "STEERING", "STEER", "MOTOR", "MOTORS", "PROPELLER", "PROP", "SERVO",
+  "SERVOS", "ESC", "PWM", "AILERON", "FLAP", "FIN", "FINS"]`):
   words that name an actuator another way.
 - `allow` (list of strings, default `[]`): names (shell-style globs) that are fine.
 """
@@ -57,14 +63,83 @@ from moos_lint.variables import bare_name, unit_variables
 
 STANDARD = ("THRUST", "RUDDER", "ELEVATOR")
 _COMMAND_WORDS = {"CMD", "COMMAND"}
+#: words that make a name a report of an actuator, not a command to it
+REPORT_WORDS = {
+    "TEMP",
+    "TEMPERATURE",
+    "CURRENT",
+    "VOLTAGE",
+    "POWER",
+    "STATUS",
+    "STATE",
+    "FAULT",
+    "ERROR",
+    "ERR",
+    "REPORTED",
+    "FEEDBACK",
+    "MEASURED",
+    "ACTUAL",
+    "RPM",
+    "COUNT",
+    "HEALTH",
+    "INFO",
+    "CENTERS",
+    "CENTER",
+    "CONFIG",
+    "ENABLED",
+    "DEBUG",
+    "CONSO",
+    "CONSUMPTION",
+    "ENERGY",
+    "LOAD",
+    "USAGE",
+}
+#: words that make a name with an actuator word a command to one actuator
+#: (``MOTOR_LEFT``, ``SERVO_2_PWM``, ``PROP_PORT``)
+COMMAND_SHAPE_WORDS = {
+    "LEFT",
+    "RIGHT",
+    "L",
+    "R",
+    "PORT",
+    "STBD",
+    "STARBOARD",
+    "FRONT",
+    "REAR",
+    "AFT",
+    "FWD",
+    "FORE",
+    "VERTICAL",
+    "HORIZONTAL",
+    "LATERAL",
+    "PWM",
+    "SET",
+    "SETPOINT",
+    "OUT",
+    "OUTPUT",
+    "DEMAND",
+    "REF",
+    "PERCENT",
+    "PCT",
+}
 
 
-def actuator_word(name: str, words: set[str]) -> str | None:
-    """The non-standard actuator word of a command variable name, if any."""
+def actuator_word(name: str, words: set[str], any_shape: bool = False) -> str | None:
+    """The non-standard actuator word of a command variable name, if any.
+
+    ``any_shape``: every name with an actuator word is a command unless a word says
+    it is a report (names an app publishes in C++).
+    """
     parts = [p for p in name.upper().split("_") if p]
     if not parts:
         return None
     is_command = name.upper().startswith("DESIRED_") or any(p in _COMMAND_WORDS for p in parts)
+    if (
+        any_shape
+        and not any(p in REPORT_WORDS for p in parts)
+        and any(p in COMMAND_SHAPE_WORDS or p.isdigit() for p in parts)
+    ):
+        is_command = True
     if not is_command or any(p.startswith(STANDARD) for p in parts):
         return None
     for p in parts:
@@ -89,6 +164,13 @@ def actuator_word(name: str, words: set[str]) -> str | None:
             "PROP",
             "SERVO",
             "ESC",
+            "MOTORS",
+            "SERVOS",
+            "PWM",
+            "AILERON",
+            "FLAP",
+            "FIN",
+            "FINS",
         ],
         "allow": [],
     },
@@ -122,6 +204,6 @@ def cpp_check(ctx, words, allow):
     def word_of(name):
         if any(fnmatch.fnmatchcase(name, a) for a in allow):
             return None
-        return actuator_word(name, words)
+        return actuator_word(name, words, any_shape=True)
 
     yield from cpp_findings(ctx, actuator_name, word_of=word_of)

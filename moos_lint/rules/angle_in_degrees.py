@@ -11,8 +11,20 @@ the literal with its radian value (value·π/180, wrapped to ±π, 4 decimals).
 
 
 In C++, it reports `Notify` of a ROLL or PITCH variable with a degree
-value: a literal above 2π, a radians-to-degrees conversion
-(`MOOSRad2Deg`, `*180/M_PI`), or a value whose name says degrees.
+value (a literal above 2π, a radians-to-degrees conversion, a library getter
+or device value in degrees, an angle read from the same device array as one
+a consumer converts from degrees), and of an angular rate (`*_GYRO_*`,
+`YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a
+`*_DPS` scale).
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 The MOOS Conventions put every angle except heading in radians, and MOOS-IvP

@@ -9,12 +9,21 @@ where values are found) whose magnitude is larger than π but not larger than
 rounded to 4 decimals.
 
 
-In C++, it reports a yaw published (`Notify("NAV_YAW", ...)`) after
-arithmetic with no wrap to ±π between the arithmetic and the `Notify`:
-`MOOS_ANGLE_WRAP`, the IvP helper `radAngleWrap`, a function named like
-`wrapToPi`, or a `while (yaw > M_PI) yaw -= 2*M_PI;` loop. A wrap into
-[0, 2π) (`fmod(yaw, 2*M_PI)`, or loops on `< 0` only) is reported too. Local
-variables are followed; opaque calls (`record.getYaw()`) are trusted.
+In C++, it reports a yaw, pitch or roll published in radians whose range is
+known not to be ±π: a heading in [0, 360) turned into a yaw
+(`-heading*M_PI/180` without `angle180`), a yaw shifted by π, a one-sided
+wrap (`if (yaw < 0) yaw += 2*M_PI`) or `fmod(yaw, 2*M_PI)` into [0, 2π).
+Wraps are read from `MOOS_ANGLE_WRAP`, `radAngleWrap`, `angle180`, wrap
+loops and `if`s, and `fmod`.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 The MOOS Conventions wrap every angle to ±π, and the code that reads these

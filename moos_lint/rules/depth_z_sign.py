@@ -2,9 +2,20 @@
 
 ## What it does
 Reports `Notify` of a variable whose last word is `Z` (`NAV_Z`, `GPS_Z`) when
-the value is a depth as is: a variable, member or getter whose name says
-depth (`depth`, `m_depth`, `record.getDepth()`), followed through local
-variables, with no minus sign.
+the value is positive down without a minus sign: a depth (`m_depth`,
+`record.getDepth()`, `NAV_DEPTH` read by mail) or the z of a NED frame
+(`m_ned.z`); and of a variable whose last word is `DEPTH` published from
+`NAV_Z` as is. A frame used inside the process is free: only what is
+published counts.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 In the MOOS frame Z points up: a vehicle 10 m below the surface has

@@ -4,9 +4,17 @@
 Reports `Notify` of a variable whose last word is `HEADING` or `HDG`
 (`NAV_HEADING`, `DESIRED_HEADING`, `GPS_HDG`) with a value in radians: an
 `atan2`/`atan`/`asin`/`acos` result, a degrees-to-radians conversion, a
-variable named yaw or `*_rad`, or an expression in π, with no conversion back
-to degrees (`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`).
-Local variables are followed to what they were assigned.
+`NAV_YAW` read by mail or a `*_rad` name, with no conversion back to degrees
+(`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`).
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 In MOOS and MOOS-IvP a heading is in degrees, clockwise from north: the helm,

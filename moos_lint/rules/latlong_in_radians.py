@@ -6,6 +6,15 @@ Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
 (`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, or a variable
 named `*_rad`, with no conversion back to degrees.
 
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
+
 ## Why is this bad?
 MOOS and MOOS-IvP carry positions as decimal degrees (`NAV_LAT`, `NAV_LONG`,
 `LatOrigin`, `LongOrigin`): the geodesy, pMarineViewer and the log tools read

@@ -13,6 +13,9 @@ Degrees are accepted on headings, courses and bearings (`HEADING`, `HDG`,
 (`NAV_LAT`, `NAV_LONG`). MOOS-IvP's own missions name no variable after a
 unit, so the rule is silent on them.
 
+In C++, it reads the names an app publishes with `Notify` when they are known
+statically (`Notify("DEPTH_FT", ...)`, a `#define`, a member's default).
+
 ## Why is this bad?
 The MOOS Conventions (section 3) use SI units throughout: metres, seconds,
 radians. Only heading variables are in degrees. A variable that announces
@@ -66,7 +69,7 @@ def unit_word(name: str, units: set[str], degree_units: set[str], degree_words: 
     name="non-si-unit",
     severity=Severity.WARNING,
     scope=Scope.FILE,
-    kinds=(Kind.MOOS, Kind.BHV),
+    kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
     options={
         "units": ["KNOTS", "KTS", "FT", "FEET", "MPH", "KM", "KPH", "KMH"],
         "degree-units": ["DEG", "DEGS", "DEGREES"],
@@ -88,6 +91,22 @@ def check(ctx):
     units = {str(u).upper() for u in ctx.options.get("units", [])}
     degree_units = {str(u).upper() for u in ctx.options.get("degree-units", [])}
     degree_words = {str(u).upper() for u in ctx.options.get("degree-words", [])}
+    if ctx.unit.kind is Kind.CPP:
+        from moos_lint.cpp.checks import published_names
+
+        app = ctx.unit.cpp
+        for name, span in published_names(app) if app is not None else ():
+            word = unit_word(name, units, degree_units, degree_words)
+            if word is not None:
+                what = (
+                    "degrees on a variable that is not a heading" if word in degree_units else word
+                )
+                yield ctx.report(
+                    span,
+                    f"`{name}` declares a non-SI unit ({what}): MOOS uses metres, seconds and "
+                    "radians",
+                )
+        return
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if not bare:

@@ -16,6 +16,10 @@ A variable counts as published when the value of a parameter names it:
 
 Names with an nsplug macro (`$(X)`) or a run-time placeholder are skipped.
 
+In C++, it reads what an interface app (process name `i...`) publishes with
+`Notify`: a name known statically whose last word is a category but that has
+no sensor prefix (`Notify("DEPTH", ...)`, `Notify("YAW", ...)`).
+
 This rule is off by default. MOOS-IvP does not follow this part of the 2007
 document: its sensors and simulators publish `NAV_*` and app-prefixed names
 (`USM_*`, `GPS_LAT`), and interface apps rarely take variable names from
@@ -71,7 +75,7 @@ _WORD = re.compile(r"[A-Z][A-Z0-9_]*")
     name="sensor-variable-prefix",
     severity=Severity.INFO,
     scope=Scope.FILE,
-    kinds=(Kind.MOOS,),
+    kinds=(Kind.MOOS, Kind.CPP),
     default_enabled=False,
     options={
         "categories": ["X", "Y", "Z", "DEPTH", "YAW", "BODY_VEL"],
@@ -85,6 +89,9 @@ def check(ctx):
     keys = [str(k).lower() for k in ctx.options.get("publish-keys", [])]
     alternatives = "|".join(map(re.escape, cats))
     good = re.compile(rf"[A-Z][A-Z0-9]*(?:_[A-Z0-9]+)*_(?:{alternatives})")
+    if ctx.unit.kind is Kind.CPP:
+        yield from _cpp(ctx, cats, good)
+        return
     programs = {
         r.name.lower(): r.binary.replace("\\", "/").rsplit("/", 1)[-1] for r in ctx.moos.runs
     }
@@ -111,4 +118,20 @@ def check(ctx):
                 f"`<SENSOR>_<CATEGORY>` ({', '.join(sorted(cats))})",
                 line=line,
                 subject=Subject(variable=name, app=block.name),
+            )
+
+
+def _cpp(ctx, cats, good):
+    from moos_lint.cpp.checks import published_names
+
+    app = ctx.unit.cpp
+    if app is None or not app.is_app or not _INTERFACE.match(app.process_name or ""):
+        return
+    bare_cats = {c for c in cats}
+    for name, span in published_names(app):
+        if name in bare_cats and not good.fullmatch(name):
+            yield ctx.report(
+                span,
+                f"`{name}`, published by interface process `{app.process_name}`, is not named "
+                f"`<SENSOR>_<CATEGORY>` ({', '.join(sorted(cats))})",
             )

@@ -1,11 +1,21 @@
 """Yaw computed from heading as `+heading·π/180`, without the minus sign.
 
 ## What it does
-Reports a yaw computed from a heading in degrees as `heading*M_PI/180`,
-`degToRadians(heading)` or `MOOSDeg2Rad(hdg)` with no minus sign in front,
-where the result is published to a YAW variable (`Notify("NAV_YAW", ...)`,
-directly or through local variables) or assigned to a variable whose name
-says yaw.
+Reports a yaw published (`Notify("NAV_YAW", ...)`) from a heading in degrees
+turned into radians as `heading*M_PI/180`, `degToRadians(heading)` or
+`MOOSDeg2Rad(hdg)` with no minus sign, also when the conversion is steps away
+(a member set in one method and published in another). A heading is a value
+read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
+heading.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 Heading is measured in degrees clockwise from north; yaw in radians

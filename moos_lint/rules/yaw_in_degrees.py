@@ -12,11 +12,21 @@ radians (value·π/180, wrapped to ±π), and a fix replaces the literal with it
 rounded to 4 decimals.
 
 
-In C++, it reports `Notify` of a YAW variable (`NAV_YAW`) with a degree
-value: a literal above 2π (with `--cpp-backend clang`, also a constant
-expression that folds above 2π), or a value taken from something named
-heading, hdg or deg without conversion (`Notify("NAV_YAW", m_heading)`).
-Local variables are followed to what they were assigned.
+In C++, it reports `Notify` of a YAW variable (`NAV_YAW`, or a name built
+at run time whose last word is YAW) with a value in degrees: a literal above
+2π (with `--cpp-backend clang`, also a constant expression that folds above
+2π), a conversion to degrees (`* 180 / M_PI`, `radToDegrees`), a heading or
+`*_deg` value, an NMEA field, or a value that a consumer converts with
+`MOOSDeg2Rad` on arrival.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
 
 ## Why is this bad?
 MOOS measures yaw in radians, wrapped to ±π (the MOOS Conventions; in
