@@ -676,8 +676,8 @@ def cmd_graph(args: argparse.Namespace) -> int:
 
 
 def cmd_rule(args: argparse.Namespace) -> int:
-    from moos_lint.docs import render_rule_page
     from moos_lint.registry import get_rule
+    from moos_lint.rule_page import render_rule_page
 
     r = get_rule(args.rule)
     if r is None:

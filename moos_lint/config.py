@@ -11,6 +11,7 @@ import os
 import sys
 from pathlib import Path
 
+from moos_lint.discovery import DEFAULT_EXCLUDE
 from moos_lint.markers import CONFIG_FILES
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
@@ -40,15 +41,6 @@ KNOWN_KEYS = {
     "respect-gitignore",
 }
 CPP_BACKENDS = ("tree-sitter", "clang")
-DEFAULT_EXCLUDE = (
-    ".git",
-    ".hg",
-    ".svn",
-    ".moos_lint_cache",
-    "__pycache__",
-    ".venv",
-    "node_modules",
-)
 
 
 class ConfigError(Exception):

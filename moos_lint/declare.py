@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from moos_lint.diagnostics import Severity
+from moos_lint.suffixes import Kind  # the kind of a file: defined with its suffixes
 
 DOC_SECTIONS = ("What it does", "Why is this bad?", "Example", "How to fix", "Options")
 CODE_RE = re.compile(r"^[A-Z][0-9]{3}$")
@@ -39,12 +40,6 @@ class Scope(enum.Enum):
     MISSION = "mission"  # one mission: a .moos file with an ANTLER block, with its includes
     CPP = "cpp"  # one C++ unit
     PROJECT = "project"  # everything linted in one run
-
-
-class Kind(enum.Enum):
-    MOOS = "moos"  # .moos, .moos++, .plug, .def
-    BHV = "bhv"
-    CPP = "cpp"  # C++ sources of MOOS apps
 
 
 @dataclass(slots=True)

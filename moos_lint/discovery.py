@@ -8,9 +8,19 @@ import os
 import re
 from pathlib import Path
 
-from moos_lint.config import DEFAULT_EXCLUDE
 from moos_lint.gitignore import Frame, Ignorer, ignored
 from moos_lint.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES
+
+#: folders and files never linted, whatever the configuration says
+DEFAULT_EXCLUDE = (
+    ".git",
+    ".hg",
+    ".svn",
+    ".moos_lint_cache",
+    "__pycache__",
+    ".venv",
+    "node_modules",
+)
 
 SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
 

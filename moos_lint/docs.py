@@ -9,35 +9,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from moos_lint.registry import DOC_SECTIONS, Rule, all_rules, doc_sections
-
-
-def missing_sections(r: Rule) -> list[str]:
-    sections = doc_sections(r.doc)
-    return [s for s in DOC_SECTIONS if not sections.get(s)]
-
-
-def render_rule_page(r: Rule) -> str:
-    sections = doc_sections(r.doc)
-    lines = [
-        f"# {r.code} {r.name}",
-        "",
-        sections.get("summary", r.name),
-        "",
-        "| | |",
-        "|---|---|",
-        f"| Code | `{r.code}` |",
-        f"| Name | `{r.name}` |",
-        f"| Default severity | {r.severity.value} |",
-        f"| Enabled by default | {'yes' if r.default_enabled else 'no'} |",
-        f"| Scope | {r.scope.value} |",
-        f"| Files | {', '.join('.' + k.value for k in r.kinds)} |",
-        f"| Autofix | {'yes' if r.fixable else 'no'} |",
-        "",
-    ]
-    for title in DOC_SECTIONS:
-        lines += [f"## {title}", "", sections.get(title, "").strip() or "None.", ""]
-    return "\n".join(lines).rstrip() + "\n"
+from moos_lint.registry import Rule, all_rules
+from moos_lint.rule_page import render_rule_page
 
 
 def page_path(folder: Path, r: Rule) -> Path:

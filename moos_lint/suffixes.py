@@ -6,6 +6,17 @@ mission), as the file discovery always has.
 
 from __future__ import annotations
 
+import enum
+
+
+class Kind(enum.Enum):
+    """The kind of a linted file, which says the reader it goes to."""
+
+    MOOS = "moos"  # .moos, .moos++, .plug, .def
+    BHV = "bhv"
+    CPP = "cpp"  # C++ sources of MOOS apps
+
+
 #: missions and their fragments (nsplug plugs and definition files)
 MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
 #: helm behavior files
@@ -34,6 +45,7 @@ __all__ = [
     "CPP_SOURCE_SUFFIXES",
     "CPP_SUFFIXES",
     "MOOS_SUFFIXES",
+    "Kind",
     "is_cpp",
     "is_cpp_source",
 ]

@@ -9,9 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from moos_lint.declare import Kind
 from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion
+from moos_lint.suffixes import Kind
 
 if TYPE_CHECKING:  # a run over missions alone never loads the C++ reader
     from moos_lint.cpp.model import AppModel

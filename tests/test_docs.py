@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 from moos_lint.docs import main as docs_main
-from moos_lint.docs import missing_sections, render_rule_page
 from moos_lint.registry import CODE_RE, NAME_RE, all_rules
+from moos_lint.rule_page import missing_sections, render_rule_page
 
 ROOT = Path(__file__).resolve().parent.parent
 RULES = all_rules()

@@ -10,10 +10,10 @@ import os
 
 from moos_lint.cpp.app import build_apps, link_apps, read_relevant
 from moos_lint.cpp.model import AppModel, CppFile
-from moos_lint.declare import Kind
 from moos_lint.nsplug import Expansion
 from moos_lint.run_state import RunView
 from moos_lint.source import SourceFile
+from moos_lint.suffixes import Kind
 from moos_lint.unit import Unit
 
 #: what a worker process read and parsed of one folder: its relevant sources, its files

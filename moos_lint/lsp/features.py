@@ -15,12 +15,12 @@ from collections.abc import Callable
 from lsprotocol import types as lsp
 
 from moos_lint.diagnostics import Severity, Span
-from moos_lint.docs import render_rule_page
 from moos_lint.lsp.analysis import Analysis, Finding
 from moos_lint.lsp.catalogue import Catalogue, Component
 from moos_lint.lsp.documents import path_to_uri
 from moos_lint.nsplug import Preprocessor
 from moos_lint.registry import all_rules, get_rule, is_valid_selector, matches
+from moos_lint.rule_page import render_rule_page
 from moos_lint.source import split_lines
 
 SOURCE = "moos-lint"
