@@ -64,6 +64,7 @@ import os
 import pickle
 from pathlib import Path
 
+import moos_lint
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR
 from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
@@ -82,7 +83,7 @@ ENV_VAR = "MOOS_LINT_CACHE_DIR"
 FORMAT = 2
 #: entries kept (one per distinct run: paths, settings, moos-lint version)
 KEEP = 8
-_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+_PACKAGE = os.path.dirname(os.path.abspath(moos_lint.__file__))
 
 
 def cache_dir_for(settings: Settings) -> str:
@@ -412,12 +413,19 @@ def cached_lint(
         hit.missing = list(found.missing)
         hit.cache_watch = _watch(hit.cache_watch, walked)
         return hit
+    from moos_lint import parallel
     from moos_lint.engine import lint_paths  # the parsers and rules: only on a miss
     from moos_lint.nsplug import FileCache
 
     reader = FileCache()
     result = lint_paths(
-        paths, settings, context=context, cache=reader, jobs=jobs, progress=progress
+        paths,
+        settings,
+        context=context,
+        cache=reader,
+        jobs=jobs,
+        progress=progress,
+        parallel=parallel,
     )
     if not result.internal_errors:  # a crash is never replayed from the cache
         store(cache_dir, key, result, settings, reader.paths(), reader.probed)

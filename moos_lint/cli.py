@@ -437,6 +437,7 @@ def _check(args: argparse.Namespace, settings) -> int:
                     progress=progress,
                 )
             else:
+                from moos_lint import parallel
                 from moos_lint.engine import lint_paths
 
                 result = lint_paths(
@@ -446,6 +447,7 @@ def _check(args: argparse.Namespace, settings) -> int:
                     cache=cache,
                     jobs=args.jobs,
                     progress=progress,
+                    parallel=parallel,
                 )
         from moos_lint.diagnostics import Diagnostic, Severity, Span
 

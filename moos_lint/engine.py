@@ -9,10 +9,10 @@ from __future__ import annotations
 import fnmatch
 import os
 import traceback
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from moos_lint.config import Settings
 from moos_lint.diagnostics import (
@@ -269,6 +269,26 @@ def _build_cpp_units(
     return units, errors
 
 
+class Parallel(Protocol):
+    """Worker processes that share a run's work: :mod:`moos_lint.parallel`.
+
+    The engine never starts processes itself: a caller that wants ``jobs`` (the
+    command line, the result cache) passes the worker machinery in.
+    """
+
+    def effective_jobs(self, jobs: int | None, n_files: int) -> int: ...
+
+    def pool(self, jobs: int) -> Any: ...
+
+    def start_cpp(self, workers: Any, paths: list[str]) -> Iterator[Any]: ...
+
+    def stop(self, workers: Any) -> None: ...
+
+    def run_rules_parallel(
+        self, run: LintRun, jobs: int, progress: Progress | None = None
+    ) -> list[tuple[list[Diagnostic], int]]: ...
+
+
 def lint_files(
     files: list[str],
     settings: Settings,
@@ -277,28 +297,30 @@ def lint_files(
     jobs: int | None = 1,
     checked: Callable[[Unit], bool] | None = None,
     progress: Progress | None = None,
+    parallel: Parallel | None = None,
 ) -> Result:
     """Lint the given files with the given settings.
 
-    ``jobs``: worker processes (None: one per CPU); the result is the same as
-    with one (see :mod:`moos_lint.parallel`). Small inputs stay in one process.
+    ``jobs``: worker processes (None: one per CPU), started by ``parallel``
+    (without it, the run stays in one process); the result is the same as
+    with one. Small inputs stay in one process.
     ``checked``: when given, only the units it accepts are checked by the rules;
     the others are still read, expanded and parsed (they include files, share
     behavior files, are sibling missions). The language server uses it to keep
     only the findings one document can show. ``progress``: told of each file read and
     checked (:mod:`moos_lint.progress`).
     """
-    from moos_lint import parallel
-
-    jobs = parallel.effective_jobs(jobs, len(files))
+    jobs = parallel.effective_jobs(jobs, len(files)) if parallel is not None else 1
     if progress is not None:
         progress.start(len(files))
     cpp_files = [p for p in files if kind_of(p) == "cpp"]
-    workers = parallel.pool(jobs) if jobs > 1 and cpp_files else None
+    workers = parallel.pool(jobs) if parallel is not None and jobs > 1 and cpp_files else None
     try:
         # the workers read and parse the C++ (started first: they need no rule) while this
         # process loads the rules and reads the missions
-        cpp_parsed = parallel.start_cpp(workers, cpp_files) if workers is not None else None
+        cpp_parsed = None
+        if parallel is not None and workers is not None:
+            cpp_parsed = parallel.start_cpp(workers, cpp_files)
         if rules is None:
             rules = select_rules(settings.select, settings.extend_select, settings.ignore)
         run = LintRun(settings, rules, cache)
@@ -316,7 +338,7 @@ def lint_files(
             run.units.extend(units)
             result.internal_errors += len(cpp_errors)
     finally:
-        if workers is not None:
+        if parallel is not None and workers is not None:
             parallel.stop(workers)
     for unit in run.units:
         run.included_elsewhere.update(p for p in unit.expansion.sources if p != unit.path)
@@ -324,10 +346,10 @@ def lint_files(
     per_unit: Iterable[tuple[list[Diagnostic], int]]
     if progress is not None:
         progress.begin("checking", len(run.units))
-    parallel_rules = checked is None and jobs > 1 and len(run.units) > 1
+    parallel_rules = parallel is not None and checked is None and jobs > 1 and len(run.units) > 1
     if checked is not None:
         per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
-    elif parallel_rules:
+    elif parallel is not None and parallel_rules:
         per_unit = parallel.run_rules_parallel(run, jobs, progress)
     else:
         per_unit = (run.run_rules(unit) for unit in run.units)
@@ -377,28 +399,23 @@ def lint_paths(
     context: bool = False,
     cache: FileCache | None = None,
     jobs: int | None = 1,
-    cache_dir: str | None = None,
     progress: Progress | None = None,
+    parallel: Parallel | None = None,
 ) -> Result:
     """Discover files under ``paths`` and lint them.
 
     With ``context``, the missions under the project root that use one of the
     files (see :mod:`moos_lint.context`) are linted too, and only findings in
-    the given files or in those missions are kept. ``jobs``: see
-    :func:`lint_files`. With ``cache_dir`` (and no ``cache``), a run whose files
-    have not changed since it was last linted returns the stored result
-    (:mod:`moos_lint.cache`).
+    the given files or in those missions are kept. ``jobs``,
+    ``parallel``: see :func:`lint_files`. The result cache wraps this function
+    from outside (:func:`moos_lint.cache.cached_lint`).
     """
     paths = list(paths) or [Path(".")]
-    if cache_dir is not None and cache is None:
-        from moos_lint.cache import cached_lint
-
-        return cached_lint(
-            paths, settings, context=context, jobs=jobs, cache_dir=cache_dir, progress=progress
-        )
     found = discover(paths, settings.exclude, settings.root, settings.respect_gitignore)
     if not context:
-        result = lint_files(found.files, settings, cache=cache, jobs=jobs, progress=progress)
+        result = lint_files(
+            found.files, settings, cache=cache, jobs=jobs, progress=progress, parallel=parallel
+        )
         result.missing = found.missing
         return result
     from moos_lint.context import related_missions
@@ -406,7 +423,12 @@ def lint_paths(
     cache = cache or FileCache()
     missions = related_missions(found.files, settings, cache)
     result = lint_files(
-        [*found.files, *missions], settings, cache=cache, jobs=jobs, progress=progress
+        [*found.files, *missions],
+        settings,
+        cache=cache,
+        jobs=jobs,
+        progress=progress,
+        parallel=parallel,
     )
     keep = {os.path.normpath(p) for p in (*found.files, *missions)}
     result.diagnostics = [
@@ -422,6 +444,7 @@ __all__ = [
     "INTERNAL_ERROR",
     "Context",
     "LintRun",
+    "Parallel",
     "ReadProblem",
     "Result",
     "Unit",

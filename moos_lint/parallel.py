@@ -215,4 +215,12 @@ def run_rules_parallel(
     return results
 
 
-__all__ = ["MIN_FILES", "default_jobs", "effective_jobs", "run_rules_parallel", "start_cpp"]
+__all__ = [
+    "MIN_FILES",
+    "default_jobs",
+    "effective_jobs",
+    "pool",
+    "run_rules_parallel",
+    "start_cpp",
+    "stop",
+]

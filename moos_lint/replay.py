@@ -43,6 +43,7 @@ import marshal
 import os
 import sys
 
+import moos_lint
 from moos_lint import __version__
 from moos_lint.markers import CACHE_DIR, CONFIG_FILES, VCS_MARKERS
 from moos_lint.stamps import file_stamp, folder_mtime, package_stamps
@@ -58,7 +59,7 @@ ENV = (
     "NO_COLOR",
     "FORCE_COLOR",
 )
-_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+_PACKAGE = os.path.dirname(os.path.abspath(moos_lint.__file__))
 
 
 def identity(argv: list[str]) -> list:

@@ -114,7 +114,9 @@ def counted(monkeypatch):
 
 
 def _cached(tree: Path, cache_dir: Path):
-    return engine.lint_paths([tree], _settings(tree), cache_dir=str(cache_dir))
+    return result_cache.cached_lint(
+        [tree], _settings(tree), context=False, jobs=1, cache_dir=str(cache_dir)
+    )
 
 
 def test_the_cache_skips_an_unchanged_run(tree, tmp_path, counted):
@@ -185,7 +187,7 @@ def test_a_changed_setting_is_another_entry(tree, tmp_path, counted):
     _cached(tree, store)
     settings = _settings(tree)
     settings.ignore = ["R"]
-    engine.lint_paths([tree], settings, cache_dir=str(store))
+    result_cache.cached_lint([tree], settings, context=False, jobs=1, cache_dir=str(store))
     assert len(counted) == 2
 
 
@@ -238,7 +240,12 @@ def test_jobs_2_gives_the_output_of_jobs_1():
     files = engine.discover([FIXTURES], settings.exclude, settings.root).files
     assert parallel.effective_jobs(2, len(files)) == 2  # the pool really runs
     one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
-    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
     assert json.loads(two) == json.loads(one)
     assert two == one
 
@@ -260,7 +267,12 @@ def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
     settings = resolve_settings([FIXTURES], None)
     one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
     monkeypatch.setattr(parallel, phase, _die)
-    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
     assert two == one
 
 

@@ -210,7 +210,12 @@ def test_the_main_process_takes_the_cpp_folders_no_worker_started(monkeypatch):
 
     monkeypatch.setattr(parallel, "_cpp_folder", _slow_worker)
     monkeypatch.setattr(parallel, "cpp_folder_facts", counted)
-    two = render("json", engine.lint_paths([FIXTURES], resolve_settings([FIXTURES], None), jobs=2))
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
     assert two == one
     assert here, "the main process left every C++ folder to the workers"
 
