@@ -28,14 +28,16 @@ _LOADED = False
 
 
 def load_rules() -> None:
-    """Import every rule module (each declares its rule)."""
+    """Import every module under :mod:`moos_lint.rules` (each rule module declares its rule)."""
     global _LOADED
     if _LOADED:
         return
     import moos_lint.rules as pkg
 
-    for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda m: m.name):
-        importlib.import_module(f"{pkg.__name__}.{info.name}")
+    # rule modules may sit in sub-packages (one per family): walk them all
+    found = pkgutil.walk_packages(pkg.__path__, prefix=f"{pkg.__name__}.")
+    for name in sorted(info.name for info in found):
+        importlib.import_module(name)
     _LOADED = True
 
 

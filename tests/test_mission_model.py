@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.catalogue import Catalogue, CatalogueError, load_user_catalogue, stock
+from moos_lint.catalogue import STOCK, Catalogue, CatalogueError, load_user_catalogue, stock
 from moos_lint.catalogue.generate import _names
 from moos_lint.cli import main
 from moos_lint.config import ConfigError, Settings, load_config
@@ -50,7 +50,7 @@ def test_stock_catalogue_records_its_source_and_corrections():
 
 
 def test_stock_json_says_which_entries_were_corrected():
-    path = Path(__file__).resolve().parents[1] / "moos_lint" / "catalogue" / "stock.json"
+    path = Path(STOCK)
     data = json.loads(path.read_text(encoding="utf-8"))
     corrected = [n for n, a in data["apps"].items() if a.get("corrected")]
     assert {"pHelmIvP", "pShare", "uSimMarineV22", "pMOOSBridge"} <= set(corrected)
