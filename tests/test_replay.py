@@ -15,7 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint import replay
+import moos_lint
+from moos_lint import engine, replay
 from moos_lint.cli import main
 from tests.test_performance import BEHAVIORS, MISSION, PLUG
 
@@ -222,10 +223,11 @@ def test_a_second_checkout_of_the_same_version_lints_afresh(tree, tmp_path):
     import shutil
 
     checkout = tmp_path / "checkout"
-    package = Path(replay.__file__).resolve().parent
+    package = Path(moos_lint.__file__).resolve().parent
     shutil.copytree(package, checkout / "moos_lint", ignore=shutil.ignore_patterns("__pycache__"))
     linted = tmp_path / "linted-by-the-second-checkout"
-    with open(checkout / "moos_lint" / "engine.py", "a", encoding="utf-8") as fh:
+    engine_file = Path(engine.__file__).resolve().relative_to(package)
+    with open(checkout / "moos_lint" / engine_file, "a", encoding="utf-8") as fh:
         fh.write(f"\nopen({str(linted)!r}, 'w').close()  # this checkout lints\n")
 
     def run(pythonpath: str | None) -> subprocess.CompletedProcess:
