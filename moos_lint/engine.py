@@ -29,7 +29,6 @@ from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
-from moos_lint.progress import Progress
 from moos_lint.registry import (
     Kind,
     Rule,
@@ -45,8 +44,9 @@ from moos_lint.source import ReadProblem, SourceFile
 from moos_lint.suppressions import Suppression, parse_suppressions
 from moos_lint.unit import Unit
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the progress display is the command line's; the engine only tells it
     from moos_lint.cpp.units import ParsedFolder
+    from moos_lint.progress import Progress
 
 
 @dataclass
