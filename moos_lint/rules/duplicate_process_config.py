@@ -34,18 +34,27 @@ from moos_lint.diagnostics import Severity
 
 @rule(code="R011", name="duplicate-process-config", severity=Severity.ERROR, scope=Scope.FILE)
 def check(ctx):
-    seen: dict[str, list] = {}
+    # Per name, the first block of each distinct set of ``#ifdef`` branches, in order:
+    # a block's first compatible predecessor is among them. Blocks outside any branch
+    # are compatible with all, so none after the first such block is kept, and a file
+    # of many duplicate blocks is checked in linear time.
+    firsts: dict[str, dict[tuple, object]] = {}
+    closed: set[str] = set()  # names with a block outside any branch
     for block in ctx.moos.blocks:
-        earlier = [b for b in seen.get(block.lname, []) if not b.header.excludes(block.header)]
-        if earlier:
-            first = earlier[0]
+        header = block.header
+        kept = firsts.setdefault(block.lname, {})
+        first = next((b for b in kept.values() if not b.header.excludes(header)), None)
+        if first is not None:
             yield ctx.report(
                 block.name_span,
                 f"second block for `{block.name}` (first at "
                 f"{_where(first.header)}): MOOS ignores this one",
-                line=block.header,
+                line=header,
             )
-        seen.setdefault(block.lname, []).append(block)
+        if block.lname not in closed and header.branches not in kept:
+            kept[header.branches] = block
+            if not header.branches:
+                closed.add(block.lname)
 
 
 def _where(line) -> str:
