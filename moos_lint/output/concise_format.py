@@ -4,14 +4,14 @@ from __future__ import annotations
 
 from collections import Counter
 
-from moos_lint.output import display_path
+from moos_lint.output import shown_path
 from moos_lint.output.color import Palette
 
 
 def render(result, cwd: str, *, statistics: bool = False, color: bool = False, **_kw) -> str:
     pal = Palette(color)
     out = [
-        f"{pal.location(display_path(d.span.path, cwd), d.span.line, d.span.col)} "
+        f"{pal.location(shown_path(d.span.path, cwd), d.span.line, d.span.col)} "
         f"{pal.code(d.code)} [{d.name}] {_one_line(d.message)}"
         for d in result.diagnostics
     ]

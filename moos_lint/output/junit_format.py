@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 
-from moos_lint.output import display_path
+from moos_lint.output import inert, shown_path
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 if TYPE_CHECKING:
@@ -47,7 +47,7 @@ def render(result: Result, cwd: str, **_kw) -> str:
         time="0",
     )
     for path in sorted(by_file):
-        shown = _clean(display_path(path, cwd))
+        shown = _clean(shown_path(path, cwd))
         diags = by_file[path]
         if not diags:
             ET.SubElement(suite, "testcase", classname=shown, name="moos-lint", time="0")
@@ -69,8 +69,8 @@ def render(result: Result, cwd: str, **_kw) -> str:
                 message=_clean(f"{d.code} [{d.name}] {d.message}"),
                 type=d.severity.value,
             )
-            body = [f"{shown}:{s.line}:{s.col}: {d.code} [{d.name}] {d.message}"]
-            body += [f"included from {display_path(c.path, cwd)}:{c.line}" for c in d.chain]
+            body = [f"{shown}:{s.line}:{s.col}: {d.code} [{d.name}] {inert(d.message)}"]
+            body += [f"included from {shown_path(c.path, cwd)}:{c.line}" for c in d.chain]
             failure.text = _clean("\n".join(body))
     ET.indent(suites)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(suites, "unicode") + "\n"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections import Counter
 
-from moos_lint.output import display_path
+from moos_lint.output import inert, shown_path
 from moos_lint.output.color import Palette
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
@@ -39,8 +39,8 @@ def render(
     pal = Palette(color)
     for d in result.diagnostics:
         s = d.span
-        where = pal.location(display_path(s.path, cwd), s.line, s.col)
-        out.append(f"{where} {pal.code(d.code)} [{d.name}] {d.message}")
+        where = pal.location(shown_path(s.path, cwd), s.line, s.col)
+        out.append(f"{where} {pal.code(d.code)} [{d.name}] {inert(d.message)}")
         src = result.sources.get(s.path)
         if src is not None and 1 <= s.line <= len(src.lines):
             text, caret = _excerpt(src.lines[s.line - 1], s.col, s.end_col, s.end_line == s.line)
@@ -51,7 +51,7 @@ def render(
             out.append(f"  {pal.gutter(num)} {bar} {text}")
             out.append(f"  {pad} {bar} {pal.caret(caret)}")
         for site in reversed(d.chain):
-            out.append(f"  = included from {display_path(site.path, cwd)}:{site.line}")
+            out.append(f"  = included from {shown_path(site.path, cwd)}:{site.line}")
         out.append("")
     if statistics:
         counts = Counter((d.code, d.name) for d in result.diagnostics)
