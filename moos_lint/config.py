@@ -91,6 +91,9 @@ class Settings:
         self.cache_dir = cache_dir
         #: leave out what git ignores (``.gitignore``, ``.ignore``, global excludes)
         self.respect_gitignore = respect_gitignore
+        #: the run's project root (:mod:`moos_lint.project`), set by the command line and
+        #: the language server: no text of a file outside it is shown (:mod:`moos_lint.boundary`)
+        self.project_root: str | None = None
 
     def __repr__(self) -> str:
         fields = ", ".join(f"{k}={v!r}" for k, v in vars(self).items())

@@ -119,3 +119,45 @@ def test_config_key_and_cli_flag(tmp_path):
     cfg.write_text('cpp-backend = "gcc"\n')
     with pytest.raises(ConfigError):
         load_config(cfg)
+
+
+# ------------------------------------------------------- a repository's compile database
+
+
+def test_only_parse_shaping_flags_reach_libclang():
+    from moos_lint.cpp.clang import parse_flags
+
+    crafted = [
+        *("-include", "/etc/passwd", "-include/etc/shadow"),
+        *("-fplugin=/tmp/evil.so", "-Xclang", "-load", "-Xclang", "/tmp/evil.so"),
+        *("-fmodules-cache-path=/tmp/m", "-fmodules", "-o", "/tmp/out.o", "-MF", "/tmp/d"),
+        *("-MD", "-c", "x.cpp", "--serialize-diagnostics", "/tmp/s", "-stdlib=libc++"),
+        *("-Iinc", "-I", "/abs/inc", "-isystem", "sys", "-isystem/abs/sys"),
+        *("-DA=1", "-D", "B", "-UC", "-U", "D", "-std=c++17", "-std", "c++20"),
+    ]
+    assert parse_flags(crafted, "/build") == [
+        "-I/build/inc",
+        "-I/abs/inc",
+        *("-isystem", "/build/sys", "-isystem", "/abs/sys"),
+        *("-DA=1", "-DB", "-UC", "-UD", "-std=c++17", "-std=c++20"),
+    ]
+
+
+def test_compile_database_search_stops_at_the_project_root(tmp_path):
+    from moos_lint.cpp.clang import find_compile_commands
+
+    project = tmp_path / "project"
+    app = project / "src" / "pApp"
+    app.mkdir(parents=True)
+    (tmp_path / "compile_commands.json").write_text("[]")  # above the project: never used
+    settings = Settings(root=str(project))
+    settings.project_root = str(project)
+    assert find_compile_commands(settings, [str(app)]) is None
+    (project / "build").mkdir()
+    (project / "build" / "compile_commands.json").write_text("[]")
+    assert find_compile_commands(settings, [str(app)]) == str(project / "build")
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    (elsewhere / "compile_commands.json").write_text("[]")
+    (project / "build" / "compile_commands.json").unlink()
+    assert find_compile_commands(settings, [str(elsewhere)]) is None

@@ -19,6 +19,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from moos_lint.cpp.model import AppModel, Publication, Subscription
+from moos_lint.project import is_within
 from moos_lint.suffixes import is_cpp_source
 
 if TYPE_CHECKING:
@@ -52,20 +53,24 @@ def load_cindex() -> Any | None:
 
 
 def find_compile_commands(settings: Settings, folders: list[str]) -> str | None:
-    """The folder holding compile_commands.json: given, else at or above the linted code."""
+    """The folder holding compile_commands.json: given, else at or above the linted code,
+    up to the project root and never above it (a database above is no part of the project)."""
     given = settings.compile_commands
     if given:
         folder = os.path.dirname(given) if given.endswith(".json") else given
         return folder if os.path.isfile(os.path.join(folder, "compile_commands.json")) else None
-    starts = [settings.root, *folders]
+    root = os.path.abspath(settings.project_root or settings.root)
+    starts = [root, *folders]
     for start in starts:
         here = os.path.abspath(start)
+        if not is_within(here, root):
+            continue
         while True:
             for sub in ("", "build"):
                 if os.path.isfile(os.path.join(here, sub, "compile_commands.json")):
                     return os.path.join(here, sub)
             parent = os.path.dirname(here)
-            if parent == here:
+            if here == root or parent == here:
                 break
             here = parent
     return None
@@ -89,23 +94,45 @@ def system_include() -> str | None:
     return None
 
 
+#: The flags that shape how a file parses, each with its value joined (``-DX=1``) or as
+#: the next argument (``-D X``). Nothing else a repository's compile database holds
+#: reaches libclang: not ``-include``, plugins (``-fplugin``, ``-Xclang``), module
+#: caches, output or dependency files.
+_PARSE_FLAGS = ("-isystem", "-I", "-D", "-U", "-std")
+_FOLDER_FLAGS = ("-isystem", "-I")
+
+
 def _args(cmd: Any, path: str) -> list[str]:
-    """A compile command's flags, without the compiler, the source and the output."""
-    raw = list(cmd.arguments)[1:]
+    """The parse-shaping flags of a compile command (see ``_PARSE_FLAGS``), relative
+    folders made absolute against the command's directory."""
+    return parse_flags(list(cmd.arguments)[1:], cmd.directory)
+
+
+def parse_flags(arguments: list[str], directory: str) -> list[str]:
+    """The flags of ``arguments`` that libclang may see, in their joined form."""
     out: list[str] = []
-    skip = False
-    for a in raw:
-        if skip:
-            skip = False
+    it = iter(arguments)
+    for a in it:
+        flag = next((f for f in _PARSE_FLAGS if a.startswith(f)), None)
+        if flag is None:
             continue
-        if a in ("-o", "-MF", "-MT", "-MQ"):
-            skip = True
-            continue
-        if a in ("-c", "-MD", "-MMD") or os.path.abspath(os.path.join(cmd.directory, a)) == path:
-            continue
-        if a.startswith(("-I", "-isystem")) and len(a) > 2 and not os.path.isabs(a[2:]):
-            a = a[:2] + os.path.join(cmd.directory, a[2:])
-        out.append(a)
+        value = a[len(flag) :]
+        if flag == "-std":
+            if value.startswith("="):
+                value = value[1:]
+            elif value:  # -stdlib=..., not -std
+                continue
+        if not value:
+            value = next(it, "")
+            if not value:
+                continue
+        if flag in _FOLDER_FLAGS:
+            value = os.path.join(directory, value)
+            out += [flag, value] if flag == "-isystem" else [flag + value]
+        elif flag == "-std":
+            out.append(f"-std={value}")
+        else:
+            out.append(flag + value)
     return out
 
 
