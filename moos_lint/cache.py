@@ -233,6 +233,8 @@ def store(
         internal_errors=result.internal_errors,
         missing=result.missing,
         sources={p: s for p, s in result.sources.items() if p in keep},
+        outside=result.outside,
+        outside_links=result.outside_links,
     )
     try:
         # first the folder: creating it changes its parent's mtime, which the entry records

@@ -322,8 +322,10 @@ def main(argv: list[str] | None = None) -> int:
 
 def _settings(args: argparse.Namespace):
     from moos_lint.config import ConfigError, resolve_settings
+    from moos_lint.project import project_root
 
     settings = resolve_settings(list(args.paths), args.config)
+    settings.project_root = project_root(args.paths, settings.config_path)
     for opt in ("select", "extend_select", "ignore"):
         for sel in _csv(getattr(args, opt)):
             from moos_lint.registry import is_valid_selector
@@ -477,6 +479,7 @@ def _check(args: argparse.Namespace, settings) -> int:
         from moos_lint.fix import fix_until_stable
 
         outcome = fix_until_stable(lint, first=result)
+        _keep_inside(outcome, settings.project_root)
         if args.diff:
             return _show_diff(args, outcome)
         written = _write_fixes(outcome)
@@ -617,6 +620,24 @@ def _show_diff(args: argparse.Namespace, outcome) -> int:
         n, files = outcome.fixed, len(outcome.changed)
         print(f"moos-lint: would fix {n} finding(s) in {files} file(s)", file=sys.stderr)
     return EXIT_FINDINGS if outcome.changed else EXIT_CLEAN
+
+
+def _keep_inside(outcome, root: str | None) -> None:
+    """Never write (nor show the text of) a file whose real path lies outside the
+    project, a link inside the project to a file outside included; say so."""
+    if root is None:
+        return
+    from moos_lint.output import shown_path
+    from moos_lint.project import real_within
+
+    for doc in outcome.changed:
+        if not real_within(doc.path, root):
+            del outcome.docs[doc.path]
+            print(
+                f"moos-lint: not fixing {shown_path(doc.path)}: "
+                "its real path lies outside the project",
+                file=sys.stderr,
+            )
 
 
 def _write_fixes(outcome) -> int | None:

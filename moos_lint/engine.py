@@ -14,6 +14,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from moos_lint.boundary import Boundary, split_linted
+from moos_lint.boundary import apply as apply_boundary
 from moos_lint.config import Settings
 from moos_lint.diagnostics import (
     INTERNAL_ERROR,
@@ -310,6 +312,10 @@ def lint_files(
     only the findings one document can show. ``progress``: told of each file read and
     checked (:mod:`moos_lint.progress`).
     """
+    bound = Boundary(settings.project_root) if settings.project_root else None
+    outside_links: list[str] = []
+    if bound is not None:  # a link to a file outside the project is not linted
+        files, outside_links = split_linted(files, bound)
     jobs = parallel.effective_jobs(jobs, len(files)) if parallel is not None else 1
     if progress is not None:
         progress.start(len(files))
@@ -324,7 +330,7 @@ def lint_files(
         if rules is None:
             rules = select_rules(settings.select, settings.extend_select, settings.ignore)
         run = LintRun(settings, rules, cache)
-        result = Result(files=list(files))
+        result = Result(files=list(files), outside_links=outside_links)
         for path in files:
             if kind_of(path) != "cpp":
                 run.units.append(run.build_unit(path))
@@ -370,10 +376,21 @@ def lint_files(
                 where = files[0] if files else "."
                 kept.append(internal_error(where, f"in rule {r.code} ({r.name})", exc))
     kept.sort(key=lambda d: d.sort_key)
+    if bound is not None:
+        kept, result.outside = apply_boundary(kept, bound, _texts_read(run))
     result.diagnostics = kept
     result.sources = run.sources
     result.units = run.units
     return result
+
+
+def _texts_read(run: LintRun) -> dict[str, str]:
+    """The text of every file the run read (what a message may quote), by path."""
+    texts = {path: src.text for path, src in run.sources.items()}
+    for exp in (run.preprocessor.memo or {}).values():
+        for path, src in exp.sources.items():
+            texts.setdefault(path, src.text)
+    return texts
 
 
 def _empty_unit() -> Unit:

@@ -24,6 +24,11 @@ class Result:
     missing: list[str] = field(default_factory=list)
     sources: dict[str, SourceFile] = field(default_factory=dict)
     baselined: int = 0  # findings hidden by --baseline
+    #: findings not listed because they lie in a file outside the project, per file
+    #: (see :mod:`moos_lint.boundary`)
+    outside: dict[str, int] = field(default_factory=dict)
+    #: linted paths that are links to files outside the project (not linted)
+    outside_links: list[str] = field(default_factory=list)
     #: the linted files' expansions and models (engine units), in the order given
     units: list[Unit] = field(default_factory=list)
     #: the result cache entry this result is stored in (see :mod:`moos_lint.cache`)

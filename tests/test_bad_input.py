@@ -91,8 +91,9 @@ def build_tree(tmp_path: Path) -> tuple[Path, set[tuple[str, int, str]]]:
     os.mkfifo(tree / "a-fifo")
     (tree / "include-fifo.moos").write_text("#include a-fifo\nServerPort = 9000\n")
     want("include-fifo.moos", 1, "P001")
+    # A link to a file outside the project is not linted: one note (L901).
     os.symlink("/dev/zero", tree / "zero.moos")
-    want("zero.moos", 1, "R001")
+    want("zero.moos", 1, "L901")
 
     # Symlink loops and a dangling link in discovery.
     (tree / "links").mkdir()
@@ -104,13 +105,13 @@ def build_tree(tmp_path: Path) -> tuple[Path, set[tuple[str, int, str]]]:
     for name in ("a.moos", "b.moos", "dangling.moos"):
         want(f"links/{name}", 1, "R001")
 
-    # An include of a file outside the linted tree: read (it is a regular file), and
-    # its findings carry the include chain.
+    # An include of a file outside the project: read (it is part of the mission), but
+    # its findings are not listed: one note (L901) names the file and counts them.
     outside = tmp_path / "elsewhere" / "outside.plug"
     outside.parent.mkdir()
     outside.write_text("ServerPort = 9000\n}\n")
     (tree / "include-outside.moos").write_text(f"#include {outside}\n")
-    want(os.path.relpath(outside, tree), 2, "R006")
+    want(os.path.relpath(outside, tree), 1, "L901")
 
     # An include chain 1,000 deep (the chain files have a suffix that is not linted alone).
     chain = tree / "_chain"
@@ -141,7 +142,9 @@ def test_bad_input_tree_end_to_end(tmp_path):
     messages = {d["path"]: d["message"] for d in found if d["code"] == "R001"}
     assert "directory" in messages["folder.moos"]
     assert "not a regular file" in messages["fifo.moos"]
-    assert "not a regular file" in messages["zero.moos"]
+    notes = {d["path"]: d["message"] for d in found if d["code"] == "L901"}
+    assert notes["zero.moos"] == "a link to a file outside the project: not linted"
+    assert notes[str(tmp_path / "elsewhere" / "outside.plug")].startswith("1 finding in this")
     assert "NUL" in messages["binary.moos"]
     assert "symbolic links" in messages[os.path.join("links", "a.moos")]
 

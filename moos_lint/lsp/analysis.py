@@ -22,6 +22,7 @@ from moos_lint.discovery import DEFAULT_EXCLUDE, _excluded, kind_of
 from moos_lint.engine import Unit, lint_files
 from moos_lint.lsp.documents import memory_reader, norm
 from moos_lint.nsplug import ExpansionStore, FileCache
+from moos_lint.project import project_root
 from moos_lint.source import read_bytes
 
 # re-linting a C++ file reparses only the files of its folder that changed
@@ -98,9 +99,11 @@ def lintable(path: str) -> bool:
 def settings_for(path: str) -> tuple[Settings, str | None]:
     """The settings ``moos-lint check`` would use for ``path``, and a config error."""
     try:
-        return resolve_settings([Path(path)], None), None
+        settings, error = resolve_settings([Path(path)], None), None
     except ConfigError as exc:
-        return Settings(root=os.path.dirname(path)), str(exc)
+        settings, error = Settings(root=os.path.dirname(path)), str(exc)
+    settings.project_root = project_root([path], settings.config_path)
+    return settings, error
 
 
 def neighbours(path: str, settings: Settings) -> list[str]:

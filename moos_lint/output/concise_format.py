@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from moos_lint.boundary import notes
 from moos_lint.output import shown_path
 from moos_lint.output.color import Palette
 
@@ -15,6 +16,7 @@ def render(result, cwd: str, *, statistics: bool = False, color: bool = False, *
         f"{pal.code(d.code)} [{d.name}] {_one_line(d.message)}"
         for d in result.diagnostics
     ]
+    out += [f"note: {shown_path(path, cwd)}: {note}" for path, note in notes(result)]
     if statistics:
         counts = Counter((d.code, d.name) for d in result.diagnostics)
         for (code, name), n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):

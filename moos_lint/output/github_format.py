@@ -7,6 +7,7 @@ format is chosen automatically when ``GITHUB_ACTIONS=true`` and no
 
 from __future__ import annotations
 
+from moos_lint.boundary import OUTSIDE_CODE, OUTSIDE_NAME, notes
 from moos_lint.diagnostics import Severity
 from moos_lint.output import display_path
 
@@ -42,4 +43,7 @@ def render(result, cwd: str, **_kw) -> str:
             message += f"\nincluded from {display_path(site.path, cwd)}:{site.line}"
         head = ",".join(f"{k}={escape_property(v)}" for k, v in props)
         out.append(f"::{COMMANDS[d.severity]} {head}::{escape_data(message)}")
+    for path, note in notes(result):  # no file= : the file is not in the repository
+        text = f"{display_path(path, cwd)}: {note}"
+        out.append(f"::notice title={OUTSIDE_CODE} {OUTSIDE_NAME}::{escape_data(text)}")
     return "".join(line + "\n" for line in out)

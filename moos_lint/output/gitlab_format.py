@@ -12,6 +12,7 @@ import hashlib
 import json
 import re
 
+from moos_lint.boundary import OUTSIDE_CODE, OUTSIDE_NAME, notes
 from moos_lint.diagnostics import Severity
 from moos_lint.output import display_path
 
@@ -54,6 +55,20 @@ def render(result: Result, cwd: str, **_kw) -> str:
                     "path": path,
                     "lines": {"begin": d.span.line, "end": max(d.span.end_line, d.span.line)},
                 },
+            }
+        )
+    for path, note in notes(result):
+        shown = display_path(path, cwd).replace("\\", "/")
+        key = fingerprint_key(OUTSIDE_CODE, shown, note, "")
+        out.append(
+            {
+                "description": f"{OUTSIDE_CODE} [{OUTSIDE_NAME}] {note}",
+                "check_name": OUTSIDE_CODE,
+                "fingerprint": hashlib.sha256(key.encode("utf-8", "surrogatepass")).hexdigest()[
+                    :32
+                ],
+                "severity": "info",
+                "location": {"path": shown, "lines": {"begin": 1, "end": 1}},
             }
         )
     return json.dumps(out, indent=2) + "\n"

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 
+from moos_lint.boundary import OUTSIDE_CODE, OUTSIDE_NAME, notes
 from moos_lint.diagnostics import Diagnostic
 from moos_lint.output import display_path
 
@@ -43,8 +44,26 @@ def to_dict(d: Diagnostic, cwd: str) -> dict:
     }
 
 
+def note_dict(path: str, note: str, cwd: str) -> dict:
+    """A boundary note (see :mod:`moos_lint.boundary`), shaped like a finding."""
+    return {
+        "code": OUTSIDE_CODE,
+        "name": OUTSIDE_NAME,
+        "severity": "info",
+        "path": display_path(path, cwd),
+        "line": 1,
+        "column": 1,
+        "end_line": 1,
+        "end_column": 1,
+        "message": note,
+        "fix": None,
+        "include_chain": [],
+    }
+
+
 def render(result, cwd: str, **_kw) -> str:
     items = [to_dict(d, cwd) for d in result.diagnostics]
+    items += [note_dict(path, note, cwd) for path, note in notes(result)]
     if not items:
         return "[]\n"
     # one finding per line: the same JSON, written by the C encoder (indent= is pure Python)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 
+from moos_lint.boundary import OUTSIDE_NAME, notes
 from moos_lint.output import inert, shown_path
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
@@ -32,7 +33,9 @@ def render(result: Result, cwd: str, **_kw) -> str:
     for d in result.diagnostics:
         by_file.setdefault(d.span.path, []).append(d)
     n_fail = len(result.diagnostics)
-    n_tests = sum(max(len(v), 1) for v in by_file.values())
+    boundary_notes = notes(result)
+    n_skipped = len(boundary_notes)
+    n_tests = sum(max(len(v), 1) for v in by_file.values()) + n_skipped
     suites = ET.Element(
         "testsuites", name="moos-lint", tests=str(n_tests), failures=str(n_fail), errors="0"
     )
@@ -43,7 +46,7 @@ def render(result: Result, cwd: str, **_kw) -> str:
         tests=str(n_tests),
         failures=str(n_fail),
         errors="0",
-        skipped="0",
+        skipped=str(n_skipped),
         time="0",
     )
     for path in sorted(by_file):
@@ -72,5 +75,9 @@ def render(result: Result, cwd: str, **_kw) -> str:
             body = [f"{shown}:{s.line}:{s.col}: {d.code} [{d.name}] {inert(d.message)}"]
             body += [f"included from {shown_path(c.path, cwd)}:{c.line}" for c in d.chain]
             failure.text = _clean("\n".join(body))
+    for path, note in boundary_notes:  # a file outside the project: not shown
+        shown = _clean(shown_path(path, cwd))
+        case = ET.SubElement(suite, "testcase", classname=shown, name=OUTSIDE_NAME, time="0")
+        ET.SubElement(case, "skipped", message=_clean(note))
     ET.indent(suites)
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(suites, "unicode") + "\n"

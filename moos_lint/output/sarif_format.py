@@ -15,6 +15,7 @@ from pathlib import Path
 from urllib.parse import quote
 
 from moos_lint import __version__
+from moos_lint.boundary import OUTSIDE_CODE, notes
 from moos_lint.diagnostics import Diagnostic, Fix, Severity, Span
 from moos_lint.registry import Rule, all_rules, doc_sections
 
@@ -123,6 +124,24 @@ def _result(d: Diagnostic, index: int, cwd: str) -> dict:
     return out
 
 
+def _invocation(result: Result, cwd: str) -> dict:
+    """The run's invocation: whether it succeeded, and a notification for each file
+    outside the project whose findings are not shown (see :mod:`moos_lint.boundary`)."""
+    out: dict = {"executionSuccessful": not result.internal_errors}
+    boundary_notes = notes(result)
+    if boundary_notes:
+        out["toolExecutionNotifications"] = [
+            {
+                "descriptor": {"id": OUTSIDE_CODE},
+                "level": "note",
+                "message": {"text": note},
+                "locations": [{"physicalLocation": {"artifactLocation": _artifact(path, cwd)}}],
+            }
+            for path, note in boundary_notes
+        ]
+    return out
+
+
 def to_sarif(result: Result, cwd: str) -> dict:
     rules = all_rules()
     descriptors = [_rule_descriptor(r) for r in rules]
@@ -150,7 +169,7 @@ def to_sarif(result: Result, cwd: str) -> dict:
                 },
                 "originalUriBaseIds": {SRCROOT: {"uri": root_uri}},
                 "columnKind": "unicodeCodePoints",
-                "invocations": [{"executionSuccessful": not result.internal_errors}],
+                "invocations": [_invocation(result, cwd)],
                 "results": results,
             }
         ],

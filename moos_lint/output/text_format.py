@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from moos_lint.boundary import notes
 from moos_lint.output import inert, shown_path
 from moos_lint.output.color import Palette
 
@@ -53,6 +54,8 @@ def render(
         for site in reversed(d.chain):
             out.append(f"  = included from {shown_path(site.path, cwd)}:{site.line}")
         out.append("")
+    for path, note in notes(result):
+        out.append(f"note: {shown_path(path, cwd)}: {note}")
     if statistics:
         counts = Counter((d.code, d.name) for d in result.diagnostics)
         for (code, name), n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0])):
