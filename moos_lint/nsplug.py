@@ -48,6 +48,13 @@ DEFINED = "<defined>"
 #: whole include tree, so a deeper chain costs every file above it time and memory.
 MAX_INCLUDE_DEPTH = 100
 MAX_SUBS_PER_LINE = 100
+#: The budget of one file's expansion: the lines read (every included copy counted) and
+#: the characters its macros expand to. An include bomb (a file included many times at
+#: many levels) or a macro that doubles at each level stops there, with a finding at
+#: the line that ran over, instead of growing without bound.
+MAX_EXPANDED_LINES = 400_000
+MAX_MACRO_CHARS = 16 * 2**20
+MAX_LINE_CHARS = 2**20
 #: ``#ifdef`` group numbers, unique in the process (expansions may be kept across runs)
 _GROUPS = itertools.count(1)
 
@@ -319,7 +326,7 @@ class Preprocessor:
                 changed = True
                 subs += 1
                 break
-            if not changed:
+            if not changed or len(text) > MAX_LINE_CHARS:
                 break
         text = _MACRO_DEFAULT.sub(lambda m: self._default(m, macros), text)
         if self.mode == "nsplug" and not self.lenient and ("$(" in text or "%(" in text):
@@ -444,6 +451,8 @@ class Preprocessor:
         # The files on the include stack, for an include-loop check in O(1).
         active = {site.path for site in chain}
         active.add(str(src.path))
+        lines_left = MAX_EXPANDED_LINES
+        chars_left = MAX_MACRO_CHARS
         while stack:
             work = stack[-1]
             src = work.src
@@ -459,6 +468,10 @@ class Preprocessor:
             work.idx += 1
             here = Line(raw, raw, path, work.idx, work.chain)
             frames = work.frames
+            lines_left -= 1
+            if lines_left < 0:
+                self._over_budget(exp, here, f"more than {MAX_EXPANDED_LINES:,} lines")
+                return
 
             tag_match = _TAG_LINE.match(raw) if "<tag>" in raw else None
             if tag_match:  # <tag> lines are never written out
@@ -468,12 +481,20 @@ class Preprocessor:
                 # Inside a tagged section nsplug skips lines starting with '#'.
                 if work.in_tag and not raw.lstrip().startswith("#"):
                     exp.lines.append(self._out_line(here, macros, frames, work.outer))
+                    chars_left -= len(here.text)
+                    if chars_left < 0 or len(here.text) > MAX_LINE_CHARS:
+                        self._over_budget(exp, here, "macros that grow without bound")
+                        return
                 continue
 
             if not raw.lstrip().startswith("#"):  # not a directive: the common line
                 if not work.n_false:  # (``_out_line``, inlined: most lines come here)
                     if "(" in raw:
                         here.text = self.expand_macros(raw, macros)
+                        chars_left -= len(here.text)
+                        if chars_left < 0 or len(here.text) > MAX_LINE_CHARS:
+                            self._over_budget(exp, here, "macros that grow without bound")
+                            return
                     here.branches = work.branches
                     exp.lines.append(here)
                 continue
@@ -511,6 +532,21 @@ class Preprocessor:
                 continue
             self._unknown_directive(exp, here)  # a line starting with '#', not a directive
             exp.lines.append(self._out_line(here, macros, frames, work.outer, branches))
+            chars_left -= len(here.text)
+            if chars_left < 0 or len(here.text) > MAX_LINE_CHARS:
+                self._over_budget(exp, here, "macros that grow without bound")
+                return
+
+    def _over_budget(self, exp: Expansion, here: Line, what: str) -> None:
+        """Stop expanding a file that grows past its budget (see MAX_EXPANDED_LINES)."""
+        exp.incomplete = True
+        self._problem(
+            exp,
+            "include-cycle",
+            here,
+            f"this file's includes and macros expand to {what}: moos-lint stops reading "
+            "it here (nsplug would take as long, or run out of memory)",
+        )
 
     def _conditional(
         self,

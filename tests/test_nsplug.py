@@ -192,3 +192,50 @@ def test_span_maps_expanded_text_back(tmp_path):
     assert line.text == "  Community = alpha  "
     span = line.span(line.text.index("Community"), line.text.index("Community") + 9)
     assert (span.line, span.col, span.end_col) == (2, 3, 12)
+
+
+def _include_bomb(folder: Path, fan_out: int = 10, levels: int = 8) -> Path:
+    """A mission whose include tree multiplies: ``fan_out ** levels`` leaf copies."""
+    (folder / f"l{levels}.inc").write_text("// leaf\nAppTick = 4\n")
+    for i in range(levels - 1, 0, -1):
+        (folder / f"l{i}.inc").write_text(f"#include l{i + 1}.inc\n" * fan_out)
+    top = folder / "bomb.moos"
+    top.write_text("ServerPort = 9000\n#include l1.inc\n")
+    return top
+
+
+def test_an_include_bomb_stops_at_its_budget(tmp_path, monkeypatch):
+    import moos_lint.nsplug as nsplug
+
+    monkeypatch.setattr(nsplug, "MAX_EXPANDED_LINES", 5_000)
+    exp = Preprocessor().expand(_include_bomb(tmp_path))
+    assert exp.incomplete
+    [problem] = [p for p in exp.problems if p.kind == "include-cycle"]
+    assert "more than 5,000 lines" in problem.message
+    assert problem.span.path.endswith(".inc") and problem.span.line >= 1
+    assert len(exp.lines) < 5_000
+
+
+def test_a_macro_that_grows_without_bound_stops(tmp_path):
+    big = "x" * 200_000
+    (tmp_path / "m.moos").write_text(
+        f"#define BIG {big}\nServerPort = 9000\nKey = {'$(BIG)' * 100}\nAfter = 1\n"
+    )
+    exp = Preprocessor().expand(tmp_path / "m.moos")
+    [problem] = [p for p in exp.problems if p.kind == "include-cycle"]
+    assert (problem.span.line, "macros that grow without bound" in problem.message) == (3, True)
+    assert all(len(line.text) < 2**21 for line in exp.lines)
+
+
+def test_the_cli_reports_an_include_bomb(tmp_path, monkeypatch, capsys):
+    import moos_lint.nsplug as nsplug
+    from moos_lint.cli import main
+
+    monkeypatch.setattr(nsplug, "MAX_EXPANDED_LINES", 5_000)
+    top = _include_bomb(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    assert main(["check", "--no-cache", "--select", "P002", "-q", str(top)]) == 1
+    out = capsys.readouterr().out
+    assert (
+        out.startswith("l") and "P002 [include-cycle]" in out and "included from bomb.moos:2" in out
+    )

@@ -2,11 +2,16 @@
 
 ## What it does
 Reports an `#include` that would include a file already being included
-(A includes B includes A), and include chains nested absurdly deep.
+(A includes B includes A), include chains nested absurdly deep, and a file
+whose includes and macros expand without bound: more than 400,000 lines (a
+file included many times at many levels), or macros that grow a line past a
+mebibyte or the file past 16 MiB. moos-lint stops reading such a file at the
+line that ran over.
 
 ## Why is this bad?
 nsplug does not catch include loops: it recurses until it crashes with a
-segmentation fault, and no mission file is written.
+segmentation fault, and no mission file is written. An include tree that
+multiplies at each level runs nsplug out of time or memory the same way.
 
 ## Example
 ```moos
