@@ -51,6 +51,10 @@ if TYPE_CHECKING:  # the progress display is the command line's; the engine only
     from moos_lint.progress import Progress
 
 
+class LintStopped(Exception):
+    """A lint given a ``stop`` check (see :func:`lint_files`) was told to stop."""
+
+
 @dataclass
 class Context:
     """What a rule's check function receives."""
@@ -128,6 +132,12 @@ class LintRun:
         self._applicable: dict[tuple[Kind, bool, bool, bool], list[Rule]] = {}
         #: what the model builders keep for the run (see :mod:`moos_lint.run_state`)
         self.memos = RunMemos()
+        #: asked between units and rules; True stops the run (:class:`LintStopped`)
+        self.stop: Callable[[], bool] | None = None
+
+    def check_stop(self) -> None:
+        if self.stop is not None and self.stop():
+            raise LintStopped
 
     def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
         """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
@@ -209,6 +219,7 @@ class LintRun:
         out: list[Diagnostic] = []
         errors = 0
         for r in self._rules_for(unit):
+            self.check_stop()
             ctx = Context(r, unit, self.settings, self, self._options_for(r))
             try:
                 out.extend(r.check(ctx) or ())
@@ -300,6 +311,7 @@ def lint_files(
     checked: Callable[[Unit], bool] | None = None,
     progress: Progress | None = None,
     parallel: Parallel | None = None,
+    stop: Callable[[], bool] | None = None,
 ) -> Result:
     """Lint the given files with the given settings.
 
@@ -311,6 +323,9 @@ def lint_files(
     behavior files, are sibling missions). The language server uses it to keep
     only the findings one document can show. ``progress``: told of each file read and
     checked (:mod:`moos_lint.progress`).
+    ``stop``: asked between files and between rules; when it answers True the
+    lint raises :class:`LintStopped` (the language server's time budget and
+    cancellation).
     """
     bound = Boundary(settings.project_root) if settings.project_root else None
     outside_links: list[str] = []
@@ -330,9 +345,11 @@ def lint_files(
         if rules is None:
             rules = select_rules(settings.select, settings.extend_select, settings.ignore)
         run = LintRun(settings, rules, cache)
+        run.stop = stop
         result = Result(files=list(files), outside_links=outside_links)
         for path in files:
             if kind_of(path) != "cpp":
+                run.check_stop()
                 run.units.append(run.build_unit(path))
                 if progress is not None:
                     progress.advance()
@@ -461,6 +478,7 @@ __all__ = [
     "INTERNAL_ERROR",
     "Context",
     "LintRun",
+    "LintStopped",
     "Parallel",
     "ReadProblem",
     "Result",

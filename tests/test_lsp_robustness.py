@@ -22,12 +22,12 @@ BAD_MISSION = "ServerHost = localhost\nProcessConfig = pHelmIvP {\n  AppTick = 4
 class Wire:
     """A bare JSON-RPC connection to ``moos-lint server``, able to send anything."""
 
-    def __init__(self) -> None:
+    def __init__(self, stderr=subprocess.DEVNULL) -> None:
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "moos_lint", "server"],
             stdin=subprocess.PIPE,
             stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL,
+            stderr=stderr,
         )
         self.inbox: queue.Queue = queue.Queue()
         threading.Thread(target=self._read, daemon=True).start()
@@ -248,3 +248,95 @@ def test_huge_document_and_edit_storm(wire, tmp_path):
     )
     assert [d["code"] for d in msg["params"]["diagnostics"]] == ["R003"]
     assert wire.close() == 0
+
+
+def _initialize(wire: Wire, **options) -> None:
+    wire.send(
+        {
+            "id": 1,
+            "method": "initialize",
+            "params": {"capabilities": {}, "initializationOptions": {"debounce": 0.05, **options}},
+        }
+    )
+    wire.response(1)
+    wire.send({"method": "initialized", "params": {}})
+
+
+def _huge_mission(size: int) -> str:
+    block = "ProcessConfig = uApp{n}\n{{\n  AppTick = 4\n  value = {n}\n}}\n\n"
+    parts, n, total = [], 0, 0
+    while total < size:
+        parts.append(block.format(n=n))
+        total += len(parts[-1])
+        n += 1
+    return "".join(parts) + BAD_MISSION
+
+
+def test_a_5_mb_document_does_not_starve_another(wire, tmp_path):
+    _initialize(wire)
+    huge = _huge_mission(5 * 2**20)
+    huge_uri = _open(wire, tmp_path / "huge.moos", huge)
+    time.sleep(0.3)  # the huge document is being linted
+    other = tmp_path / "other" / "small.moos"
+    other.parent.mkdir()
+    started = time.monotonic()
+    small_uri = _open(wire, other, BAD_MISSION)
+    diags = wire.diagnostics(small_uri, timeout=15)["params"]["diagnostics"]
+    assert [d["code"] for d in diags] == ["R003"]
+    # (about 0.05 s; behind the huge document on a single worker, about 9 s)
+    assert time.monotonic() - started < 3
+    # and the huge one still gets its own diagnostics
+    assert wire.diagnostics(huge_uri, timeout=120)["params"]["uri"] == huge_uri
+    assert wire.close() == 0
+
+
+def test_a_document_past_its_budget_is_stopped_and_says_so(wire, tmp_path):
+    _initialize(wire, budget=0.2)
+    uri = _open(wire, tmp_path / "huge.moos", _huge_mission(2 * 2**20))
+    [note] = wire.diagnostics(uri, timeout=60)["params"]["diagnostics"]
+    assert note["message"].startswith("moos-lint stopped: linting this document took more")
+    small_uri = _open(wire, tmp_path / "small.moos", BAD_MISSION)
+    assert wire.diagnostics(small_uri, timeout=15)["params"]["diagnostics"]
+    assert wire.close() == 0
+
+
+def test_shutdown_during_lints_prints_no_traceback(tmp_path):
+    log = tmp_path / "stderr.txt"
+    with log.open("wb") as err:
+        wire = Wire(stderr=err)
+        try:
+            _initialize(wire)
+            path = tmp_path / "huge.moos"
+            text = _huge_mission(2**20)
+            uri = _open(wire, path, text)
+            time.sleep(0.3)
+            for version in range(2, 6):  # newer texts while it is linted
+                wire.send(
+                    {
+                        "method": "textDocument/didChange",
+                        "params": {
+                            "textDocument": {"uri": uri, "version": version},
+                            "contentChanges": [{"text": text + "\n" * version}],
+                        },
+                    }
+                )
+                time.sleep(0.1)
+            assert wire.close() == 0
+        finally:
+            if wire.proc.poll() is None:
+                wire.proc.kill()
+                wire.proc.wait()
+    assert "Traceback" not in log.read_text(), log.read_text()
+
+
+def test_json_rpc_error_codes(wire):
+    _initialize(wire)
+    wire.send({"id": 2, "method": "moos/noSuchMethod"})  # no params
+    assert wire.response(2)["error"]["code"] == -32601
+    wire.send({"id": 3, "method": "moos/noSuchMethod", "params": [1, 2]})
+    assert wire.response(3)["error"]["code"] == -32601
+    wire.send({"id": 4, "method": "textDocument/hover", "params": {"position": "here"}})
+    assert wire.response(4)["error"]["code"] == -32602  # a known method, bad params
+    wire.send({"method": "moos/noSuchNotification"})  # a notification gets no answer
+    wire.send({"id": 5, "method": "shutdown"})
+    assert wire.response(5)["result"] is None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import threading
 from collections import OrderedDict
 from collections.abc import Iterable
 from typing import Any
@@ -78,7 +79,17 @@ _parse_memo: OrderedDict[tuple[str, bytes], tuple[Any, Any]] = OrderedDict()
 _last_tree: OrderedDict[str, tuple[bytes, Any]] = OrderedDict()
 
 
+#: one parse at a time: the language server lints on several threads, and a tree-sitter
+#: parser and the memos above are shared
+_PARSE_LOCK = threading.Lock()
+
+
 def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+    with _PARSE_LOCK:
+        return _parse_locked(be, path, data)
+
+
+def _parse_locked(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
     key = (path, data)
     hit = _parse_memo.get(key) if PARSE_MEMO_SIZE else None
     if hit is not None:

@@ -11,7 +11,7 @@ shown on the ``#include`` line that pulls it in.
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -151,8 +151,12 @@ def analyse(
     texts: dict[str, str],
     includers: Sequence[str] = (),
     settings: Settings | None = None,
+    stop: Callable[[], bool] | None = None,
 ) -> Analysis:
-    """Lint the document at ``path``; ``texts`` holds every open document's text."""
+    """Lint the document at ``path``; ``texts`` holds every open document's text.
+
+    ``stop``: see :func:`moos_lint.engine.lint_files` (raises ``LintStopped``).
+    """
     path = norm(path)
     if not lintable(path):
         return Analysis(path, settings=settings)
@@ -180,7 +184,7 @@ def analyse(
         return is_bhv and unit.moos is not None and unit.moos.is_mission
 
     reader = FileCache(reader=memory_reader(texts, seen), store=_EXPANSIONS)
-    result = lint_files(files, settings, cache=reader, checked=can_report_here)
+    result = lint_files(files, settings, cache=reader, checked=can_report_here, stop=stop)
     out.reads = seen | {path}
     for unit in result.units:
         if unit.path == path:

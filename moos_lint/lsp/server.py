@@ -1,28 +1,35 @@
 """``moos-lint server``: the language server, on stdio, built on pygls.
 
 Diagnostics are computed on open, on save and, debounced, on change, from the
-editor's in-memory text. Linting runs on one worker thread, so a huge document
-never blocks the connection; a result that is older than the document when it
-arrives is dropped, and at most one lint per document runs at a time.
+editor's in-memory text. Linting runs on worker threads (:data:`WORKERS`), so a
+huge document never blocks the connection nor the other documents; a result
+that is older than the document when it arrives is dropped, and at most one
+lint per document runs at a time. A lint stops when its document is edited
+again (the new text is linted instead) and when it runs past its time budget
+(:data:`DEFAULT_BUDGET`; the document then shows one note saying so).
 """
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import functools
 import logging
 import os
+import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from typing import Any
 
 from lsprotocol import types as lsp
-from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams, JsonRpcMethodNotFound
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 
 from moos_lint import __version__
 from moos_lint.config import CONFIG_FILES
+from moos_lint.engine import LintStopped
 from moos_lint.lsp import features
 from moos_lint.lsp.analysis import Analysis, analyse, settle
 from moos_lint.lsp.catalogue import EMPTY, Catalogue, default_catalogue
@@ -36,6 +43,10 @@ log = logging.getLogger("moos_lint.lsp")
 DEFAULT_DEBOUNCE = 0.3
 #: Dependent documents wait this long, so that a burst of saves lints them once.
 DEPENDENT_DELAY = 0.05
+#: Lints that may run at once (different documents): one large document occupies one.
+WORKERS = 3
+#: Seconds one lint of a document may take (``initializationOptions.budget``).
+DEFAULT_BUDGET = 20.0
 
 
 class _Dropped:
@@ -48,6 +59,16 @@ class Protocol(LanguageServerProtocol):
     """pygls' protocol, answering a request it cannot read instead of ignoring it."""
 
     def structure_message(self, data: Any):
+        if isinstance(data, dict) and "id" in data and "method" in data:
+            method = data["method"]
+            if not (isinstance(method, str) and self._handles(method)):
+                # a request for a method this server does not have: -32601, whatever its params
+                msg_id = data["id"]
+                if isinstance(msg_id, (int, str)):
+                    error = JsonRpcMethodNotFound.of(str(method))
+                    self._send_response(msg_id, None, error.to_response_error())
+                log.info("no such method: %r", method)
+                return _Dropped()
         try:
             return super().structure_message(data)
         except JsonRpcException as exc:
@@ -57,6 +78,9 @@ class Protocol(LanguageServerProtocol):
                 self._send_response(msg_id, None, error.to_response_error())
             log.warning("dropped a malformed message: %s", exc.message)
             return _Dropped()
+
+    def _handles(self, method: str) -> bool:
+        return method in self.fm.builtin_features or method in self.fm.features
 
 
 class MoosLintServer(LanguageServer):
@@ -71,7 +95,12 @@ class MoosLintServer(LanguageServer):
         self.debounce = debounce
         self.store = DocumentStore()
         self.analyses: dict[str, Analysis] = {}
-        self.executor = ThreadPoolExecutor(max_workers=1, thread_name_prefix="moos-lint")
+        self.budget = DEFAULT_BUDGET
+        self.executor = ThreadPoolExecutor(max_workers=WORKERS, thread_name_prefix="moos-lint")
+        #: set once the client asked to shut down: nothing more is scheduled
+        self.closing = False
+        #: per document being linted: set to stop that lint (a newer text came)
+        self._stops: dict[str, threading.Event] = {}
         self._timers: dict[str, asyncio.TimerHandle] = {}
         self._cascade: dict[str, bool] = {}
         self._running: set[str] = set()
@@ -112,6 +141,8 @@ class MoosLintServer(LanguageServer):
     # ----------------------------------------------------------- schedule
     def schedule(self, path: str, delay: float, cascade: bool) -> None:
         """Lint ``path`` after ``delay`` seconds; a later call replaces an earlier one."""
+        if self.closing:
+            return
         old = self._timers.pop(path, None)
         if old is not None:
             old.cancel()
@@ -119,7 +150,26 @@ class MoosLintServer(LanguageServer):
         loop = asyncio.get_running_loop()
         self._timers[path] = loop.call_later(max(0.0, delay), self._start, path)
 
+    def cancel(self, path: str) -> None:
+        """Stop the lint of ``path`` that is running (its text is no longer the editor's)."""
+        stop = self._stops.get(path)
+        if stop is not None:
+            stop.set()
+
+    def close(self) -> None:
+        """Schedule nothing more, stop what runs (the client is shutting down)."""
+        self.closing = True
+        for timer in self._timers.values():
+            timer.cancel()
+        self._timers.clear()
+        self._again.clear()
+        for stop in self._stops.values():
+            stop.set()
+        self.executor.shutdown(wait=False, cancel_futures=True)
+
     def _start(self, path: str) -> None:
+        if self.closing:
+            return
         self._timers.pop(path, None)
         cascade = self._cascade.pop(path, False)
         if path in self._running:
@@ -139,8 +189,24 @@ class MoosLintServer(LanguageServer):
             texts = self.store.texts()
             includers = self.store.includers(path)
             loop = asyncio.get_running_loop()
+            stopped = self._stops[path] = threading.Event()
+            deadline = time.monotonic() + self.budget
+
+            def stop() -> bool:
+                return stopped.is_set() or time.monotonic() > deadline
+
+            work = functools.partial(analyse, path, texts, includers, stop=stop)
             try:
-                result = await loop.run_in_executor(self.executor, analyse, path, texts, includers)
+                result = await loop.run_in_executor(self.executor, work)
+            except LintStopped:
+                if not stopped.is_set():  # over budget (a newer text is linted anyway)
+                    self._over_budget(path, version)
+                return
+            except RuntimeError:  # the executor shut down under this lint
+                if self.closing:
+                    return
+                log.exception("linting %s failed", path)
+                return
             except Exception:  # the engine never raises; this is a last guard
                 log.exception("linting %s failed", path)
                 return
@@ -156,8 +222,25 @@ class MoosLintServer(LanguageServer):
                     self.schedule(other.path, DEPENDENT_DELAY, cascade=False)
         finally:
             self._running.discard(path)
+            self._stops.pop(path, None)
             if path in self._again:
                 self.schedule(path, 0.0, self._again.pop(path))
+
+    def _over_budget(self, path: str, version: int | None) -> None:
+        """Tell the editor the document was not linted: it took longer than the budget."""
+        doc = self.store.get(path)
+        if doc is None or doc.version != version or self.closing:
+            return
+        log.warning("linting %s took more than %g s: stopped", path, self.budget)
+        note = lsp.Diagnostic(
+            range=lsp.Range(lsp.Position(0, 0), lsp.Position(0, 0)),
+            message=f"moos-lint stopped: linting this document took more than {self.budget:g} s",
+            severity=lsp.DiagnosticSeverity.Information,
+            source=features.SOURCE,
+        )
+        self.text_document_publish_diagnostics(
+            lsp.PublishDiagnosticsParams(uri=doc.uri, diagnostics=[note], version=version)
+        )
 
     def publish(self, uri: str, result: Analysis, text: str, version: int | None) -> None:
         diags = features.diagnostics(result, text, self.encoding, self.lines_of)
@@ -189,6 +272,9 @@ def create_server(
             value = opts.get("debounce")
             if isinstance(value, (int, float)) and not isinstance(value, bool) and value >= 0:
                 ls.debounce = float(value)
+            value = opts.get("budget")
+            if isinstance(value, (int, float)) and not isinstance(value, bool) and value > 0:
+                ls.budget = float(value)
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: MoosLintServer, params: lsp.DidOpenTextDocumentParams) -> None:
@@ -205,6 +291,7 @@ def create_server(
         text = ls.workspace.get_text_document(uri).source
         doc = ls.store.update(uri, text, params.text_document.version)
         if doc is not None:
+            ls.cancel(doc.path)  # a lint of the older text is wasted work
             ls.schedule(doc.path, ls.debounce, cascade=True)
 
     @server.feature(lsp.TEXT_DOCUMENT_DID_SAVE, lsp.SaveOptions(include_text=False))
@@ -224,6 +311,7 @@ def create_server(
         dependents = ls.store.dependents(path)
         ls.store.close(uri)
         ls.analyses.pop(path, None)
+        ls.cancel(path)
         timer = ls._timers.pop(path, None)
         if timer is not None:
             timer.cancel()
@@ -294,10 +382,7 @@ def create_server(
 
     @server.feature(lsp.SHUTDOWN)
     def shutdown(ls: MoosLintServer, *_: Any) -> None:
-        for timer in ls._timers.values():
-            timer.cancel()
-        ls._timers.clear()
-        ls.executor.shutdown(wait=False, cancel_futures=True)
+        ls.close()
 
     return server
 
