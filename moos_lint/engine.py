@@ -43,7 +43,7 @@ from moos_lint.registry import (
 from moos_lint.result import Result
 from moos_lint.run_state import RunMemos
 from moos_lint.source import ReadProblem, SourceFile
-from moos_lint.suppressions import Suppression, parse_suppressions
+from moos_lint.suppressions import Suppression, SuppressionIndex, parse_suppressions
 from moos_lint.unit import Unit
 
 if TYPE_CHECKING:  # the progress display is the command line's; the engine only tells it
@@ -144,12 +144,14 @@ class LintRun:
         for path, src in self.sources.items():
             if path not in self.suppressions:
                 self.suppressions[path] = parse_suppressions(path, src.lines)
+        index = {path: SuppressionIndex(sups) for path, sups in self.suppressions.items() if sups}
         kept: list[Diagnostic] = []
         for d in diags:
             if d.code != INTERNAL_ERROR and self.file_ignored(d):
                 continue
             hit = False
-            for sup in self.suppressions.get(d.span.path, ()):
+            at = index.get(d.span.path)
+            for sup in at.at(d.span.line) if at is not None else ():
                 sel = sup.covers(d)
                 if sel is not None:
                     sup.used.add(sel)

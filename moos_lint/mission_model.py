@@ -45,7 +45,7 @@ from typing import Protocol
 
 from moos_lint.catalogue import AppInfo, Catalogue, catalogue_for
 from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
-from moos_lint.nsplug import Expansion, Line, parsed
+from moos_lint.nsplug import Expansion, Line, derived, parsed
 from moos_lint.parsers.bhv import parse_bhv
 from moos_lint.parsers.moos import parse_moos
 from moos_lint.run_state import RunView
@@ -125,13 +125,32 @@ class MissionModel:
         found = list(self.publishers.get(var, ()))
         if found:
             return found
-        for p in self.processes:
-            if p.app is not None and p.app.publishes_var(var):
-                found.append(Publisher(var, p.name, "app", process=p.name))
-        for name, pubs in self.publishers.items():
-            if "*" in name and _glob_match(name, var):
+        by_app, globs = self._dynamic()
+        hits = sorted(i for app, indexed in by_app if app.publishes_var(var) for i in indexed)
+        for i in hits:  # in the order the processes are launched
+            name = self.processes[i].name
+            found.append(Publisher(var, name, "app", process=name))
+        for name, pubs in globs:
+            if _glob_match(name, var):
                 found.extend(pubs)
         return found
+
+    def _dynamic(self) -> tuple[list[tuple[AppInfo, list[int]]], list[tuple[str, list]]]:
+        """The processes grouped by app, and the wildcard publications: what a name no one
+        publishes exactly is matched against (each app once, however many processes run
+        it), kept while the processes and publications stay as many."""
+        stamp = (len(self.processes), len(self.publishers))
+        kept = self.__dict__.get("_dynamic_kept")
+        if kept is not None and kept[0] == stamp:
+            return kept[1]
+        groups: dict[int, tuple[AppInfo, list[int]]] = {}
+        for i, p in enumerate(self.processes):
+            if p.app is not None:
+                groups.setdefault(id(p.app), (p.app, []))[1].append(i)
+        globs = [(name, pubs) for name, pubs in self.publishers.items() if "*" in name]
+        value = (list(groups.values()), globs)
+        self.__dict__["_dynamic_kept"] = (stamp, value)
+        return value
 
     @property
     def waits(self) -> list[VarRef]:
@@ -242,11 +261,20 @@ _POKES_SEEN: dict[str, tuple[tuple, dict[str, str]]] = {}
 
 
 def _block_for(moos: MoosFile, name: str) -> Block | None:
-    low = name.lower()
-    for b in moos.blocks:  # MOOS takes the first block of that name
-        if b.lname == low:
-            return b
-    return None
+    """The first block of that name (the one MOOS takes)."""
+    return _first_blocks(moos).get(name.lower())
+
+
+def _first_blocks(moos: MoosFile) -> dict[str, Block]:
+    """The first block of each (lower-case) name, worked out once per expansion."""
+
+    def compute() -> dict[str, Block]:
+        first: dict[str, Block] = {}
+        for b in moos.blocks:
+            first.setdefault(b.lname, b)
+        return first
+
+    return derived(moos.expansion, "first-blocks", compute)
 
 
 def _publisher(

@@ -52,6 +52,30 @@ class Suppression:
         return None
 
 
+class SuppressionIndex:
+    """One file's suppressions by the lines they cover: a finding is compared with those
+    that cover its line, not with every suppression of the file."""
+
+    def __init__(self, suppressions: list[Suppression]) -> None:
+        self.by_line: dict[int, list[Suppression]] = {}
+        #: those covering many lines (``disable`` ... ``enable``, a whole file): few
+        self.ranges: list[Suppression] = []
+        for sup in suppressions:
+            if sup.last - sup.first < 8:
+                for line in range(sup.first, sup.last + 1):
+                    self.by_line.setdefault(line, []).append(sup)
+            else:
+                self.ranges.append(sup)
+
+    def at(self, line: int) -> list[Suppression]:
+        """The suppressions that may cover ``line``, in the file's order."""
+        here = self.by_line.get(line, [])
+        if not self.ranges:
+            return here
+        near = [s for s in self.ranges if s.first <= line <= s.last]
+        return sorted([*here, *near], key=lambda s: (s.line, s.col)) if near else here
+
+
 def parse_suppressions(path: str, lines: list[str]) -> list[Suppression]:
     """Every suppression comment in one file, with the lines it covers."""
     out: list[Suppression] = []

@@ -304,10 +304,16 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
             if m:
                 t.defines[name] = m.group(1)
+        declared: dict[tuple, bool] = {}  # (function, target) -> a local of it
         for a in pf.asgs:
             # members, globals and constants; locals are followed per function
-            if a.fn is not None and _declared_in(pf, a):
-                continue
+            if a.fn is not None:
+                key = (a.fn.id, a.target)
+                local = declared.get(key)
+                if local is None:
+                    local = declared[key] = _declared_in(pf, a)
+                if local:
+                    continue
             val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
             if val is None and a.fn is not None:
                 key = _config_branch_key(pf, a)

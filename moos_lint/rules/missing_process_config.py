@@ -79,7 +79,16 @@ def check(ctx):
         given = [given]
     exempt = None if given is None else {str(a).lower() for a in given}
     cat = catalogue_for(ctx.run)
-    blocks = [b for b in moos.blocks if b.header is not None and b.name]
+    # the blocks by name (a name with a macro may match any run): each Run line looks at
+    # the blocks that may configure it, not at every block
+    by_name: dict[str, list] = {}
+    any_name: list = []
+    for b in moos.blocks:
+        if b.header is not None and b.name:
+            if has_macro(b.name):
+                any_name.append(b)
+            else:
+                by_name.setdefault(b.name.lower(), []).append(b)
     for run in moos.runs:
         name = run.name
         if not name or has_macro(name) or has_macro(run.binary):
@@ -96,7 +105,7 @@ def check(ctx):
             continue
         if any(
             names_match(b.name, name) and not exclusive(b.header, run.param.line, ctx.expansion)
-            for b in blocks
+            for b in (*by_name.get(name.lower(), ()), *any_name)
         ):
             continue
         yield ctx.report(

@@ -35,12 +35,11 @@ MOOS-IvP caveats, deliberately not reported:
 - parameters holding an nsplug macro.
 """
 
-import difflib
-
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
 from moos_lint.rules._catalogue_bhv import lookup
+from moos_lint.rules.unknown_parameter import suggestions
 
 
 @rule(
@@ -60,7 +59,7 @@ def check(ctx):
             key = p.lkey
             if not key or key in info.params or has_macro(p.key):
                 continue
-            close = difflib.get_close_matches(key, sorted(info.params), n=3, cutoff=0.75)
+            close = suggestions(key, info.params)
             msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             fix = None
             if close:

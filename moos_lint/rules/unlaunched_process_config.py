@@ -88,7 +88,16 @@ def check(ctx):
         manual = catalogue_for(ctx.run).started_by_hand()
     else:
         manual = [str(a).lower() for a in given]
-    runs = moos.runs
+    # the Run lines by name (a name with a macro may match any block): each block looks
+    # at the lines that may launch it, not at every Run line
+    by_name: dict[str, list] = {}
+    any_name: list = []
+    for run in moos.runs:
+        if has_macro(run.name):
+            any_name.append(run)
+        else:
+            by_name.setdefault(run.name.lower(), []).append(run)
+    commented: dict[str, str] | None = None
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
             continue
@@ -99,10 +108,12 @@ def check(ctx):
         if any(
             names_match(run.name, block.name)
             and not exclusive(run.param.line, block.header, ctx.expansion)
-            for run in runs
+            for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
-        hint = _commented_run(moos, block.name)
+        if commented is None:
+            commented = _commented_runs(moos)
+        hint = commented.get(block.name.lower())
         why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
         yield ctx.report(
             block.name_span,
@@ -111,8 +122,9 @@ def check(ctx):
         )
 
 
-def _commented_run(moos, name: str) -> str | None:
-    """Where a ``//Run = NAME`` line sits in an ANTLER block, if anywhere."""
+def _commented_runs(moos) -> dict[str, str]:
+    """Where a ``//Run = NAME`` line sits in an ANTLER block, by lower-case NAME (the first)."""
+    found: dict[str, str] = {}
     for antler in moos.antler_blocks:
         if antler.open is None:
             continue
@@ -128,6 +140,5 @@ def _commented_run(moos, name: str) -> str | None:
             m = _COMMENTED_RUN.match(line.text)
             if m:
                 launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
-                if launched.lower() == name.lower():
-                    return where(line)
-    return None
+                found.setdefault(launched.lower(), where(line))
+    return found
