@@ -83,8 +83,21 @@ def check(ctx):
         if any(p.value.strip() == "spawn" for p in bhv.get("templating")[-1:]):
             continue
         named.append(names[-1])
+    # Each earlier name under each of its prefixes, and by itself: a name is compared
+    # with the earlier names it may clash with (equal, a prefix of it, or starting with
+    # it), in order, not with every earlier name.
+    extending: dict[str, list[int]] = {}
+    exact: dict[str, list[int]] = {}
     for i, p in enumerate(named):
-        for q in named[:i]:
+        value = p.value
+        candidates = list(extending.get(value, ()))
+        for end in range(1, len(value)):
+            candidates += exact.get(value[:end], ())
+        for end in range(1, len(value) + 1):
+            extending.setdefault(value[:end], []).append(i)
+        exact.setdefault(value, []).append(i)
+        for j in sorted(candidates):
+            q = named[j]
             if exclusive(p.line, q.line, ctx.expansion):
                 continue
             how = _collide(p.value, q.value)
