@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 from moos_lint.config import Settings
-from moos_lint.engine import Context, Run, _empty_unit
+from moos_lint.engine import Context, LintRun, _empty_unit
 from moos_lint.registry import Scope, all_rules
 
 SMALL = int(os.environ.get("MOOS_LINT_SCALING_BLOCKS", "500"))
@@ -140,7 +140,7 @@ def rule_times(files: list[str], root: str) -> tuple[dict[str, float], set[str]]
 
     settings = Settings(root=root)
     rules = all_rules()
-    run = Run(settings, rules)
+    run = LintRun(settings, rules)
     run.units = [run.build_unit(p) for p in files if not p.endswith((".cpp", ".h"))]
     run.units += build_cpp_units(run, [p for p in files if p.endswith((".cpp", ".h"))])
     for unit in run.units:
