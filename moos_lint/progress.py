@@ -16,8 +16,17 @@ from __future__ import annotations
 import os
 import time
 
+
+def _delay() -> float:
+    """Seconds a run lasts before its progress shows (``MOOS_LINT_PROGRESS_DELAY``, default 1)."""
+    try:
+        return max(0.0, float(os.environ.get("MOOS_LINT_PROGRESS_DELAY", "1.0")))
+    except ValueError:
+        return 1.0
+
+
 #: seconds a run lasts before its progress shows
-DELAY = 1.0
+DELAY = _delay()
 #: seconds between two redraws
 REDRAW = 0.1
 #: files from which a run outside any project is announced

@@ -94,7 +94,17 @@ def big(tmp_path_factory) -> Path:
 
 
 def test_progress_and_announcement_on_a_terminal(big: Path):
-    out = _tty(big, "check", "--no-cache", "-j", "1", "--output-format", "concise", NO_COLOR="1")
+    out = _tty(
+        big,
+        "check",
+        "--no-cache",
+        "-j",
+        "1",
+        "--output-format",
+        "concise",
+        NO_COLOR="1",
+        MOOS_LINT_PROGRESS_DELAY="0",  # shown from the start, however fast the machine
+    )
     first = out.index("m0.moos:6:3")
     notice = f"moos-lint: linting {MANY} files under {big} "
     assert out.index(notice) < first
