@@ -43,7 +43,8 @@ from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from moos_lint.catalogue import AppInfo, Catalogue, catalogue_for
+from moos_lint.catalogue import AppInfo, Catalogue, PublishedKey, catalogue_for
+from moos_lint.diagnostics import Span
 from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
 from moos_lint.nsplug import Expansion, Line, derived, parsed
 from moos_lint.parsers.bhv import parse_bhv
@@ -258,6 +259,53 @@ def _pokes(folder: str) -> dict[str, str]:
 
 #: folder -> (each script's (mtime, size), what its scripts poke)
 _POKES_SEEN: dict[str, tuple[tuple, dict[str, str]]] = {}
+
+
+_CONFIG_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
+@dataclass(frozen=True, slots=True)
+class ConfiguredPublication:
+    """``KEY = NAME`` in an app's block, where ``KEY`` renames a variable the app publishes
+    (the catalogue knows it from the app's C++: :attr:`AppInfo.published_keys`)."""
+
+    name: str
+    span: Span
+    line: Line
+    block: str
+    app: AppInfo
+    key: str
+    published: PublishedKey
+
+    def says(self) -> str:
+        """``pMixer publishes `SERVO_3` under `servo_var` (default `SERVO_2`, Mixer.cpp:42)``."""
+        value = f", {self.published.value}" if self.published.value else ""
+        return (
+            f"{self.app.name} publishes `{self.name}` under `{self.key}` (default "
+            f"`{self.published.default}`{value}, {self.published.where})"
+        )
+
+
+def configured_publications(run: RunView, moos: MoosFile) -> list[ConfiguredPublication]:
+    """The variables a mission's blocks name through keys that rename an app's publication."""
+    cat = catalogue_for(run)
+    programs = {r.name.lower(): r.binary.replace("\\", "/").rsplit("/", 1)[-1] for r in moos.runs}
+    found: list[ConfiguredPublication] = []
+    for block in moos.blocks:
+        app = cat.app(programs.get(block.lname, block.name))
+        if app is None or not app.published_keys:
+            continue
+        for p in block.params:
+            pub = app.published_keys.get("".join(p.key.split()).lower())
+            value = p.value.strip()
+            if pub is None or not _CONFIG_NAME.fullmatch(value) or has_macro(p.value):
+                continue
+            found.append(
+                ConfiguredPublication(
+                    value, p.value_span, p.line, block.name, app, p.key.strip(), pub
+                )
+            )
+    return found
 
 
 def _block_for(moos: MoosFile, name: str) -> Block | None:

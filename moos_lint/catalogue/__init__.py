@@ -52,6 +52,16 @@ else:  # pragma: no cover
 STOCK = os.path.join(os.path.dirname(__file__), "stock.json")
 
 
+@dataclass(frozen=True, slots=True)
+class PublishedKey:
+    """A configuration key that names a variable the app publishes (``servo_var``)."""
+
+    default: str  # the name the app publishes when the key is not set
+    where: str  # the code that publishes it (``Mixer.cpp:42``)
+    #: what is known of the value published under it (``degrees``, ``radians``), or ""
+    value: str = ""
+
+
 @dataclass
 class AppInfo:
     name: str
@@ -82,6 +92,8 @@ class AppInfo:
     provenance: str = ""
     #: key -> (form, source line): value forms the app's parser enforces
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
+    #: lower-case key -> the variable it names, for keys that rename a publication
+    published_keys: dict[str, PublishedKey] = field(default_factory=dict)
 
     def reads(self, key: str) -> bool:
         """Whether the app reads the (lower-case) configuration key."""
@@ -383,6 +395,7 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
         needs_origin=bool(READS_ORIGIN.search(text)),
         needs_process_config=not OPTIONAL_BLOCK.search(text),
         provenance=f"C++ {_shown(app.folder)}",
+        published_keys=_published_keys(app),
     )
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
@@ -405,6 +418,24 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
         info.observer = known.observer
         info.launched_manually = known.launched_manually
     return info
+
+
+_UNIT_WORDS = {"deg": "degrees", "rad": "radians", "deg/s": "degrees per second",
+               "rad/s": "radians per second"}
+
+
+def _published_keys(app: AppModel) -> dict[str, PublishedKey]:
+    """The configuration keys that rename a variable the app publishes, first publication wins."""
+    out: dict[str, PublishedKey] = {}
+    for p in app.publications:
+        key, name = p.name.config_key, p.name.text
+        if not key or not name or p.name.wildcard or key.lower() in out:
+            continue
+        v = p.value.abstract if p.value is not None else None
+        unit = getattr(v, "unit", None) if v is not None and not getattr(v, "hint", False) else None
+        where = f"{os.path.basename(p.name_span.path)}:{p.name_span.line}"
+        out[key.lower()] = PublishedKey(name, where, _UNIT_WORDS.get(unit or "", ""))
+    return out
 
 
 def _shown(folder: str) -> str:

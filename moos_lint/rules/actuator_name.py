@@ -17,6 +17,11 @@ or `DESIRED_RUDDERX` (a renamed output in `uSimMarineV22`'s
 reported. MOOS-IvP's own missions use only standard actuator names.
 
 
+In a mission, a key of an app of the linted repository that renames a
+variable the app publishes (a member with a default that the key changes in
+`OnStartUp`) is checked too: `servo_var = SERVO_3_PWM` in the app's block
+names the command it publishes, judged as the C++ names below.
+
 In C++, it checks the names an app publishes with `Notify` when they are
 known statically (literals, string constants, `#define` macros, a member with
 a default that a configuration key may change). There a published name with
@@ -181,10 +186,12 @@ def check(ctx):
     if ctx.unit.kind is Kind.CPP:
         yield from cpp_check(ctx, words, allow)
         return
+    seen = set()
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if not bare:
             continue
+        seen.add((ref.span.line, bare))
         word = actuator_word(bare, words)
         if word is None or any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
             continue
@@ -194,6 +201,25 @@ def check(ctx):
             "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
             line=ref.line,
         )
+    if ctx.moos is not None:
+        yield from _configured(ctx, words, allow, seen)
+
+
+def _configured(ctx, words, allow, seen):
+    """``KEY = NAME`` lines renaming a command an app of the repository publishes."""
+    from moos_lint.mission_model import configured_publications
+
+    for c in configured_publications(ctx.run, ctx.moos):
+        if (c.span.line, c.name) in seen or any(fnmatch.fnmatchcase(c.name, a) for a in allow):
+            continue
+        word = actuator_word(c.name, words, any_shape=True)
+        if word:
+            yield ctx.report(
+                c.span,
+                f"`{c.name}` names the actuator `{word}`: {c.says()}; MOOS actuators are "
+                "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
+                line=c.line,
+            )
 
 
 def cpp_check(ctx, words, allow):
