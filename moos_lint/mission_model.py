@@ -279,10 +279,12 @@ class ConfiguredPublication:
 
     def says(self) -> str:
         """``pMixer publishes `SERVO_3` under `servo_var` (default `SERVO_2`, Mixer.cpp:42)``."""
-        value = f", {self.published.value}" if self.published.value else ""
+        pub = self.published
+        value = f", {pub.value}" if pub.value else ""
+        under = f"`{self.key}` + `{pub.suffix}`" if pub.suffix else f"`{self.key}`"
         return (
-            f"{self.app.name} publishes `{self.name}` under `{self.key}` (default "
-            f"`{self.published.default}`{value}, {self.published.where})"
+            f"{self.app.name} publishes `{self.name}` under {under} (default "
+            f"`{pub.default}`{value}, {pub.where})"
         )
 
 
@@ -296,14 +298,15 @@ def configured_publications(run: RunView, moos: MoosFile) -> list[ConfiguredPubl
         if app is None or not app.published_keys:
             continue
         for p in block.params:
-            pub = app.published_keys.get("".join(p.key.split()).lower())
+            pubs = app.published_keys.get("".join(p.key.split()).lower(), ())
             value = p.value.strip()
-            if pub is None or not _CONFIG_NAME.fullmatch(value) or has_macro(p.value):
+            if not pubs or not _CONFIG_NAME.fullmatch(value) or has_macro(p.value):
                 continue
-            found.append(
+            found.extend(
                 ConfiguredPublication(
-                    value, p.value_span, p.line, block.name, app, p.key.strip(), pub
+                    value + pub.suffix, p.value_span, p.line, block.name, app, p.key.strip(), pub
                 )
+                for pub in pubs
             )
     return found
 

@@ -54,10 +54,16 @@ STOCK = os.path.join(os.path.dirname(__file__), "stock.json")
 
 @dataclass(frozen=True, slots=True)
 class PublishedKey:
-    """A configuration key that names a variable the app publishes (``servo_var``)."""
+    """A configuration key that names (or begins) a variable the app publishes.
+
+    The app publishes the key's value followed by ``suffix``: ``servo_var`` for
+    ``Notify(m_servo_var, ...)``, ``prefix`` with suffix ``_PITCH`` for
+    ``Notify(m_prefix + "_PITCH", ...)``.
+    """
 
     default: str  # the name the app publishes when the key is not set
     where: str  # the code that publishes it (``Mixer.cpp:42``)
+    suffix: str = ""
     #: what is known of the value published under it (``degrees``, ``radians``), or ""
     value: str = ""
 
@@ -92,8 +98,8 @@ class AppInfo:
     provenance: str = ""
     #: key -> (form, source line): value forms the app's parser enforces
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
-    #: lower-case key -> the variable it names, for keys that rename a publication
-    published_keys: dict[str, PublishedKey] = field(default_factory=dict)
+    #: lower-case key -> the variables it names, for keys that rename publications
+    published_keys: dict[str, tuple[PublishedKey, ...]] = field(default_factory=dict)
 
     def reads(self, key: str) -> bool:
         """Whether the app reads the (lower-case) configuration key."""
@@ -420,22 +426,36 @@ def _repo_app(app: AppModel, name: str) -> AppInfo:
     return info
 
 
-_UNIT_WORDS = {"deg": "degrees", "rad": "radians", "deg/s": "degrees per second",
-               "rad/s": "radians per second"}
+_UNIT_WORDS = {
+    "deg": "degrees",
+    "rad": "radians",
+    "deg/s": "degrees per second",
+    "rad/s": "radians per second",
+}
 
 
-def _published_keys(app: AppModel) -> dict[str, PublishedKey]:
-    """The configuration keys that rename a variable the app publishes, first publication wins."""
-    out: dict[str, PublishedKey] = {}
+#: a published name that is a member, or a member and a literal: ``m_var``,
+#: ``this->m_prefix + "_PITCH"``, ``m_var.c_str()``
+_KEYED_NAME = re.compile(
+    r'\s*(?:this\s*->\s*)?\w+(?:\s*\+\s*"(?P<suffix>[A-Za-z0-9_]*)")?\s*(?:\.\s*c_str\s*\(\s*\))?\s*'
+)
+
+
+def _published_keys(app: AppModel) -> dict[str, tuple[PublishedKey, ...]]:
+    """The configuration keys that name variables the app publishes, each name once."""
+    out: dict[str, dict[str, PublishedKey]] = {}
     for p in app.publications:
         key, name = p.name.config_key, p.name.text
-        if not key or not name or p.name.wildcard or key.lower() in out:
+        m = _KEYED_NAME.fullmatch(p.name.source)
+        if not key or not name or p.name.wildcard or m is None:
             continue
+        suffix = m.group("suffix") or ""
         v = p.value.abstract if p.value is not None else None
         unit = getattr(v, "unit", None) if v is not None and not getattr(v, "hint", False) else None
         where = f"{os.path.basename(p.name_span.path)}:{p.name_span.line}"
-        out[key.lower()] = PublishedKey(name, where, _UNIT_WORDS.get(unit or "", ""))
-    return out
+        pub = PublishedKey(name, where, suffix, _UNIT_WORDS.get(unit or "", ""))
+        out.setdefault(key.lower(), {}).setdefault(suffix, pub)
+    return {k: tuple(v.values()) for k, v in out.items()}
 
 
 def _shown(folder: str) -> str:

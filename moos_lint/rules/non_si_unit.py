@@ -107,10 +107,12 @@ def check(ctx):
                     "radians",
                 )
         return
+    seen = set()
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if not bare:
             continue
+        seen.add((ref.span.line, bare))
         word = unit_word(bare, units, degree_units, degree_words)
         if word is None:
             continue
@@ -119,4 +121,19 @@ def check(ctx):
             ref.span,
             f"`{ref.name}` declares a non-SI unit ({what}): MOOS uses metres, seconds and radians",
             line=ref.line,
+        )
+    if ctx.moos is None:
+        return
+    from moos_lint.mission_model import configured_publications
+
+    for c in configured_publications(ctx.run, ctx.moos):
+        word = unit_word(c.name.upper(), units, degree_units, degree_words)
+        if word is None or (c.span.line, c.name) in seen:
+            continue
+        what = "degrees on a variable that is not a heading" if word in degree_units else word
+        yield ctx.report(
+            c.span,
+            f"`{c.name}` declares a non-SI unit ({what}): {c.says()}; MOOS uses metres, "
+            "seconds and radians",
+            line=c.line,
         )

@@ -95,6 +95,11 @@ def check(ctx):
     programs = {
         r.name.lower(): r.binary.replace("\\", "/").rsplit("/", 1)[-1] for r in ctx.moos.runs
     }
+    from moos_lint.mission_model import configured_publications
+
+    configured: dict[str, list] = {}
+    for c in configured_publications(ctx.run, ctx.moos):
+        configured.setdefault(c.block, []).append(c)
     for block in ctx.moos.blocks:
         program = programs.get(block.lname, block.name)
         if not (_INTERFACE.match(block.name) or _INTERFACE.match(program)):
@@ -108,14 +113,19 @@ def check(ctx):
         for p in block.params:
             if any(fnmatch.fnmatchcase(p.lkey, k) for k in keys) and _WORD.fullmatch(p.value):
                 found.append((p.value, p.value_span, p.line))
-        for name, span, line in found:
+        found = [(n, s, ln, "") for n, s, ln in found]
+        listed = {(s.line, n) for n, s, _l, _w in found}
+        for c in configured.get(block.name, ()):
+            if _WORD.fullmatch(c.name) and (c.span.line, c.name) not in listed:
+                found.append((c.name, c.span, c.line, f" ({c.says()})"))
+        for name, span, line, why in found:
             bare = bare_name(name)
             if bare is None or bare != name or (cats and good.fullmatch(name)):
                 continue
             yield ctx.report(
                 span,
                 f"`{name}`, published by interface process `{block.name}`, is not named "
-                f"`<SENSOR>_<CATEGORY>` ({', '.join(sorted(cats))})",
+                f"`<SENSOR>_<CATEGORY>` ({', '.join(sorted(cats))}){why}",
                 line=line,
                 subject=Subject(variable=name, app=block.name),
             )
