@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import pytest
 
@@ -114,3 +115,68 @@ def test_unknown_stays_unknown():
     v = published('bool A::Iterate() { Notify("A_YAW", m_device.attitude()); return true; }')
     resolver = RepositoryResolver([], lambda p: b"")
     assert not resolve_pending(v["A_YAW"], resolver).known
+
+
+def test_out_parameters_carry_what_the_function_sets():
+    v = published(
+        """
+        void Imu::getAttitude(double& roll, double& pitch, double& yaw) {
+          roll = asin(m_q) * 180.0 / M_PI;
+          yaw = atan2(m_a, m_b);
+          yaw *= 57.2957795;
+        }
+        void readOut(float* out) { *out = atan2(m_a, m_b) * 180 / M_PI; }
+        void show(double v) { printf("%f", v); }
+        void keep(const double& v, double* w) { m_last = v; }
+        bool Imu::Iterate() {
+          double r, p, y;
+          getAttitude(r, p, y);
+          Notify("IMU_YAW", y);
+          Notify("IMU_ROLL", r);
+          Notify("IMU_PITCH", p);
+          float q;
+          readOut(&q);
+          Notify("IMU2_PITCH", q);
+          double z = atan2(m_a, m_b);
+          show(z);
+          keep(z, &z);
+          Notify("Z_YAW", z);
+          return true;
+        }
+        """
+    )
+    assert v["IMU_YAW"].unit == "deg"
+    assert any("getAttitude() sets `y`" in w for w in v["IMU_YAW"].why)
+    assert v["IMU_ROLL"].unit == "deg"
+    assert not v["IMU_PITCH"].known  # the function never sets it
+    assert v["IMU2_PITCH"].unit == "deg"
+    assert v["Z_YAW"].unit == "rad"  # passed by value, or to a pointer never written
+
+
+def test_an_out_parameter_set_in_another_file_resolves_there(tmp_path):
+    lib = tmp_path / "lib" / "Ahrs.cpp"
+    lib.parent.mkdir()
+    lib.write_text(
+        "void Ahrs::euler(float* r, float* p, float* y) {\n"
+        "  *y = atan2(m_a, m_b) * 57.29578f;\n}\n"
+        "void Ahrs::log(double v) { m_v = v; }\n"
+    )
+    v = published(
+        """
+        bool A::Iterate() {
+          float r, p, y;
+          m_ahrs.euler(&r, &p, &y);
+          Notify("AHRS_YAW", y);
+          double w = atan2(m_a, m_b);
+          m_ahrs.log(w);
+          Notify("W_YAW", w);
+          return true;
+        }
+        """
+    )
+    assert v["AHRS_YAW"].pending == "euler#2"
+    resolver = RepositoryResolver([str(lib)], lambda p: Path(p).read_bytes())
+    out = resolve_pending(v["AHRS_YAW"], resolver)
+    assert out.unit == "deg" and any("Ahrs.cpp:2" in w for w in out.why)
+    kept = resolve_pending(v["W_YAW"], resolver)  # log() sets nothing: as before the call
+    assert kept.unit == "rad"

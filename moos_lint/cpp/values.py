@@ -43,6 +43,9 @@ class AbstractValue:
     hint: bool = False  # the unit comes from a name or a comment only
     #: the array an element was read from (``data[0]``), to judge its siblings alike
     origin: str | None = None
+    #: for a variable passed to a function defined elsewhere (``pending`` is ``name#index``):
+    #: its value before the call, kept when that function turns out not to set it
+    fallback: Any = None
 
     @property
     def known(self) -> bool:
@@ -685,6 +688,14 @@ class Evaluator:
         before = [
             a for a in cands if a.node.start_byte < use.start_byte and not _inside(use, a.node)
         ]
+        out = self._out_call(pf, fnode, use, key, before, declared, depth)
+        if out is not None:
+            return out
+        return self._assigned(pf, fnode, use, key, before, declared, depth)
+
+    def _assigned(
+        self, pf: Any, fnode: Any, use: Any, key: str, before: list, declared: bool, depth: int
+    ) -> AbstractValue | None:
         if not before:
             if declared:
                 return UNKNOWN
@@ -708,6 +719,82 @@ class Evaluator:
             )
             state = self._compound(pf, a, base, cond, key, depth)
         return state
+
+    def _out_call(
+        self, pf: Any, fnode: Any, use: Any, key: str, before: list, declared: bool, depth: int
+    ) -> AbstractValue | None:
+        """The value a call sets local ``key`` to through a reference or pointer argument
+        (``getAttitude(roll, pitch, yaw)``, ``read(&yaw)``), when the last such call comes
+        after the last assignment before ``use``; None when no call sets it."""
+        after = before[-1].node.end_byte if before else 0
+        for call, name, index in reversed(_calls_passing(fnode, key)):
+            if not (after <= call.start_byte and call.end_byte <= use.start_byte):
+                continue
+            own = self.folder.functions.get(name)
+            at = _at(pf, call)
+            if own:
+                v = self.out_param(name, own, index, depth)
+                if v is None:
+                    continue  # the function does not set this argument
+                v = v.because(f"{name}() sets `{key}` at {at}")
+            elif name in _NOT_SETTERS or not name:
+                continue
+            else:
+                prior = self._assigned(pf, fnode, call, key, before, declared, depth)
+                v = AbstractValue(
+                    pending=f"{name}#{index}",
+                    why=(f"{_clip(text(call))} at {at}",),
+                    fallback=prior if prior is not None else UNKNOWN,
+                )
+            cond = _guard(call, fnode)
+            if cond is not None and not _inside(use, cond) and v.pending is None:
+                prior = self._assigned(pf, fnode, call, key, before, declared, depth)
+                if prior is not None and (prior.known or prior.const is not None):
+                    v = join(prior, v)
+            return v
+        return None
+
+    def out_param(self, name: str, defs: list[tuple[Any, Any]], index: int, depth: int):
+        """What function ``name`` sets its ``index``-th argument to (a non-const reference or
+        pointer parameter), or None when no definition sets it."""
+        key = ("out", name, index)
+        if key in self.folder.memo:
+            return self.folder.memo[key]
+        if key in self._stack:
+            return None
+        self._stack.add(key)
+        out: AbstractValue | None = None
+        try:
+            for pf, fn in defs:
+                found = _out_param(fn, index)
+                if found is None:
+                    continue
+                pname, pointer = found
+                if pointer:
+                    values = [
+                        settle(self._eval(pf, rhs, depth + 1)).because(
+                            f"{name}() sets `*{pname}` to {_clip(text(rhs))} at {_at(pf, rhs)}"
+                        )
+                        for rhs in _pointer_writes(fn, pname)
+                    ]
+                else:
+                    writes = [a for a in pf.local.get(fn.id, {}).get(pname, []) if a.op]
+                    body = fn.child_by_field_name("body")
+                    if not writes or body is None or not body.children:
+                        continue
+                    end = body.children[-1]
+                    v = self._assigned(pf, fn, end, pname, writes, False, depth + 1)
+                    last = writes[-1]
+                    step = f"{name}() sets `{pname}`: {_clip(text(last.node))}"
+                    values = (
+                        [] if v is None else [settle(v).because(f"{step} at {_at(pf, last.node)}")]
+                    )
+                for v in values:
+                    out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(key)
+        self.folder.memo[key] = out
+        return out
 
     def _param(self, fnode: Any, key: str, depth: int) -> AbstractValue:
         """A parameter: what the folder's calls of the function pass for it."""
@@ -816,6 +903,119 @@ def _target(n: Any) -> str:
         name = n.child_by_field_name("name")
         return text(name) if name is not None else ""
     return ""
+
+
+#: calls that read their arguments and never set them
+_NOT_SETTERS = {
+    "Notify",
+    "printf",
+    "fprintf",
+    "sprintf",
+    "snprintf",
+    "MOOSTrace",
+    "reportEvent",
+    "reportRunWarning",
+    "reportConfigWarning",
+    "doubleToString",
+    "doubleToStringX",
+    "intToString",
+    "to_string",
+    "push_back",
+    "emplace_back",
+    "insert",
+    "fabs",
+    "abs",
+    "sqrt",
+    "pow",
+    "sin",
+    "cos",
+    "tan",
+    "isnan",
+    "isfinite",
+    "min",
+    "max",
+}
+
+
+def _calls_passing(fnode: Any, key: str) -> list[tuple[Any, str, int]]:
+    """The calls in ``fnode`` that pass ``key`` (or ``&key``) as an argument, in order:
+    (call, callee, argument index)."""
+    found: list[tuple[Any, str, int]] = []
+    body = fnode.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        if x.type == "call_expression":
+            args = x.child_by_field_name("arguments")
+            argv = [a for a in args.named_children if a.type != "comment"] if args else []
+            for i, a in enumerate(argv):
+                a = strip(a)
+                if a is None:
+                    continue
+                if a.type == "pointer_expression" and text(a).startswith("&"):
+                    a = strip(a.child_by_field_name("argument"))
+                if a is not None and a.type == "identifier" and text(a) == key:
+                    name = callee_name(x.child_by_field_name("function"))
+                    found.append((x, name, i))
+        stack.extend(x.named_children)
+    found.sort(key=lambda c: c[0].start_byte)
+    return found
+
+
+def _out_param(fn: Any, index: int) -> tuple[str, bool] | None:
+    """The ``index``-th parameter of ``fn`` when the function may set it: its name, and
+    whether it is a pointer (else a non-const reference)."""
+    decl = _function_declarator(fn)
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    plist = [
+        p for p in (params.named_children if params is not None else ()) if p.type != "comment"
+    ]
+    if index >= len(plist):
+        return None
+    p = plist[index]
+    d = p.child_by_field_name("declarator")
+    if d is None or d.type not in ("reference_declarator", "pointer_declarator"):
+        return None
+    if any(c.type == "type_qualifier" and text(c) == "const" for c in p.children):
+        return None
+    pointer = d.type == "pointer_declarator"
+    while d is not None and d.type != "identifier":
+        nxt = d.child_by_field_name("declarator")
+        if nxt is None:
+            nxt = next((c for c in d.named_children if c.type == "identifier"), None)
+        d = nxt
+    return (text(d), pointer) if d is not None else None
+
+
+def _pointer_writes(fn: Any, pname: str) -> list[Any]:
+    """Right sides of ``*p = x`` and ``p[0] = x`` in ``fn``."""
+    out = []
+    body = fn.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        if x.type == "assignment_expression" and text(x.child_by_field_name("operator")) == "=":
+            left = strip(x.child_by_field_name("left"))
+            target = None
+            if (
+                left is not None
+                and left.type == "pointer_expression"
+                and text(left).startswith("*")
+            ):
+                target = strip(left.child_by_field_name("argument"))
+            elif left is not None and left.type == "subscript_expression":
+                idx = left.child_by_field_name("indices") or left.child_by_field_name("index")
+                if idx is not None and text(idx).strip("[] ") == "0":
+                    target = strip(left.child_by_field_name("argument"))
+            if target is not None and target.type == "identifier" and text(target) == pname:
+                out.append(x.child_by_field_name("right"))
+        stack.extend(x.named_children)
+    out.sort(key=lambda r: r.start_byte)
+    return out
 
 
 def _returns_of(fn: Any) -> list[Any]:
@@ -934,6 +1134,10 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     if v.pending is None:
         return v
     base = resolver(v.pending)
+    if "#" in v.pending and (base is None or not base.known):
+        # an argument the function does not set (or one we cannot see): as before the call
+        before = v.fallback if v.fallback is not None else UNKNOWN
+        return apply_ops(resolve_pending(before, resolver), v.ops)
     if base is None or not base.known:
         base = name_hint(v.pending)  # a getter defined nowhere in the repository
     out = apply_ops(base, v.ops)
@@ -963,6 +1167,10 @@ class RepositoryResolver:
         if name in self.cache:
             return self.cache[name]
         self.cache[name] = None  # recursion guard
+        fname, _, index = name.partition(
+            "#"
+        )  # ``getAttitude#2``: what it sets its third argument to
+        name = fname
         pattern = re.compile(_DEF_TEMPLATE % re.escape(name.encode()))
         out: AbstractValue | None = None
         for path in self.paths:
@@ -980,12 +1188,18 @@ class RepositoryResolver:
             defs = folder.functions.get(name)
             if not defs:
                 continue
-            v = Evaluator(folder)._returns(name, defs, 0)
+            if index:
+                w = Evaluator(folder).out_param(name, defs, int(index), 0)
+                if w is None:
+                    continue
+                v = w
+            else:
+                v = Evaluator(folder)._returns(name, defs, 0)
             if v.pending is not None and v.pending != name:
                 v = resolve_pending(v, self)
             if v.known:
                 out = v if out is None else join(out, v)
-        self.cache[name] = out
+        self.cache[f"{name}#{index}" if index else name] = out
         return out
 
     def _parse(self, path: str, data: bytes) -> Any:

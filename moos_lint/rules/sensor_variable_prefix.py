@@ -18,7 +18,9 @@ Names with an nsplug macro (`$(X)`) or a run-time placeholder are skipped.
 
 In C++, it reads what an interface app (process name `i...`) publishes with
 `Notify`: a name known statically whose last word is a category but that has
-no sensor prefix (`Notify("DEPTH", ...)`, `Notify("YAW", ...)`).
+no sensor prefix (`Notify("DEPTH", ...)`, `Notify("YAW", ...)`); and in a
+mission, the same of a name given to a key that renames what the app's C++
+publishes (`alt_name = DEPTH` when the app publishes `m_alt_name`).
 
 This rule is off by default. MOOS-IvP does not follow this part of the 2007
 document: its sensors and simulators publish `NAV_*` and app-prefixed names
@@ -116,7 +118,8 @@ def check(ctx):
         found = [(n, s, ln, "") for n, s, ln in found]
         listed = {(s.line, n) for n, s, _l, _w in found}
         for c in configured.get(block.name, ()):
-            if _WORD.fullmatch(c.name) and (c.span.line, c.name) not in listed:
+            # as in C++: a name that is a bare category (no sensor prefix)
+            if c.name in cats and (c.span.line, c.name) not in listed:
                 found.append((c.name, c.span, c.line, f" ({c.says()})"))
         for name, span, line, why in found:
             bare = bare_name(name)
