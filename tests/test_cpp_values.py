@@ -180,3 +180,37 @@ def test_an_out_parameter_set_in_another_file_resolves_there(tmp_path):
     assert out.unit == "deg" and any("Ahrs.cpp:2" in w for w in out.why)
     kept = resolve_pending(v["W_YAW"], resolver)  # log() sets nothing: as before the call
     assert kept.unit == "rad"
+
+
+def test_print_labels_hint_a_unit_only_where_nothing_else_is_known():
+    v = published(
+        r"""
+        bool Imu::Iterate() {
+          double r = m_dev.r;
+          double p = m_dev.p;
+          double y = m_dev.y;
+          double z = atan2(m_a, m_b);
+          printf("Roll: %f deg, Pitch (deg): %.2f\n", r, p);
+          MOOSTrace("yaw %f rad z [deg] %f\n", y, z);
+          Notify("IMU_ROLL", r);
+          Notify("IMU_PITCH", p);
+          Notify("IMU_YAW", y);
+          Notify("Z_YAW", z);
+          Notify("G_ROLL", m_groll);
+          Notify("T_ROLL", m_troll);
+          return true;
+        }
+        bool Imu::buildReport() {
+          m_msgs << "Gyro roll (deg/s): " << m_groll << endl;
+          m_msgs << "Roll: " << m_troll << " deg" << endl;
+          m_msgs << "Roll: " << m_troll << " rad" << endl;
+          return true;
+        }
+        """
+    )
+    assert (v["IMU_ROLL"].unit, v["IMU_ROLL"].hint) == ("deg", True)
+    assert v["IMU_PITCH"].unit == "deg" and "printed as degrees" in v["IMU_PITCH"].why[0]
+    assert v["IMU_YAW"].unit == "rad"
+    assert v["Z_YAW"].unit == "rad" and not v["Z_YAW"].hint  # the value wins over its label
+    assert v["G_ROLL"].unit == "deg/s"
+    assert not v["T_ROLL"].known  # printed with two units: no hint

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -320,6 +321,116 @@ def comment_hint(line: str) -> AbstractValue:
     )
 
 
+#: calls whose first string argument formats the ones after it
+_FORMAT_CALLS = {
+    "printf",
+    "fprintf",
+    "sprintf",
+    "snprintf",
+    "MOOSTrace",
+    "MOOSFormat",
+    "reportEvent",
+    "reportRunWarning",
+    "format",
+}
+_CONVERSION = re.compile(r"%[-+ #0]*(?:\d+|\*)?(?:\.(?:\d+|\*))?(?:hh|h|ll|l|L|z|j|t)?([a-zA-Z%])")
+_UNIT_WORD = r"(deg(?:rees?)?(?:\s*/\s*s(?:ec)?)?|rad(?:ians?)?(?:\s*/\s*s(?:ec)?)?|°)"
+#: a label before the value: ``Yaw (deg):``, ``pitch [rad] =``, ``roll in degrees:``
+_UNIT_BEFORE = re.compile(
+    rf"(?:[(\[]\s*{_UNIT_WORD}\s*[)\]]|\bin\s+{_UNIT_WORD})\s*[:=]?\s*$", re.I
+)
+#: a unit right after the value: ``%f deg``, ``<< " rad"``
+_UNIT_AFTER = re.compile(rf"^\s*{_UNIT_WORD}(?![A-Za-z])", re.I)
+_SEPARATORS = re.compile(r"[,;|\t\n]|\\n|\\t")
+
+
+def unit_label(unit: str) -> str:
+    return {
+        "deg": "degrees",
+        "rad": "radians",
+        "deg/s": "degrees per second",
+        "rad/s": "radians per second",
+    }.get(unit, unit)
+
+
+def _label_unit(before: str, after: str) -> str | None:
+    """The unit that the text around a printed value names."""
+    before = _SEPARATORS.split(before)[-1]
+    after = _SEPARATORS.split(after)[0]
+    m = _UNIT_BEFORE.search(before) or _UNIT_AFTER.search(after)
+    if not m:
+        return None
+    word = next(g for g in m.groups() if g).lower().replace(" ", "")
+    unit = "deg" if word.startswith("deg") or word == "°" else "rad"
+    return unit + "/s" if "/" in word else unit
+
+
+def _string_text(n: Any) -> str | None:
+    if n is None:
+        return None
+    if n.type == "concatenated_string":
+        parts = [_string_text(c) for c in n.named_children]
+        return None if any(p is None for p in parts) else "".join(p for p in parts if p)
+    if n.type != "string_literal":
+        return None
+    return "".join(
+        text(c) for c in n.named_children if c.type in ("string_content", "escape_sequence")
+    )
+
+
+def _print_labels(root: Any) -> Iterator[tuple[str, str, Any]]:
+    """(variable, unit, node) for each variable printed next to a unit label."""
+    stack = [root]
+    while stack:
+        x = stack.pop()
+        stack.extend(x.named_children)
+        if x.type == "call_expression":
+            if callee_name(x.child_by_field_name("function")) not in _FORMAT_CALLS:
+                continue
+            args = x.child_by_field_name("arguments")
+            argv = [a for a in args.named_children if a.type != "comment"] if args else []
+            fmt_at = next((i for i, a in enumerate(argv) if _string_text(a) is not None), None)
+            if fmt_at is None:
+                continue
+            fmt = _string_text(argv[fmt_at]) or ""
+            convs = [m for m in _CONVERSION.finditer(fmt) if m.group(1) != "%"]
+            values = argv[fmt_at + 1 :]
+            for k, m in enumerate(convs):
+                if k >= len(values) or m.group(1) not in "fFeEgG":
+                    continue
+                var = strip(values[k])
+                if var is None or var.type not in ("identifier", "field_expression"):
+                    continue
+                start = convs[k - 1].end() if k else 0
+                end = convs[k + 1].start() if k + 1 < len(convs) else len(fmt)
+                unit = _label_unit(fmt[start : m.start()], fmt[m.end() : end])
+                if unit:
+                    yield _target(var), unit, x
+        elif x.type == "binary_expression" and text(x.child_by_field_name("operator")) == "<<":
+            parent = x.parent
+            if (
+                parent is not None
+                and parent.type == "binary_expression"
+                and text(parent.child_by_field_name("operator")) == "<<"
+            ):
+                continue  # the chain is read from its top
+            chain: list[Any] = []
+            y = x
+            while y.type == "binary_expression" and text(y.child_by_field_name("operator")) == "<<":
+                chain.append(strip(y.child_by_field_name("right")))
+                y = strip(y.child_by_field_name("left"))
+            chain.append(y)
+            chain.reverse()
+            for k, var in enumerate(chain):
+                if var is None or var.type not in ("identifier", "field_expression") or k == 0:
+                    continue
+                before = _string_text(chain[k - 1])
+                after = _string_text(chain[k + 1]) if k + 1 < len(chain) else None
+                unit = _label_unit(before or "", after or "")
+                if unit:
+                    yield _target(var), unit, x
+
+
 # -- the evaluator ------------------------------------------------------------
 
 
@@ -365,6 +476,23 @@ class Folder:
                     self.functions.setdefault(name, []).append((pf, fn))
         self.memo: dict[tuple, AbstractValue] = {}
         self._calls: dict[str, list[tuple[Any, Any]]] | None = None
+        self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None
+
+    def printed(self) -> dict[tuple[int | None, str], list[tuple[str, str]]]:
+        """(function id for a local or None, variable) -> the units its print labels name."""
+        if self._printed is None:
+            self._printed = {}
+            for pf in self.files:
+                for var, unit, node in _print_labels(pf.tree.root_node):
+                    at = place(pf.path, node.start_point[0] + 1)
+                    why = f"printed as {unit_label(unit)} at {at}"
+                    fn = pf.function_of(node)
+                    local = fn is not None and (
+                        var in pf.local.get(fn.id, {}) or _is_param(fn, var)
+                    )
+                    where = fn.id if local else None
+                    self._printed.setdefault((where, var), []).append((unit, why))
+        return self._printed
 
     def calls(self, name: str) -> list[tuple[Any, Any]]:
         """The calls of function ``name`` in the folder (indexed on first use)."""
@@ -460,7 +588,28 @@ class Evaluator:
                 h = comment_hint(line)
                 if h.known:
                     return replace(h, range=v.range, sign=v.sign or h.sign)
+            h = self._printed(pf, strip(node))
+            if h is not None:
+                return replace(h, range=v.range, sign=v.sign)
         return v
+
+    def _printed(self, pf: Any, n: Any) -> AbstractValue | None:
+        """The unit a format string or a stream label gives the variable ``n`` where the app
+        prints it (``printf("Yaw (deg): %f", yaw)``, ``ss << yaw << " deg"``): a hint, used
+        only when nothing else is known of the value."""
+        if n is None or n.type not in ("identifier", "field_expression"):
+            return None
+        key = _target(n)
+        fnode = pf.function_of(n)
+        local = fnode is not None and (key in pf.local.get(fnode.id, {}) or _is_param(fnode, key))
+        labels = self.folder.printed().get((fnode.id if local else None, key))
+        if not labels:
+            return None
+        units = {u for u, _w in labels}
+        if len(units) != 1:
+            return None  # printed with different units: no hint
+        unit, why = labels[0]
+        return AbstractValue(unit=unit, hint=True, why=(why,))
 
     # -- expressions
     def _eval(self, pf: Any, n: Any, depth: int) -> AbstractValue:
