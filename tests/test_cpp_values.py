@@ -214,3 +214,25 @@ def test_print_labels_hint_a_unit_only_where_nothing_else_is_known():
     assert v["Z_YAW"].unit == "rad" and not v["Z_YAW"].hint  # the value wins over its label
     assert v["G_ROLL"].unit == "deg/s"
     assert not v["T_ROLL"].known  # printed with two units: no hint
+
+
+def test_a_table_of_names_gives_each_of_its_names():
+    files = parse_folder(
+        {
+            "app/App.cpp": SourceFile(
+                "app/App.cpp",
+                """
+                static const char* kNames[] = {"THRUST_L", "MOTOR_RIGHT"};
+                const std::string kAngles[3] = {"ROV_ROLL", "ROV_PITCH", "ROV_YAW"};
+                bool A::Iterate() {
+                  for (int i = 0; i < 2; i++) Notify(kNames[i], m_cmd[i]);
+                  Notify(kAngles[2], m_yaw * 180 / M_PI);
+                  return true;
+                }
+                """,
+            )
+        }
+    )
+    pubs = [(p.name.text, p.value.abstract) for f in files for p in f.publications]
+    assert [name for name, _v in pubs] == ["THRUST_L", "MOTOR_RIGHT", "ROV_YAW"]
+    assert pubs[2][1].unit == "deg"

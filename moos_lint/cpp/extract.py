@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import bisect
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -191,6 +192,8 @@ class FolderTables:
     assigns: dict[str, list[str | None]] = field(default_factory=dict)
     # member -> the configuration key read into it (``GetConfigurationParam("prefix", m_prefix)``)
     config_keys: dict[str, str] = field(default_factory=dict)
+    # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
+    name_tables: dict[str, list[str]] = field(default_factory=dict)
 
 
 class Spans:
@@ -321,6 +324,8 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                     t.config_keys.setdefault(a.target, key)
                     continue
             t.assigns.setdefault(a.target, []).append(val)
+        for name, entries in _name_tables(pf):
+            t.name_tables.setdefault(name, entries)
         for name, args in pf.inits:
             vals = args.named_children
             val = string_value(vals[0]) if len(vals) == 1 else None
@@ -333,6 +338,33 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 if key is not None and member:
                     t.config_keys.setdefault(member, key.lower())
     return t
+
+
+_TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
+
+
+def _name_tables(pf: ParsedFile) -> Iterator[tuple[str, list[str]]]:
+    """Arrays initialised with string literals only (the file is walked only when it has one)."""
+    if not _TABLE_HINT.search(pf.data):
+        return
+    stack = [pf.tree.root_node]
+    while stack:
+        x = stack.pop()
+        if x.type != "init_declarator":
+            stack.extend(x.named_children)
+            continue
+        decl = x.child_by_field_name("declarator")
+        value = x.child_by_field_name("value")
+        while decl is not None and decl.type in ("pointer_declarator", "reference_declarator"):
+            decl = decl.child_by_field_name("declarator")
+        if decl is None or decl.type != "array_declarator" or value is None:
+            continue
+        if value.type != "initializer_list":
+            continue
+        items = [c for c in value.named_children if c.type != "comment"]
+        lits = [string_value(c) for c in items]
+        if items and all(v is not None for v in lits):
+            yield text(decl.child_by_field_name("declarator")), [v for v in lits if v]
 
 
 def _config_branch_key(pf: ParsedFile, a: _Asg) -> str | None:
@@ -408,6 +440,29 @@ class Extractor:
                 enum = text(key).split("::")[-1]
                 return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", enum).upper()
         return ""
+
+    def _table_names(self, n: Any) -> list[Name]:
+        """``names[i]`` (or ``names[i].c_str()``) of a table of literal names: each name the
+        table holds, or the one a literal index picks."""
+        n = strip_parens(n)
+        if n is not None and n.type == "call_expression":
+            fn = n.child_by_field_name("function")
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str"):
+                n = strip_parens(fn.child_by_field_name("argument"))
+        if n is None or n.type != "subscript_expression":
+            return []
+        entries = self.tables.name_tables.get(target_name(n.child_by_field_name("argument")))
+        if not entries:
+            return []
+        idx = n.child_by_field_name("indices") or n.child_by_field_name("index")
+        inner = [c for c in idx.named_children] if idx is not None else []
+        if len(inner) == 1 and inner[0].type == "number_literal":
+            try:
+                entries = [entries[int(text(inner[0]), 0)]]
+            except (ValueError, IndexError):
+                return []
+        src = text(n)
+        return [Name(source=src, text=e, prefix=e) for e in dict.fromkeys(entries)]
 
     def _config_key(self, n: Any) -> str | None:
         """The configuration key that sets the member a name is built from."""
@@ -652,18 +707,22 @@ class Extractor:
         out = self.out
         if name in PUBLISH and argv and _is_moos_call(fn):
             pub_name = self.name(argv[0])
+            names = [pub_name] if pub_name.text is not None else self._table_names(argv[0])
+            names = names or [pub_name]
             value = self.value(argv[1]) if len(argv) > 1 else None
-            if value is not None and self.evaluator is not None and valued_name(pub_name.last):
+            valued = any(valued_name(n.last) for n in names)
+            if value is not None and self.evaluator is not None and valued:
                 value.abstract = self.evaluator.of(self.pf, argv[1])
-            out.publications.append(
-                Publication(
-                    name=pub_name,
-                    value=value,
-                    span=spans.of(call),
-                    name_span=spans.of(argv[0]),
-                    function=self._fn_of(call),
+            for each in names:
+                out.publications.append(
+                    Publication(
+                        name=each,
+                        value=value,
+                        span=spans.of(call),
+                        name_span=spans.of(argv[0]),
+                        function=self._fn_of(call),
+                    )
                 )
-            )
         elif name in VARIABLE_SET and argv and fn.type == "field_expression":
             self._variable_set(call, fn, argv)
         elif name in FROM_DEGREES and argv:
