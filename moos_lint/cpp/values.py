@@ -477,6 +477,8 @@ class Folder:
         self.memo: dict[tuple, AbstractValue] = {}
         self._calls: dict[str, list[tuple[Any, Any]]] | None = None
         self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None
+        #: function id -> variable -> the calls passing it (:func:`_calls_passing`)
+        self.passing: dict[int, dict[str, list[tuple[Any, str, int]]]] = {}
 
     def printed(self) -> dict[tuple[int | None, str], list[tuple[str, str]]]:
         """(function id for a local or None, variable) -> the units its print labels name."""
@@ -876,7 +878,7 @@ class Evaluator:
         (``getAttitude(roll, pitch, yaw)``, ``read(&yaw)``), when the last such call comes
         after the last assignment before ``use``; None when no call sets it."""
         after = before[-1].node.end_byte if before else 0
-        for call, name, index in reversed(_calls_passing(fnode, key)):
+        for call, name, index in reversed(_calls_passing(fnode, key, self.folder.passing)):
             if not (after <= call.start_byte and call.end_byte <= use.start_byte):
                 continue
             own = self.folder.functions.get(name)
@@ -1086,10 +1088,17 @@ _NOT_SETTERS = {
 }
 
 
-def _calls_passing(fnode: Any, key: str) -> list[tuple[Any, str, int]]:
+def _calls_passing(fnode: Any, key: str, memo: dict) -> list[tuple[Any, str, int]]:
     """The calls in ``fnode`` that pass ``key`` (or ``&key``) as an argument, in order:
-    (call, callee, argument index)."""
-    found: list[tuple[Any, str, int]] = []
+    (call, callee, argument index). ``memo`` keeps each function's calls by variable."""
+    calls = memo.get(fnode.id)
+    if calls is None:
+        calls = memo[fnode.id] = _calls_by_argument(fnode)
+    return calls.get(key, [])
+
+
+def _calls_by_argument(fnode: Any) -> dict[str, list[tuple[Any, str, int]]]:
+    found: dict[str, list[tuple[Any, str, int]]] = {}
     body = fnode.child_by_field_name("body")
     stack = [body] if body is not None else []
     while stack:
@@ -1105,11 +1114,12 @@ def _calls_passing(fnode: Any, key: str) -> list[tuple[Any, str, int]]:
                     continue
                 if a.type == "pointer_expression" and text(a).startswith("&"):
                     a = strip(a.child_by_field_name("argument"))
-                if a is not None and a.type == "identifier" and text(a) == key:
+                if a is not None and a.type == "identifier":
                     name = callee_name(x.child_by_field_name("function"))
-                    found.append((x, name, i))
+                    found.setdefault(text(a), []).append((x, name, i))
         stack.extend(x.named_children)
-    found.sort(key=lambda c: c[0].start_byte)
+    for calls in found.values():
+        calls.sort(key=lambda c: c[0].start_byte)
     return found
 
 
