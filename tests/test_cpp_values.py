@@ -236,3 +236,23 @@ def test_a_table_of_names_gives_each_of_its_names():
     pubs = [(p.name.text, p.value.abstract) for f in files for p in f.publications]
     assert [name for name, _v in pubs] == ["THRUST_L", "MOTOR_RIGHT", "ROV_YAW"]
     assert pubs[2][1].unit == "deg"
+
+
+def test_a_member_set_through_an_out_parameter_in_another_method():
+    v = published(
+        """
+        void Ahrs::euler(double& roll, double& yaw) {
+          roll = m_r;
+          yaw = atan2(m_a, m_b) * 180.0 / M_PI;
+        }
+        bool A::OnNewMail(MOOSMSG_LIST& mail) { m_ahrs.euler(m_roll, m_yaw); return true; }
+        bool A::Iterate() {
+          Notify("A_YAW", m_yaw);
+          Notify("A_ROLL", m_roll);
+          return true;
+        }
+        """
+    )
+    assert v["A_YAW"].unit == "deg"
+    assert any("euler() sets `m_yaw`" in w for w in v["A_YAW"].why)
+    assert not v["A_ROLL"].known

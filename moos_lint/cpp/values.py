@@ -905,6 +905,36 @@ class Evaluator:
             return v
         return None
 
+    def _member_set_by_calls(self, key: str, depth: int) -> AbstractValue:
+        """A member never assigned but passed to functions of the folder that set it
+        (``getAttitude(m_roll, m_pitch, m_yaw)`` in one method, published in another)."""
+        mkey = ("member-out", key)
+        if mkey in self.folder.memo:
+            return self.folder.memo[mkey]
+        if mkey in self._stack:
+            return UNKNOWN
+        self._stack.add(mkey)
+        out: AbstractValue | None = None
+        try:
+            for pf in self.folder.files:
+                for fnode in pf.functions:
+                    if key in pf.local.get(fnode.id, {}) or _is_param(fnode, key):
+                        continue  # a local of that name
+                    for call, name, index in _calls_passing(fnode, key, self.folder.passing):
+                        own = self.folder.functions.get(name)
+                        if not own:
+                            continue  # a function we cannot see may or may not set it
+                        v = self.out_param(name, own, index, depth + 1)
+                        if v is None:
+                            continue
+                        v = v.because(f"{name}() sets `{key}` at {_at(pf, call)}")
+                        out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(mkey)
+        out = out or UNKNOWN
+        self.folder.memo[mkey] = out
+        return out
+
     def out_param(self, name: str, defs: list[tuple[Any, Any]], index: int, depth: int):
         """What function ``name`` sets its ``index``-th argument to (a non-const reference or
         pointer parameter), or None when no definition sets it."""
@@ -994,7 +1024,7 @@ class Evaluator:
     def _member(self, key: str, depth: int) -> AbstractValue:
         asgs = self.folder.members.get(key)
         if not asgs:
-            return UNKNOWN
+            return self._member_set_by_calls(key, depth)
         mkey = ("member", key)
         if mkey in self.folder.memo:
             return self.folder.memo[mkey]
