@@ -136,7 +136,7 @@ def _goby() -> tuple[dict[str, TextFormatApp], TextFormatSchema]:
     commit = str(data.get("source", {}).get("commit", ""))[:8]
     apps = {}
     for name, d in data.get("apps", {}).items():
-        prov = f"goby {commit} {d.get('source', '')}, {d.get('proto', '')}".strip()
+        prov = f"goby {commit} {d.get('source', '')}".strip()
         apps[name.lower()] = TextFormatApp(name, d["message"], prov)
     msgs = data.get("messages", {})
     schema = TextFormatSchema(
