@@ -32,7 +32,7 @@ _MOOS_LINE = re.compile(r"^\s*[^:={}#\[]+=")
 
 
 class _Tok:
-    __slots__ = ("text", "line", "start", "end", "kind")
+    __slots__ = ("end", "kind", "line", "start", "text")
 
     def __init__(self, text: str, line: Line, start: int, end: int, kind: str) -> None:
         self.text, self.line, self.start, self.end, self.kind = text, line, start, end, kind

@@ -235,7 +235,7 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
     enums: dict[str, dict] = {}
     where: dict[str, str] = {}
     for f in files:
-        for full, m in f.messages.items():
+        for full in f.messages:
             messages.setdefault(full, {"fields": {}, "extensions": {}, "source": f.path})
             where[full] = f.path
         for full, values in f.enums.items():
