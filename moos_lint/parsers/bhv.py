@@ -5,6 +5,8 @@
   (not on lines starting with ``//`` or ``#``).
 - ``//`` starts a comment anywhere; ``#`` is *not* a comment.
 - A line the state machine does not expect fails the whole behavior set.
+- ``Behavior = KIND`` lines in exclusive ``#ifdef`` branches followed by one
+  shared ``{ ... }`` body (valid after nsplug) are alternatives sharing the body.
 """
 
 from __future__ import annotations
@@ -61,6 +63,7 @@ def _joined(lines: list[Line]) -> list[Line]:
                 carry.lineno,
                 carry.chain,
                 carry.branches,
+                carry.facts,
             )
         else:
             carry = line
@@ -81,6 +84,7 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
     state = "top"  # top | bhv-wait | bhv | set-wait | set | set-else | skip
     behavior: Behavior | None = None
     setblock: SetBlock | None = None
+    alternatives: list[Behavior] = []  # the behavior and its exclusive alternatives
     skip_depth = 0
     for line in _joined(expansion.lines):
         for src, piece, offset in _pieces(line):
@@ -110,12 +114,26 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                 if text == "{":
                     state = "bhv"
                     continue
+                m = _BEHAVIOR.match(text)
+                if (
+                    m
+                    and m.group(1)
+                    and behavior is not None
+                    and all(src.excludes(b.header) for b in alternatives)
+                ):
+                    # `Behavior =` chosen in exclusive #ifdef branches, the body shared
+                    alt = Behavior(m.group(1), src, src.text.find(m.group(1), offset))
+                    alt.params = behavior.params
+                    bf.behaviors.append(alt)
+                    alternatives.append(alt)
+                    continue
                 bf.invalid.append((src, "expected `{` to open the Behavior block"))
                 state = "top"
             if state == "bhv":
                 assert behavior is not None
                 if text == "}":
-                    behavior.closed = True
+                    for b in alternatives:
+                        b.closed = True
                     state = "top"
                     continue
                 if text == "{" or _BEHAVIOR.match(text):
@@ -154,6 +172,7 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
             if m and m.group(1):
                 behavior = Behavior(m.group(1), src, src.text.find(m.group(1), offset))
                 bf.behaviors.append(behavior)
+                alternatives = [behavior]
                 state = "bhv-wait"
                 continue
             if m:

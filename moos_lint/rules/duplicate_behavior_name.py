@@ -85,6 +85,8 @@ def check(ctx):
         named.append(names[-1])
     for i, p in enumerate(named):
         for q in named[:i]:
+            if q is p:  # alternatives that share one body (`Behavior =` chosen by #ifdef)
+                break
             if exclusive(p.line, q.line, ctx.expansion):
                 continue
             how = _collide(p.value, q.value)
