@@ -39,12 +39,19 @@ MOOS-IvP caveats, deliberately not reported:
 """
 
 import difflib
+import os
 
 from moos_lint.catalogue import catalogue_for
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
-from moos_lint.rules._catalogue_bhv import lookup
+from moos_lint.rules._catalogue_bhv import _root, lookup
+
+
+def _shown(folder: str) -> str:
+    """The searched folder, relative to the working folder when it lies under it."""
+    rel = os.path.relpath(folder)
+    return "the working folder" if rel == "." else f"`{folder if rel.startswith('..') else rel}`"
 
 
 @rule(
@@ -67,7 +74,7 @@ def check(ctx):
         names = {b.name.lower(): b.name for b in cat.behaviors.values()}
         close = [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
-        msg += "no C++ file of that name in the project)"
+        msg += f"no C++ file of that name under {_shown(_root(ctx))})"
         fix = None
         if close:
             msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
