@@ -16,7 +16,9 @@ Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
 Known ANTLER keys: `Run`, `MSBetweenLaunches`, `ExecutablePath`,
 `GentleKill`, `EnableDistributed`, `KillOnDBDisconnect`, and the named lists
 that a Run line refers to with `ExtraProcessParams=NAME`, `XConfig=NAME` or
-`Win32Config=NAME`. The app-level keys every MOOS app reads from its own
+`Win32Config=NAME`, and numbered console configurations (`4 = -geometry,...`,
+which old missions keep for `XConfig=4` lines, some of them commented out).
+The app-level keys every MOOS app reads from its own
 block (`AppTick`, `CommsTick`, `MaxAppTick`, `IterateMode`, `SortMailByTime`,
 `CatchCommandMessages`, the `moos_*` flags, and AppCasting's `COMMS_POLICY`,
 `APP_LOGGING`, `TERM_REPORT_INTERVAL`, `MAX_APPCAST_EVENTS`,
@@ -163,6 +165,8 @@ def check(ctx):
                 if run.options.get(opt):
                     known.append(run.options[opt])
         for p in block.params:
+            if _norm(p.key).isdigit():
+                continue  # a numbered console configuration (`4 = -geometry,...`, XConfig=4)
             yield from _judge(ctx, p, known, "ANTLER-block", r007)
 
 
