@@ -396,14 +396,19 @@ class Preprocessor:
             if conj:
                 return "T" if value is not None else "F"
             return "T" if value not in (None, "") else "F"
-        if value is None:
+        # nsplug reads ``macros[name]`` from a copy of its map: an undefined name reads
+        # as "". A value test holds when the value equals the word, or the value of the
+        # macro the word names (so an empty value matches a word naming no macro); in an
+        # ``||`` list the name must also be defined.
+        if value is None and not conj:
             return "F"
+        value = "" if value is None else value
         if value == want:
             return "T"
         other = macros.get(want)
         if other is UNKNOWN:
             return "U"
-        return "T" if other is not None and other == value else "F"
+        return "T" if value == ("" if other is None else other) else "F"
 
     def eval_ifdef(self, rest: str, macros: dict) -> str:
         disj, conj = "||" in rest, "&&" in rest
