@@ -637,9 +637,13 @@ class Preprocessor:
     ) -> tuple[frozenset, frozenset]:
         """What a condition says about macros of unknown value, and what its negation says.
 
-        Only conditions that pin each name down give facts: ``#ifdef A``, ``#ifdef A v``,
-        ``#ifdef A v && B w`` and ``#ifndef A B``; an ``||`` list gives none, nor does a
-        value that is itself the name of a known macro (nsplug compares with its value).
+        Only conditions that pin each name down give facts: ``#ifdef A``, ``#ifdef A v``
+        and ``#ifndef A B``; an ``||`` or ``&&`` list gives none (the negation of an
+        ``||`` list of names excepted), nor does a value that is itself the name of a
+        known macro (nsplug compares with its value). A macro set to the empty string
+        passes every value test whose word names no macro; launch scripts give the
+        macros they test a value, so ``#ifdef VNAME abe`` and ``#ifdef VNAME ben``
+        count as exclusive.
         """
         rest = rest.strip()
         if not rest or "//" in rest or ("||" in rest and "&&" in rest):
@@ -664,25 +668,19 @@ class Preprocessor:
                 # not (A or B): every name is undefined or empty
                 neg = {(t, counts.get(t, 0), "undef", "") for t in terms}
             return frozenset(), frozenset(neg)
-        conj = "&&" in rest
-        terms = [t.strip() for t in rest.split("&&")]
-        for term in terms:
-            name, _, want = term.partition(" ")
-            want = want.strip()
-            if not unknown(name) or (want and want in macros):
-                return frozenset(), frozenset()
-            version = counts.get(name, 0)
-            if want:
-                pos.add((name, version, "eq", want))
-            elif not conj:
-                pos.add((name, version, "def", ""))
-        if len(terms) == 1:
-            name, _, want = terms[0].partition(" ")
-            version = counts.get(name, 0)
-            if want.strip():
-                neg = {(name, version, "ne", want.strip())}
-            else:
-                neg = {(name, version, "undef", "")}
+        if "&&" in rest:
+            # in an ``&&`` list an undefined name reads as "" and may pass a value test
+            return frozenset(), frozenset()
+        name, _, want = rest.partition(" ")
+        want = " ".join(want.split())
+        if not unknown(name) or (want and want in macros):
+            return frozenset(), frozenset()
+        version = counts.get(name, 0)
+        if want:
+            return frozenset({(name, version, "eq", want)}), frozenset(
+                {(name, version, "ne", want)}
+            )
+        return frozenset({(name, version, "def", "")}), frozenset({(name, version, "undef", "")})
         return frozenset(pos), frozenset(neg)
 
     # ---------------------------------------------------------------- helpers
