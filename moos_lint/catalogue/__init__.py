@@ -229,7 +229,8 @@ def _stock_app(name: str, d: dict[str, Any], bases: dict[str, Any], commit: str)
     info = AppInfo(
         name=name,
         params=params,
-        strict=bool(d.get("reports_unhandled")),
+        # the app reports any other key, or its key list is known to be complete
+        strict=bool(d.get("reports_unhandled") or d.get("keys_complete")),
         param_prefixes={p.lower() for p in d.get("param_prefixes", [])},
         publishes=set(d.get("publishes", [])),
         publish_prefixes=set(d.get("publish_prefixes", [])),

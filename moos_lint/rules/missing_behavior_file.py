@@ -111,7 +111,7 @@ def check(ctx):
                 where = "next to the mission"
                 if len(folders) > 1:
                     where += (
-                        f" nor in the {len(folders) - 1} folder(s) above it it may be launched from"
+                        f" nor in the {len(folders) - 1} folder(s) above it up to the project root"
                     )
                 yield ctx.report(
                     p.value_span,

@@ -48,9 +48,11 @@ does not know are not judged.
 
 MOOS-IvP caveats, deliberately not reported:
 - apps the catalogue does not know, and apps whose parser does not reject
-  other keys (the core MOOS apps pLogger, pShare, pMOOSBridge, pScheduler:
-  they read keys one by one and never see the others), so that a key list
-  that may be incomplete never produces a finding;
+  other keys (pMOOSBridge, pScheduler: they read keys one by one and never
+  see the others), so that a key list that may be incomplete never produces
+  a finding. pShare and pLogger are checked: their whole key lists were read
+  from their sources (`Output =` and `Log =` lines are theirs, whatever the
+  value);
 - the ANTLER block (unknown-key, R-series, checks it);
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
   or `/` (not-a-comment reports those);
