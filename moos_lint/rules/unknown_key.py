@@ -187,6 +187,17 @@ def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequenc
             line=p.line,
         )
         return
+    first = key.split()[0] if key.split() else ""
+    if first != key.strip() and first.lower() in by_lower:
+        # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing
+        yield ctx.report(
+            p.key_span,
+            f"`{key.strip()}`: the `=` after `{first}` is missing, so MOOS reads the key "
+            f"`{key.strip()}` and ignores the line (write `{first} = {key.split(None, 1)[1]}"
+            f" = {p.value}`)",
+            line=p.line,
+        )
+        return
     commented = key.startswith("#") or (key.startswith("/") and not key.startswith("//"))
     if commented and r007:
         return  # not-a-comment reports this line
