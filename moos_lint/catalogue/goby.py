@@ -55,9 +55,12 @@ _TOKEN = re.compile(
 )
 
 
+_TEMPLATE = re.compile(r"@\w+@")  # CMake template lines (`@PROTOBUF_ALLOW_ALIAS@`)
+
+
 def _tokens(text: str) -> list[str]:
     out = []
-    for m in _TOKEN.finditer(text):
+    for m in _TOKEN.finditer(_TEMPLATE.sub(" ", text)):
         t = m.group()
         if t.isspace() or t.startswith("//") or t.startswith("/*"):
             continue

@@ -91,7 +91,7 @@ def block_apps(ctx):
             yield block, app
 
 
-def _text_blocks(ctx):
+def text_blocks(ctx):
     """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
     aliases = {}
     for run in ctx.moos.runs:
@@ -163,7 +163,7 @@ def check(ctx):
                 fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
             yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
     schema = text_format_schema()
-    for block, tapp in _text_blocks(ctx):
+    for block, tapp in text_blocks(ctx):
         for f, message, close in _text_unknown(block.text_fields, tapp.message, schema, tapp):
             msg = f"`{f.name}`: {tapp.name} reads this block as protobuf text, and `{message}`"
             msg += " has no such field"
