@@ -41,8 +41,13 @@ def test_stock_catalogue_records_its_source_and_corrections():
     assert {"yaw_pid_kp", "maxrudder", "apptick", "comms_policy"} <= pid.params
     assert pid.forms["ignore_nav_yaw"][0] == "bool"
     assert "MarinePID.cpp" in pid.forms["ignore_nav_yaw"][1]
-    # core MOOS apps never reject a key: their lists are not used to judge
-    assert not cat.app("pLogger").strict
+    # pLogger's and pShare's key lists were read whole from their sources (Log/Output
+    # lines stay free); pMOOSBridge reads keys one by one and is not judged
+    assert cat.app("pLogger").strict and {"log", "asynclog"} <= cat.app("pLogger").params
+    assert cat.app("pShare").strict
+    assert not cat.app("pMOOSBridge").strict
+    # a library's keys are credited only through the classes the app reaches
+    assert "speed_factor" in pid.params and "hash_viewable" not in pid.params
     helm = cat.app("pHelmIvP")
     assert {"DESIRED_HEADING", "IVPHELM_STATE"} <= helm.publishes
     wpt = cat.behavior("bhv_waypoint")
