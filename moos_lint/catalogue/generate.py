@@ -126,11 +126,19 @@ CORRECTIONS: dict[str, dict] = {
         "(PMV_MOOSApp.cpp, lib_marineview, lib_geometry): checked by hand",
     },
     "pShare": {
-        "params": ["input", "output", "multicast_base_port", "multicast_address", "verbose"],
+        "params": [
+            "input",
+            "output",
+            "multicast_base_port",
+            "multicast_address",
+            "verbose",
+            "share",
+        ],
         "keys_complete": True,
         "why": "read with GetRepeatedConfigurations and "
         "GetParameterFromCommandLineOrConfigurationFile (Share.cpp:213-308); no other key "
-        "is read, so the list is complete",
+        "is read, so the list is complete (`Share` lines: earlier pShare versions of "
+        "themoos/essential-moos)",
     },
     "pLogger": {
         "params": ["log", "wildcardpattern", "wildcardomitpattern"],
