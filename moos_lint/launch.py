@@ -12,7 +12,9 @@ when none of them holds it.
 
 from __future__ import annotations
 
+import functools
 import os
+import re
 
 from moos_lint.project import is_within, vcs_top
 
@@ -57,3 +59,44 @@ def find_relative(name: str, folders: list[str]) -> str | None:
         if os.path.exists(candidate):
             return candidate
     return None
+
+
+_NSPLUG_PATH = re.compile(r"(?:--path=|--path\s+|(?<!\S)-p\s+)([^\s;|&]+)")
+_SCRIPT_BYTES = 256 * 1024
+
+
+@functools.lru_cache(maxsize=256)
+def script_include_paths(folder: str) -> tuple[str, ...]:
+    """The ``--path`` folders the folder's launch scripts hand nsplug.
+
+    Launch scripts (``*.sh`` beside a mission) run ``nsplug meta_x.moos targ_x.moos
+    --path=../shared_plugins`` from their own folder; includes the template cannot
+    find beside itself come from there. The scripts are read as text, never run;
+    a path holding a shell variable is not followed.
+    """
+    out: list[str] = []
+    try:
+        names = sorted(os.listdir(folder))
+    except OSError:
+        return ()
+    for name in names:
+        if not name.endswith(".sh"):
+            continue
+        path = os.path.join(folder, name)
+        try:
+            with open(path, "rb") as fh:
+                text = fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")
+        except OSError:
+            continue
+        for line in text.replace("\\\n", " ").splitlines():
+            code = line.split("#", 1)[0]
+            if "nsplug" not in code:
+                continue
+            for m in _NSPLUG_PATH.finditer(code):
+                for part in m.group(1).strip("\"'").split(":"):
+                    if not part or "$" in part or "`" in part:
+                        continue
+                    where = os.path.normpath(os.path.join(folder, part))
+                    if os.path.isdir(where) and where not in out:
+                        out.append(where)
+    return tuple(out)

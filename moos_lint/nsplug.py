@@ -442,7 +442,12 @@ class Preprocessor:
         if os.path.isabs(name):
             self.cache.probed.add(os.path.dirname(_norm(name)))
             return _norm(name) if os.path.exists(name) else None
-        for folder in (top_dir, *self.include_paths, including_dir):
+        scripts: tuple[str, ...] = ()
+        if self.mode == "lint":  # the --path folders the mission's launch scripts give nsplug
+            from moos_lint.launch import script_include_paths
+
+            scripts = script_include_paths(top_dir)
+        for folder in (top_dir, *self.include_paths, including_dir, *scripts):
             candidate = os.path.join(folder, name)
             self.cache.probed.add(os.path.dirname(_norm(candidate)))
             if os.path.exists(candidate):

@@ -4,7 +4,9 @@
 - A leading ``{`` or ``}`` and a trailing ``{`` are split off as lines of their own
   (not on lines starting with ``//`` or ``#``).
 - ``//`` starts a comment anywhere; ``#`` is *not* a comment.
-- A line the state machine does not expect fails the whole behavior set.
+- A line the state machine does not expect fails the whole behavior set; a line
+  that is still an unexpanded nsplug macro (``$(OFFSETS)``, given by the launch
+  script) is not judged.
 - ``Behavior = KIND`` lines in exclusive ``#ifdef`` branches followed by one
   shared ``{ ... }`` body (valid after nsplug) are alternatives sharing the body.
 """
@@ -14,7 +16,7 @@ from __future__ import annotations
 import dataclasses
 import re
 
-from moos_lint.model import Behavior, BehaviorFile, BhvParam, Initialize, SetBlock
+from moos_lint.model import Behavior, BehaviorFile, BhvParam, Initialize, SetBlock, has_macro
 from moos_lint.nsplug import Expansion, Line
 
 _BEHAVIOR = re.compile(r"^behavior\s*=\s*(\S*)\s*$", re.IGNORECASE)
@@ -143,6 +145,8 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                         continue
                 else:
                     param = _bhv_param(src, text, offset)
+                    if param is None and has_macro(text):
+                        continue  # the macro's value (given at launch) supplies the line
                     if param is None:
                         bf.invalid.append(
                             (src, "a Behavior block line needs the form `parameter = value`")
@@ -201,6 +205,8 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                     (src, "`#` is not a comment in a behavior file: the helm rejects this line")
                 )
                 continue
+            if has_macro(text):
+                continue  # a line an nsplug macro supplies at launch: not known here
             bf.invalid.append((src, "the helm does not understand this line"))
     if state in ("bhv", "bhv-wait") and behavior is not None:
         bf.unclosed.append(behavior.header)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from moos_lint.model import Block, MoosFile, Param, antler_runs, parse_run
+from moos_lint.model import Block, MoosFile, Param, antler_runs, has_macro, parse_run
 from moos_lint.nsplug import Expansion, Line
 from moos_lint.protobuf_text import looks_like_text_format, read_block
 
@@ -141,7 +141,8 @@ def parse_moos(expansion: Expansion) -> MoosFile:
             continue
         param = split_param(line)
         if param is None:
-            if "[" not in stripped and "]" not in stripped:
+            # a line that is still an nsplug macro gets its text at launch: not judged
+            if "[" not in stripped and "]" not in stripped and not has_macro(stripped):
                 mf.malformed.append(line)
             continue
         header = _header_name(param)
