@@ -28,7 +28,7 @@ _PUNCT = "{}<>[]:,;"
 _WORD = re.compile(r"(?:[$%]\([^)\n]*\)|[^\s{}<>\[\]:,;#\"'/]|/(?!/))+")
 _IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _FIELD_LINE = re.compile(r"^\s*(?:\[[\w.]+\]|[A-Za-z_]\w*)\s*(?::|\{|<)")
-_MOOS_LINE = re.compile(r"^\s*[^:={}#\[]+=")
+_QUOTED = re.compile(r"\"[^\"]*\"|'[^']*'")
 
 
 class _Tok:
@@ -219,13 +219,13 @@ def looks_like_text_format(lines: list[Line], known_app: bool) -> bool:
     """
     fields = moos = other = 0
     for line in lines:
-        text = line.text.strip()
-        if not text or text.startswith(("#", "//")) or text in ("{", "}"):
+        text = _QUOTED.sub('""', line.text).split("#", 1)[0].split("//", 1)[0].strip()
+        if not text or text in ("{", "}"):
             continue
-        if _FIELD_LINE.match(text):
-            fields += 1
-        elif _MOOS_LINE.match(text):
+        if "=" in text:  # `key = value`, or `POINT:NAME=x` (a MOOS line with a colon)
             moos += 1
+        elif _FIELD_LINE.match(text):
+            fields += 1
         elif not text.startswith("}"):
             other += 1
     if known_app:

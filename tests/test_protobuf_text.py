@@ -94,3 +94,10 @@ def test_the_text_format_hint():
     assert not looks_like_text_format(moos, known_app=False)
     assert looks_like_text_format(_lines("a: 1\nb = 2"), known_app=True)
     assert not looks_like_text_format(_lines("a: 1\nb = 2"), known_app=False)
+
+
+def test_a_moos_block_with_colons_is_not_text_format():
+    """`POINT:NAME=x` lines (uGeodesy) hold an `=`: MOOS lines, whatever the colon."""
+    block = _lines("AppTick = 5\nPOINT:NAME=Origin,North=0\nPOINT: NAME=Earth,Lat=47")
+    assert not looks_like_text_format(block, known_app=False)
+    assert looks_like_text_format(_lines('format: "%1%=x"\nname: "a=b"  # c=d'), False)
