@@ -390,8 +390,9 @@ _COND = condition()
 APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
     "plogger": {
         "log": (before("@", SUBSCRIBE), False),
-        "wildcardpattern": (plain(SUBSCRIBE), True),
-        "wildcardomitpattern": (plain(SUBSCRIBE), True),
+        # both are split with MOOSChomp(sVal, ",") (MOOSLogger.cpp:417-428)
+        "wildcardpattern": (comma_list(SUBSCRIBE), True),
+        "wildcardomitpattern": (comma_list(SUBSCRIBE), True),
     },
     "imatlab": {"subscribe": (before("@", SUBSCRIBE), False)},
     "utimerscript": {

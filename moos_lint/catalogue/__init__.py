@@ -124,6 +124,8 @@ class TextFormatSchema:
     extensions: dict[str, dict[str, str]]
     enums: dict[str, tuple[str, ...]]
     sources: dict[str, str]
+    #: top-of-file keys the apps read into their configuration -> where it is declared
+    moos_globals: dict[str, str] = field(default_factory=dict)
 
 
 @lru_cache(maxsize=1)
@@ -144,6 +146,7 @@ def _goby() -> tuple[dict[str, TextFormatApp], TextFormatSchema]:
         extensions={k: dict(v.get("extensions", {})) for k, v in msgs.items()},
         enums={k: tuple(v.get("values", ())) for k, v in data.get("enums", {}).items()},
         sources={k: str(v.get("source", "")) for k, v in msgs.items()},
+        moos_globals={str(k): str(v) for k, v in data.get("moos_globals", {}).items()},
     )
     return apps, schema
 

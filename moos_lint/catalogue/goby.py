@@ -11,7 +11,9 @@ format into one configuration message (``pAcommsHandlerConfig``,
 ``iFrontSeatConfig``, ...). This step reads every ``.proto`` file of the tree
 (messages, nested messages, enums, ``extend`` blocks) and writes, for each app,
 its root message and every message and enum reachable from it, each with the
-file it comes from. :mod:`moos_lint.protobuf_text` checks a block against it.
+file it comes from, and the top-of-file keys the apps also read (fields marked
+``(goby.field).moos_global = "log_path"``). :mod:`moos_lint.protobuf_text` checks a
+block against it.
 """
 
 from __future__ import annotations
@@ -80,6 +82,8 @@ class _ProtoFile:
         self.extensions: list[tuple[str, str, str, str]] = []
         #: (scope, message full name, field name, type name)
         self.refs: list[tuple[str, str, str, str]] = []
+        #: (field full name, the MOOS global key it is also read from)
+        self.moos_globals: list[tuple[str, str]] = []
         self._toks = _tokens(text)
         self._i = 0
         self._parse()
@@ -163,7 +167,13 @@ class _ProtoFile:
         if fname == "group":
             self._skip_statement()
             return
+        start = self._i
         self._skip_statement()
+        # `[(goby.field).moos_global = "log_path"]`: the app also reads this top-of-file key
+        opts = self._toks[start : self._i]
+        for k, tok in enumerate(opts[:-2]):
+            if tok.endswith("moos_global") and opts[k + 1] == "=" and opts[k + 2][:1] in "\"'":
+                self.moos_globals.append((self._full(scope, fname), opts[k + 2][1:-1]))
         fields[fname] = ftype
         self.refs.append((scope, scope, fname, ftype))
 
@@ -280,7 +290,15 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
                     todo.append(kind)
                 elif kind in enums:
                     keep.add(kind)
+    moos_globals: dict[str, str] = {}
+    for f in files:
+        for field_name, key in f.moos_globals:
+            owner = field_name.rsplit(".", 1)[0]
+            if owner in keep:
+                moos_globals.setdefault(key, f"{f.path} ({field_name})")
     return {
+        #: top-of-file keys goby's apps read into their configuration (`moos_global`)
+        "moos_globals": dict(sorted(moos_globals.items())),
         "source": {
             "repository": repository or "https://github.com/GobySoft/goby",
             "commit": commit or _git_commit(src),

@@ -63,6 +63,11 @@ MOOS-IvP caveats, deliberately not reported:
 - a key starting with `#` or a single `/` while the not-a-comment rule (R007)
   is enabled: that rule reports the line already (`#Run = pX`).
 
+In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
+top-of-file keys those apps read into their configuration (`log`, `log_path`,
+`modem_id`, `modem_id_lookup_path`, ...; the `moos_global` fields of goby's
+`.proto` files) are known too.
+
 Old MOOS missions set `Simulator = true`: no MOOS or MOOS-IvP program reads it
 today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 """
@@ -70,6 +75,7 @@ today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 import difflib
 from collections.abc import Sequence
 
+from moos_lint.catalogue import text_format_app, text_format_schema
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
@@ -154,6 +160,11 @@ def check(ctx):
     moos = ctx.moos
     r007 = any(r.code == "R007" for r in ctx.run.rules)
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
+    if any(b.text_format for b in moos.blocks) or any(
+        text_format_app(r.binary.replace("\\", "/").rsplit("/", 1)[-1]) for r in moos.runs
+    ):
+        # goby's apps also read some top-of-file keys (`log_path`, `modem_id`)
+        globals_known += list(text_format_schema().moos_globals)
     fragment = ctx.unit.path in ctx.run.included_elsewhere
     if not fragment and (moos.is_mission or moos.blocks):
         for p in moos.globals:
