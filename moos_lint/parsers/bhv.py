@@ -24,6 +24,22 @@ _INIT = re.compile(r"^(initialize_?)( +)(.*)$", re.IGNORECASE)
 _SET = re.compile(r"^set\s+(\S+?)\s*=\s*(.*)$", re.IGNORECASE)
 
 
+_BHV_HEADER = re.compile(r"^\s*(?:behavior\s*=|set\s+\S+\s*=|initialize_?\s)", re.IGNORECASE)
+_PROCESS_CONFIG = re.compile(r"^\s*processconfig\s*=", re.IGNORECASE)
+
+
+def is_behavior_fragment(expansion: Expansion) -> bool:
+    """A ``.plug`` fragment written for a behavior file: ``Behavior =``, ``set MODE =``
+    or ``initialize`` lines, no ``ProcessConfig``. MOOS-IvP missions include such plugs from their ``.bhv``
+    templates (``#include plugs/bhv_hsline.plug``)."""
+    found = False
+    for line in expansion.lines:
+        if _PROCESS_CONFIG.match(line.text):
+            return False
+        found = found or bool(_BHV_HEADER.match(line.text))
+    return found
+
+
 def _pieces(line: Line) -> list[tuple[Line, str, int]]:
     """Brace splitting: yields (line, text piece, offset of the piece in line.text)."""
     text = line.text
