@@ -30,8 +30,8 @@ _PROCESS_CONFIG = re.compile(r"^\s*processconfig\s*=", re.IGNORECASE)
 
 def is_behavior_fragment(expansion: Expansion) -> bool:
     """A ``.plug`` fragment written for a behavior file: ``Behavior =``, ``set MODE =``
-    or ``initialize`` lines, no ``ProcessConfig``. MOOS-IvP missions include such plugs from their ``.bhv``
-    templates (``#include plugs/bhv_hsline.plug``)."""
+    or ``initialize`` lines, no ``ProcessConfig``. MOOS-IvP missions include such plugs
+    from their behavior templates (``#include plugs/bhv_hsline.plug``)."""
     found = False
     for line in expansion.lines:
         if _PROCESS_CONFIG.match(line.text):
