@@ -63,6 +63,9 @@ MOOS-IvP caveats, deliberately not reported:
 - a key starting with `#` or a single `/` while the not-a-comment rule (R007)
   is enabled: that rule reports the line already (`#Run = pX`).
 
+A top-of-file key that an app of the linted repository reads with
+`m_MissionReader.GetValue("KEY", value)` is known.
+
 In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
 top-of-file keys those apps read into their configuration (`log`, `log_path`,
 `modem_id`, `modem_id_lookup_path`, ...; the `moos_global` fields of goby's
@@ -73,6 +76,7 @@ today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 """
 
 import difflib
+import re
 from collections.abc import Sequence
 
 from moos_lint.catalogue import text_format_app, text_format_schema
@@ -140,6 +144,28 @@ APP_KEYS = [
 _LIST_OPTIONS = ("extraprocessparams", "xconfig", "win32config")
 
 
+_GET_VALUE = re.compile(rb"\bGetValue\s*\(\s*\"([A-Za-z0-9_]+)\"")
+
+
+def _repo_globals(run) -> frozenset[str]:
+    """Top-of-file keys the run's own C++ apps read (``m_MissionReader.GetValue("KEY", s)``)."""
+    found = run.memos.repo_globals
+    if found is not None:
+        return found
+    keys: set[str] = set()
+    for unit in run.units:
+        app = getattr(unit, "cpp", None)
+        for f in getattr(app, "files", None) or []:
+            try:
+                with open(f.path, "rb") as fh:
+                    data = fh.read(512 * 1024)
+            except OSError:
+                continue
+            keys.update(m.group(1).decode("ascii") for m in _GET_VALUE.finditer(data))
+    run.memos.repo_globals = found = frozenset(keys)
+    return found
+
+
 def _skip_key(key: str) -> bool:
     return not key or has_macro(key) or "define:" in key or "[" in key or "]" in key
 
@@ -160,6 +186,7 @@ def check(ctx):
     moos = ctx.moos
     r007 = any(r.code == "R007" for r in ctx.run.rules)
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
+    globals_known += sorted(_repo_globals(ctx.run))
     if any(b.text_format for b in moos.blocks) or any(
         text_format_app(r.binary.replace("\\", "/").rsplit("/", 1)[-1]) for r in moos.runs
     ):
