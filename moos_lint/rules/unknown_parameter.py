@@ -54,6 +54,8 @@ MOOS-IvP caveats, deliberately not reported:
   from their sources (`Output =` and `Log =` lines are theirs, whatever the
   value);
 - the ANTLER block (unknown-key, R-series, checks it);
+- a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
+  those from anywhere in the file with `GetValue`;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
   or `/` (not-a-comment reports those);
 - parameters handed to a library the app links: the catalogue counts every
@@ -73,7 +75,13 @@ import functools
 from moos_lint.catalogue import catalogue_for, text_format_app, text_format_schema
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
-from moos_lint.model import has_macro
+from moos_lint.model import GLOBAL_KEYS, has_macro
+from moos_lint.rules.unknown_key import GLOBALS
+
+#: keys apps read with CMOOSFileReader::GetValue, which scans the whole file, blocks
+#: included: `term_reporting = false` inside a block is read by every AppCasting app
+#: (AppCastingMOOSApp.cpp:349). global-key-in-block (R009) judges such lines.
+_FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
 
 
 def block_apps(ctx):
@@ -150,7 +158,7 @@ def check(ctx):
             continue
         for p in block.params:
             key = p.lkey
-            if not key or app.reads(key) or has_macro(p.key):
+            if not key or app.reads(key) or has_macro(p.key) or key in _FILE_WIDE:
                 continue
             if key.startswith(("#", "/", "[")) or "[" in key or "]" in key:
                 continue
