@@ -29,7 +29,7 @@ from moos_lint.diagnostics import (
 from moos_lint.discovery import discover, kind_of
 from moos_lint.model import BehaviorFile, MoosFile
 from moos_lint.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
-from moos_lint.parsers.bhv import parse_bhv
+from moos_lint.parsers.bhv import is_behavior_fragment, parse_bhv
 from moos_lint.parsers.moos import parse_moos
 from moos_lint.registry import (
     Kind,
@@ -181,6 +181,8 @@ class LintRun:
             return build_cpp_units(self, [path])[0]
         kind = Kind.BHV if kind_of(path) == "bhv" else Kind.MOOS
         exp = self.preprocessor.expand(path)
+        if kind is Kind.MOOS and path.lower().endswith(".plug") and is_behavior_fragment(exp):
+            kind = Kind.BHV  # a plug of behaviors, included by a behavior template
         self.sources.update(exp.sources)
         unit = Unit(path=exp.path, kind=kind, expansion=exp)
         if exp.read_problem is None:

@@ -53,7 +53,7 @@ class GraphError(Exception):
 
 
 def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -> Graph:
-    from moos_lint.engine import LintRun, lint_files
+    from moos_lint.engine import LintRun, _build_cpp_units, lint_files
     from moos_lint.mission_model import model_of
     from moos_lint.registry import select_rules
 
@@ -65,9 +65,15 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
     if unit.moos is None or not unit.moos.is_mission:
         raise GraphError(f"{path}: not a mission (no ANTLER block)")
     run.units.append(unit)
+    # the repository's own C++ apps, as `moos-lint check` over the project reads them:
+    # one catalogue, so one model and the same findings
+    cpp = _project_cpp(unit.path, settings)
+    if cpp:
+        units, _errors = _build_cpp_units(run, cpp)
+        run.units.extend(units)
     model = model_of(run, unit.path, unit.moos)
     files = [unit.path, *(p for p, _ in model.behavior_files)]
-    result = lint_files(files, settings)
+    result = lint_files([*files, *cpp], settings)
     diags = [d for d in result.diagnostics if _concerns(d, files, model)]
 
     g = Graph(mission=unit.path)
@@ -164,6 +170,18 @@ def build_graph(path: str, settings: Settings, *, all_variables: bool = False) -
     for path_, _bf in model.behavior_files:
         g.notes.append(f"behaviors from {os.path.relpath(path_, os.path.dirname(unit.path))}")
     return g
+
+
+def _project_cpp(path: str, settings: Settings) -> list[str]:
+    """The C++ files of the project holding the mission (see :mod:`moos_lint.launch`)."""
+    from pathlib import Path
+
+    from moos_lint.discovery import discover, kind_of
+    from moos_lint.launch import project_folder
+
+    root = project_folder(settings, path)
+    found = discover([Path(root)], settings.exclude, settings.root or root).files
+    return sorted(f for f in found if kind_of(f) == "cpp")
 
 
 def _concerns(d: Diagnostic, files: list[str], model) -> bool:

@@ -45,6 +45,7 @@ from typing import Protocol
 
 from moos_lint.catalogue import AppInfo, Catalogue, PublishedKey, catalogue_for
 from moos_lint.diagnostics import Span
+from moos_lint.launch import launch_folders, project_folder
 from moos_lint.model import BehaviorFile, Block, MoosFile, RunLine, has_macro
 from moos_lint.nsplug import Expansion, Line, derived, parsed
 from moos_lint.parsers.bhv import parse_bhv
@@ -189,10 +190,12 @@ def _norm(path: str) -> str:
     return os.path.normpath(os.path.abspath(path))
 
 
-def behavior_paths(value: str, folder: str) -> tuple[list[str], bool]:
+def behavior_paths(value: str, folder: str, *parents: str) -> tuple[list[str], bool]:
     """The behavior file(s) a ``behaviors = VALUE`` line names; and whether it was resolved.
 
-    See the module docs for templates (``targ_$(VNAME).bhv`` -> ``meta_*.bhv``).
+    A plain name is looked up in the mission's folder, then in ``parents`` (the
+    other folders it may be launched from, see :mod:`moos_lint.launch`). See the
+    module docs for templates (``targ_$(VNAME).bhv`` -> ``meta_*.bhv``).
     """
     name = "".join(value.split())
     if len(name) >= 2 and name[0] == name[-1] == '"':
@@ -200,9 +203,10 @@ def behavior_paths(value: str, folder: str) -> tuple[list[str], bool]:
     if not name:
         return [], True
     if not has_macro(name):
-        path = name if os.path.isabs(name) else os.path.join(folder, name)
-        if os.path.isfile(path):
-            return [_norm(path)], True
+        for where in (folder, *parents):
+            path = name if os.path.isabs(name) else os.path.join(where, name)
+            if os.path.isfile(path):
+                return [_norm(path)], True
     base = os.path.basename(name)
     where = os.path.join(folder, os.path.dirname(name))
     ext = os.path.splitext(base)[1] or ".bhv"
@@ -345,7 +349,7 @@ class _Builder:
         self.m = MissionModel(path=path, moos=moos, catalogue=self.cat)
         #: what the model read besides its own file: each ``behaviors =`` value resolved
         #: (value, folder, paths found, ok) and each behavior file's expansion
-        self.behavior_lookups: list[tuple[str, str, tuple[list[str], bool]]] = []
+        self.behavior_lookups: list[tuple[str, tuple[str, ...], tuple[list[str], bool]]] = []
         self.behavior_expansions: list[tuple[str, Expansion]] = []
 
     def add(
@@ -409,12 +413,13 @@ class _Builder:
                 self.add(ref.name, proc.name, "config", ref.line, proc.name)
 
     def _helm(self, proc: Process) -> None:
-        folder = os.path.dirname(self.m.path)
         if proc.block is None:
             return
+        settings = getattr(self.run, "settings", None)
+        folders = tuple(launch_folders(self.m.path, project_folder(settings, self.m.path)))
         for param in proc.block.get("behaviors"):
-            paths, ok = behavior_paths(param.value, folder)
-            self.behavior_lookups.append((param.value, folder, (paths, ok)))
+            paths, ok = behavior_paths(param.value, *folders)
+            self.behavior_lookups.append((param.value, folders, (paths, ok)))
             if not ok:
                 self.m.unresolved_behaviors.append(param.value.strip())
             for path in paths:
@@ -527,7 +532,7 @@ class _Kept:
     def holds(self, run: RunView, moos: MoosFile, cat: Catalogue) -> bool:
         if moos is not self.moos or cat.inputs is None or cat.inputs != self.catalogue:
             return False
-        if any(behavior_paths(v, folder) != found for v, folder, found in self.lookups):
+        if any(behavior_paths(v, *folders) != found for v, folders, found in self.lookups):
             return False
         pre = run.preprocessor
         return all(pre.expand(p) is exp for p, exp in self.expansions)

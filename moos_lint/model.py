@@ -62,6 +62,24 @@ class Param:
 
 
 @dataclass(slots=True)
+class TextField:
+    """A field of a block written in protobuf text format (``name: value`` or ``name { }``)."""
+
+    name: str
+    line: Line
+    start: int
+    end: int
+    value: str | None  # the scalar value as written; None for a nested message
+    children: list[TextField] | None  # the nested message's fields
+    extension: bool = False  # ``[package.name]``
+
+    @property
+    def name_span(self) -> Span:
+        width = len(self.name) + (2 if self.extension else 0)
+        return self.line.span(self.start, self.start + width)
+
+
+@dataclass(slots=True)
 class Block:
     """``ProcessConfig = NAME`` followed by ``{ ... }``."""
 
@@ -72,6 +90,11 @@ class Block:
     close: Line | None = None
     params: list[Param] = field(default_factory=list)
     brace_on_header: bool = False
+    #: the block is read with protobuf's text format (goby's MOOS apps): its
+    #: fields are in ``text_fields``, its syntax errors in ``text_errors``
+    text_format: bool = False
+    text_fields: list[TextField] = field(default_factory=list)
+    text_errors: list[tuple[Line, int, int, str]] = field(default_factory=list)
     _lname: str | None = field(default=None, init=False, repr=False, compare=False)
     #: what readers work out from the block once (it never changes after parsing)
     memo: dict = field(default_factory=dict, init=False, repr=False, compare=False)

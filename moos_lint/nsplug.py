@@ -75,6 +75,9 @@ class Line:
     lineno: int
     chain: tuple[IncludeSite, ...] = ()
     branches: tuple[tuple[int, int], ...] = ()
+    #: what the conditions around the line say about macros whose value is not known:
+    #: ``(name, version, "def" | "undef" | "eq" | "ne", value)`` (see :func:`branch_facts`)
+    facts: frozenset[tuple[str, int, str, str]] = frozenset()
 
     def span(self, start: int = 0, end: int | None = None) -> Span:
         """The span of ``text[start:end]``, mapped to the written line."""
@@ -95,7 +98,29 @@ class Line:
         if not self.branches or not other.branches:
             return False
         mine = dict(self.branches)
-        return any(g in mine and mine[g] != b for g, b in other.branches)
+        if any(g in mine and mine[g] != b for g, b in other.branches):
+            return True
+        return contradict(self.facts, other.facts)
+
+
+def contradict(a: frozenset, b: frozenset) -> bool:
+    """True when no macro values make both sets of facts hold (a macro cannot be
+    both defined and undefined, nor hold two values)."""
+    if not a or not b:
+        return False
+    index: dict[tuple[str, int], list[tuple[str, str]]] = {}
+    for name, version, kind, value in a:
+        index.setdefault((name, version), []).append((kind, value))
+    for name, version, kind, value in b:
+        for k2, v2 in index.get((name, version), ()):
+            pair = {kind, k2}
+            if pair == {"def", "undef"} or pair == {"eq", "undef"}:
+                return True
+            if kind == k2 == "eq" and value != v2:
+                return True
+            if pair == {"eq", "ne"} and value == v2:
+                return True
+    return False
 
 
 @dataclass(slots=True)
@@ -122,8 +147,23 @@ class Expansion:
     #: the condition of each ``#ifdef`` branch, by ``(group, branch)`` as in ``Line.branches``:
     #: ``"ifdef A v"``, ``"ifndef A"`` or ``"else"``
     conditions: dict[tuple[int, int], str] = field(default_factory=dict)
+    #: the facts each branch holds about macros of unknown value (see ``Line.facts``)
+    facts: dict[tuple[int, int], frozenset] = field(default_factory=dict, repr=False)
+    #: how many times each macro was ``#define``d so far: facts hold per version
+    define_counts: dict[str, int] = field(default_factory=dict, repr=False)
+    facts_memo: dict[tuple, frozenset] = field(default_factory=dict, repr=False, compare=False)
     #: the models parsed from this expansion, by parser name (see :func:`parsed`)
     models: dict[str, Any] = field(default_factory=dict, repr=False, compare=False)
+
+
+def _line_facts(exp: Expansion, branches: tuple[tuple[int, int], ...]) -> frozenset:
+    """The facts of every branch a line sits in (memoised per branch path)."""
+    memo = exp.facts_memo
+    found = memo.get(branches)
+    if found is None:
+        found = frozenset().union(*(exp.facts.get(b, frozenset()) for b in branches))
+        memo[branches] = found
+    return found
 
 
 def derived(exp: Expansion, key: str, compute: Callable[[], Any]) -> Any:
@@ -150,6 +190,8 @@ class _Frame:
     line: Line
     seen_else: bool = False
     any_unknown: bool = False  # some branch so far was unknown
+    #: the negations of the earlier branches' conditions (facts every later branch holds)
+    negated: frozenset = frozenset()
 
 
 @dataclass(slots=True)
@@ -361,14 +403,19 @@ class Preprocessor:
             if conj:
                 return "T" if value is not None else "F"
             return "T" if value not in (None, "") else "F"
-        if value is None:
+        # nsplug reads ``macros[name]`` from a copy of its map: an undefined name reads
+        # as "". A value test holds when the value equals the word, or the value of the
+        # macro the word names (so an empty value matches a word naming no macro); in an
+        # ``||`` list the name must also be defined.
+        if value is None and not conj:
             return "F"
+        value = "" if value is None else value
         if value == want:
             return "T"
         other = macros.get(want)
         if other is UNKNOWN:
             return "U"
-        return "T" if other is not None and other == value else "F"
+        return "T" if value == ("" if other is None else other) else "F"
 
     def eval_ifdef(self, rest: str, macros: dict) -> str:
         disj, conj = "||" in rest, "&&" in rest
@@ -402,7 +449,12 @@ class Preprocessor:
         if os.path.isabs(name):
             self.cache.probed.add(os.path.dirname(_norm(name)))
             return _norm(name) if os.path.exists(name) else None
-        for folder in (top_dir, *self.include_paths, including_dir):
+        scripts: tuple[str, ...] = ()
+        if self.mode == "lint":  # the --path folders the mission's launch scripts give nsplug
+            from moos_lint.launch import script_include_paths
+
+            scripts = script_include_paths(top_dir)
+        for folder in (top_dir, *self.include_paths, including_dir, *scripts):
             candidate = os.path.join(folder, name)
             self.cache.probed.add(os.path.dirname(_norm(candidate)))
             if os.path.exists(candidate):
@@ -480,7 +532,7 @@ class Preprocessor:
             if work.tag is not None:
                 # Inside a tagged section nsplug skips lines starting with '#'.
                 if work.in_tag and not raw.lstrip().startswith("#"):
-                    exp.lines.append(self._out_line(here, macros, frames, work.outer))
+                    exp.lines.append(self._out_line(exp, here, macros, frames, work.outer))
                     chars_left -= len(here.text)
                     if chars_left < 0 or len(here.text) > MAX_LINE_CHARS:
                         self._over_budget(exp, here, "macros that grow without bound")
@@ -496,6 +548,8 @@ class Preprocessor:
                             self._over_budget(exp, here, "macros that grow without bound")
                             return
                     here.branches = work.branches
+                    if work.branches:
+                        here.facts = _line_facts(exp, work.branches)
                     exp.lines.append(here)
                 continue
             squeezed = raw.replace("\t", " ").strip()
@@ -531,7 +585,7 @@ class Preprocessor:
                     active.add(str(csrc.path))
                 continue
             self._unknown_directive(exp, here)  # a line starting with '#', not a directive
-            exp.lines.append(self._out_line(here, macros, frames, work.outer, branches))
+            exp.lines.append(self._out_line(exp, here, macros, frames, work.outer, branches))
             chars_left -= len(here.text)
             if chars_left < 0 or len(here.text) > MAX_LINE_CHARS:
                 self._over_budget(exp, here, "macros that grow without bound")
@@ -569,6 +623,9 @@ class Preprocessor:
             frame.any_unknown = state == "U"
             frames.append(frame)
             exp.conditions[(frame.group, 0)] = f"{left[1:]} {rest}"
+            pos, neg = self._facts(left[1:], rest, macros, exp)
+            exp.facts[(frame.group, 0)] = pos
+            frame.negated = neg
             return
         if not frames:
             what = "`#endif` without an open `#ifdef` or `#ifndef`"
@@ -593,6 +650,9 @@ class Preprocessor:
             self._check_condition(exp, here, left, rest)
             top.branch += 1
             exp.conditions[(top.group, top.branch)] = f"ifdef {rest}"
+            pos, neg = self._facts("ifdef", rest, macros, exp)
+            exp.facts[(top.group, top.branch)] = pos | top.negated
+            top.negated = top.negated | neg
             if top.matched:
                 top.state = "F"
             else:
@@ -604,6 +664,7 @@ class Preprocessor:
         top.seen_else = True
         top.branch += 1
         exp.conditions[(top.group, top.branch)] = "else"
+        exp.facts[(top.group, top.branch)] = top.negated
         if top.matched:
             top.state = "F"
         elif top.any_unknown:
@@ -611,6 +672,57 @@ class Preprocessor:
         else:
             top.state = "T"
             top.matched = True
+
+    def _facts(
+        self, kind: str, rest: str, macros: dict, exp: Expansion
+    ) -> tuple[frozenset, frozenset]:
+        """What a condition says about macros of unknown value, and what its negation says.
+
+        Only conditions that pin each name down give facts: ``#ifdef A``, ``#ifdef A v``
+        and ``#ifndef A B``; an ``||`` or ``&&`` list gives none (the negation of an
+        ``||`` list of names excepted), nor does a value that is itself the name of a
+        known macro (nsplug compares with its value). A macro set to the empty string
+        passes every value test whose word names no macro; launch scripts give the
+        macros they test a value, so ``#ifdef VNAME abe`` and ``#ifdef VNAME ben``
+        count as exclusive.
+        """
+        rest = rest.strip()
+        if not rest or "//" in rest or ("||" in rest and "&&" in rest):
+            return frozenset(), frozenset()
+        counts = exp.define_counts
+
+        def unknown(name: str) -> bool:
+            return self._value_state(name, macros) is UNKNOWN
+
+        pos: set = set()
+        neg: set = set()
+        if kind == "ifndef":
+            names = rest.split()
+            if all(unknown(n) for n in names):
+                pos = {(n, counts.get(n, 0), "undef", "") for n in names}
+                if len(names) == 1:
+                    neg = {(names[0], counts.get(names[0], 0), "def", "")}
+            return frozenset(pos), frozenset(neg)
+        if "||" in rest:
+            terms = [t.strip() for t in rest.split("||")]
+            if all(" " not in t for t in terms) and all(unknown(t) for t in terms):
+                # not (A or B): every name is undefined or empty
+                neg = {(t, counts.get(t, 0), "undef", "") for t in terms}
+            return frozenset(), frozenset(neg)
+        if "&&" in rest:
+            # in an ``&&`` list an undefined name reads as "" and may pass a value test
+            return frozenset(), frozenset()
+        name, _, want = rest.partition(" ")
+        want = " ".join(want.split())
+        if not unknown(name) or (want and want in macros):
+            return frozenset(), frozenset()
+        version = counts.get(name, 0)
+        if want:
+            return frozenset({(name, version, "eq", want)}), frozenset(
+                {(name, version, "ne", want)}
+            )
+        return frozenset({(name, version, "def", "")}), frozenset({(name, version, "undef", "")})
+        return frozenset(pos), frozenset(neg)
 
     # ---------------------------------------------------------------- helpers
     @staticmethod
@@ -623,6 +735,7 @@ class Preprocessor:
 
     def _out_line(
         self,
+        exp: Expansion,
         here: Line,
         macros: dict,
         frames: list[_Frame],
@@ -631,6 +744,8 @@ class Preprocessor:
     ) -> Line:
         here.text = self.expand_macros(here.raw, macros)
         here.branches = self._branches(frames, outer) if branches is None else branches
+        if here.branches:
+            here.facts = _line_facts(exp, here.branches)
         return here
 
     @staticmethod
@@ -661,6 +776,7 @@ class Preprocessor:
         if not name:
             self._problem(exp, "malformed-directive", here, "`#define` needs a macro name")
             return
+        exp.define_counts[name] = exp.define_counts.get(name, 0) + 1
         macros[name] = UNKNOWN if uncertain else (value or DEFINED)
 
     def _include(

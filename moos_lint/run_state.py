@@ -7,7 +7,8 @@ typed accessor:
 - ``catalogue``: :func:`moos_lint.catalogue.catalogue_for`;
 - ``mission_models``, ``pokes``, ``app_publishers``, ``external_publishers``:
   :func:`moos_lint.mission_model.mission_model` and its helpers;
-- ``repo_cpp_stems``: :func:`moos_lint.rules._catalogue_bhv.repo_classes`.
+- ``repo_cpp_stems``: :func:`moos_lint.rules._catalogue_bhv.repo_classes`;
+- ``repo_globals``: :func:`moos_lint.rules.unknown_key._repo_globals`.
 
 Those modules see the run through :class:`RunView`, the part of it they read,
 so that none of them imports the engine.
@@ -43,6 +44,8 @@ class RunMemos:
     external_publishers: dict[str, list[tuple[str, Publisher]]] = field(default_factory=dict)
     #: lower-case names of the C++ files and classes of the project
     repo_cpp_stems: frozenset[str] | None = None
+    #: top-of-file keys the run's own C++ apps read with ``GetValue``
+    repo_globals: frozenset[str] | None = None
 
 
 class RunView(Protocol):

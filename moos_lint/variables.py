@@ -271,7 +271,10 @@ def pshare_output() -> Syntax:
     def read(piece: Piece) -> Iterator[tuple[Piece, str]]:
         text = piece[0]
         if "->" not in text:
-            yield from keyed_form(piece)
+            for name, role in keyed_form(piece):
+                if role == SUBSCRIBE and ":" in name[0]:  # var_pattern:app_pattern
+                    name = _trim((name[0].split(":", 1)[0], name[1]))
+                yield name, role
             return
         for share in _split(piece, ","):
             parts = _bite(share, "->")
@@ -387,8 +390,9 @@ _COND = condition()
 APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
     "plogger": {
         "log": (before("@", SUBSCRIBE), False),
-        "wildcardpattern": (plain(SUBSCRIBE), True),
-        "wildcardomitpattern": (plain(SUBSCRIBE), True),
+        # both are split with MOOSChomp(sVal, ",") (MOOSLogger.cpp:417-428)
+        "wildcardpattern": (comma_list(SUBSCRIBE), True),
+        "wildcardomitpattern": (comma_list(SUBSCRIBE), True),
     },
     "imatlab": {"subscribe": (before("@", SUBSCRIBE), False)},
     "utimerscript": {

@@ -41,8 +41,13 @@ def test_stock_catalogue_records_its_source_and_corrections():
     assert {"yaw_pid_kp", "maxrudder", "apptick", "comms_policy"} <= pid.params
     assert pid.forms["ignore_nav_yaw"][0] == "bool"
     assert "MarinePID.cpp" in pid.forms["ignore_nav_yaw"][1]
-    # core MOOS apps never reject a key: their lists are not used to judge
-    assert not cat.app("pLogger").strict
+    # pLogger's and pShare's key lists were read whole from their sources (Log/Output
+    # lines stay free); pMOOSBridge reads keys one by one and is not judged
+    assert cat.app("pLogger").strict and {"log", "asynclog"} <= cat.app("pLogger").params
+    assert cat.app("pShare").strict
+    assert not cat.app("pMOOSBridge").strict
+    # a library's keys are credited only through the classes the app reaches
+    assert "speed_factor" in pid.params and "hash_viewable" not in pid.params
     helm = cat.app("pHelmIvP")
     assert {"DESIRED_HEADING", "IVPHELM_STATE"} <= helm.publishes
     wpt = cat.behavior("bhv_waypoint")
@@ -423,3 +428,42 @@ def test_a_kept_sibling_follows_a_changed_user_catalogue(tmp_path, monkeypatch):
     assert waits() == []
     apps.write_text('[apps.pSurvey]\nparams = []\npublishes = ["SURVEY_OVER_NOW"]\n')
     assert waits() == ["SURVEY_DONE"]
+
+
+def test_graph_reads_the_project_apps_as_check_does(tmp_path, monkeypatch):
+    """One model: a repository app known to `check` is known to `graph` too."""
+    (tmp_path / ".git").mkdir()
+    app = tmp_path / "src" / "pNavFilter"
+    app.mkdir(parents=True)
+    (app / "NavFilter.h").write_text(
+        '#include "MOOS/libMOOS/MOOSLib.h"\n'
+        "class NavFilter : public CMOOSApp {\n public:\n  bool Iterate();\n"
+        "  bool OnNewMail(MOOSMSG_LIST &m);\n  bool OnStartUp();\n};\n"
+    )
+    (app / "NavFilter.cpp").write_text(
+        '#include "NavFilter.h"\n'
+        'bool NavFilter::Iterate() { Notify("NAV_FILTERED", 1.0); return true; }\n'
+        "bool NavFilter::OnNewMail(MOOSMSG_LIST &m) { return true; }\n"
+        'bool NavFilter::OnStartUp() { Register("NAV_X", 0); return true; }\n'
+    )
+    (app / "main.cpp").write_text(
+        '#include "NavFilter.h"\nint main(int argc, char* argv[]) {\n'
+        '  NavFilter app;\n  app.Run("pNavFilter", argv[1]);\n  return 0;\n}\n'
+    )
+    mission = tmp_path / "missions" / "alpha.moos"
+    mission.parent.mkdir()
+    mission.write_text(
+        "ServerHost = localhost\nServerPort = 9000\n\n"
+        "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n"
+        "  Run = pNavFilter @ NewConsole = false\n  Run = pEchoVar @ NewConsole = false\n}\n\n"
+        "ProcessConfig = pEchoVar\n{\n  echo = NAV_FILTERED -> NAV_OUT\n}\n"
+    )
+    monkeypatch.chdir(tmp_path)
+    g = build_graph(str(mission), Settings(root=str(tmp_path)))
+    assert not any("not in the catalogue" in n for n in g.notes)
+    flagged = {f["code"] for f in g.findings} | {
+        f["code"] for v in g.variables for f in v.get("findings", [])
+    }
+    assert "M005" not in flagged
+    names = {v["name"] for v in g.variables}
+    assert "NAV_FILTERED" in names

@@ -50,6 +50,8 @@ else:  # pragma: no cover
     import tomli as tomllib
 
 STOCK = os.path.join(os.path.dirname(__file__), "stock.json")
+#: goby's MOOS apps and their configuration messages (:mod:`moos_lint.catalogue.goby`)
+GOBY = os.path.join(os.path.dirname(__file__), "goby.json")
 
 
 @dataclass(frozen=True, slots=True)
@@ -123,6 +125,64 @@ class BehaviorInfo:
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
+@dataclass(frozen=True)
+class TextFormatApp:
+    """An app that reads its ProcessConfig block with protobuf's text format."""
+
+    name: str
+    message: str  # the full name of its configuration message
+    provenance: str
+
+
+@dataclass(frozen=True)
+class TextFormatSchema:
+    """Protobuf messages and enums: ``messages[name]`` maps each field to its type."""
+
+    messages: dict[str, dict[str, str]]
+    extensions: dict[str, dict[str, str]]
+    enums: dict[str, tuple[str, ...]]
+    sources: dict[str, str]
+    #: top-of-file keys the apps read into their configuration -> where it is declared
+    moos_globals: dict[str, str] = field(default_factory=dict)
+
+
+@lru_cache(maxsize=1)
+def _goby() -> tuple[dict[str, TextFormatApp], TextFormatSchema]:
+    try:
+        with open(GOBY, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except (OSError, ValueError):
+        return {}, TextFormatSchema({}, {}, {}, {})
+    commit = str(data.get("source", {}).get("commit", ""))[:8]
+    apps = {}
+    for name, d in data.get("apps", {}).items():
+        prov = f"goby {commit} {d.get('source', '')}".strip()
+        apps[name.lower()] = TextFormatApp(name, d["message"], prov)
+    msgs = data.get("messages", {})
+    schema = TextFormatSchema(
+        messages={k: dict(v.get("fields", {})) for k, v in msgs.items()},
+        extensions={k: dict(v.get("extensions", {})) for k, v in msgs.items()},
+        enums={k: tuple(v.get("values", ())) for k, v in data.get("enums", {}).items()},
+        sources={k: str(v.get("source", "")) for k, v in msgs.items()},
+        moos_globals={str(k): str(v) for k, v in data.get("moos_globals", {}).items()},
+    )
+    return apps, schema
+
+
+def text_format_app(name: str) -> TextFormatApp | None:
+    """The text-format app a block or binary name stands for (``iFrontSeat_bluefin`` too)."""
+    apps = _goby()[0]
+    low = name.lower().strip()
+    if low in apps:
+        return apps[low]
+    head = low.split("_", 1)[0]
+    return apps.get(head) if head != low else None
+
+
+def text_format_schema() -> TextFormatSchema:
+    return _goby()[1]
+
+
 class CatalogueError(Exception):
     """A user catalogue file that cannot be read."""
 
@@ -190,7 +250,8 @@ def _stock_app(name: str, d: dict[str, Any], bases: dict[str, Any], commit: str)
     info = AppInfo(
         name=name,
         params=params,
-        strict=bool(d.get("reports_unhandled")),
+        # the app reports any other key, or its key list is known to be complete
+        strict=bool(d.get("reports_unhandled") or d.get("keys_complete")),
         param_prefixes={p.lower() for p in d.get("param_prefixes", [])},
         publishes=set(d.get("publishes", [])),
         publish_prefixes=set(d.get("publish_prefixes", [])),

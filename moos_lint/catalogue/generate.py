@@ -126,9 +126,27 @@ CORRECTIONS: dict[str, dict] = {
         "(PMV_MOOSApp.cpp, lib_marineview, lib_geometry): checked by hand",
     },
     "pShare": {
-        "params": ["input", "output", "multicast_base_port", "multicast_address", "verbose"],
+        "params": [
+            "input",
+            "output",
+            "multicast_base_port",
+            "multicast_address",
+            "verbose",
+            "share",
+        ],
+        "keys_complete": True,
         "why": "read with GetRepeatedConfigurations and "
-        "GetParameterFromCommandLineOrConfigurationFile (Share.cpp:213-308)",
+        "GetParameterFromCommandLineOrConfigurationFile (Share.cpp:213-308); no other key "
+        "is read, so the list is complete (`Share` lines: earlier pShare versions of "
+        "themoos/essential-moos)",
+    },
+    "pLogger": {
+        "params": ["log", "wildcardpattern", "wildcardomitpattern"],
+        "keys_complete": True,
+        "why": "`Log` lines are read from the whole block with GetConfiguration and "
+        "`WildCardPattern`/`WildCardOmitPattern` with GetTokenValPair (MOOSLogger.cpp:340-428); "
+        "every other key is a GetConfigurationParam call (MOOSLogger.cpp:230-389), so the "
+        "list is complete",
     },
     "pNodeReporter": {
         "publishes": ["NODE_REPORT_LOCAL"],
@@ -729,6 +747,34 @@ _SETTER_CALL = re.compile(r"\w+\s*\(\s*[\w.>-]+\s*,\s*\w+\s*(?:,\s*\w+\s*)?\)")
 _NEXT_KEY = re.compile(r"(?:param|key|config)\w*\s*==\s*\"", re.IGNORECASE)
 
 
+#: ``isNumber(value) && (dval >= 0)`` written into the key's own condition or the first
+#: statement of its branch: any other value leaves the key unhandled
+_INLINE = re.compile(
+    r"^\W*(?:if\s*\(\s*)?isNumber\s*\(\s*\w+\s*\)\s*\)?"
+    r"(?:\s*&&\s*\(?\s*\w+\s*(>=|>)\s*0(?:\.0*)?\s*\)?)?"
+)
+
+
+def _inline_form(lines: list[str], n: int, rest: str) -> str | None:
+    """The value form a key's branch checks inline (``number``, ``nonneg``, ``positive``)."""
+    text = rest.split("//", 1)[0]
+    # the key's condition may go on with more alternatives (`(param == "a") ||`)
+    k = n
+    while text.rstrip().endswith("||") and k < len(lines) and k < n + 3:
+        nxt = lines[k].split("//", 1)[0]
+        text = nxt[nxt.rfind('"') + 1 :] if _NEXT_KEY.search(nxt) else nxt
+        k += 1
+    after = text.split(")", 1)[1] if text.lstrip().startswith(")") else text
+    candidates = [after.lstrip(") ").lstrip("&").strip()]
+    if after.strip() in ("", "{", ")", ") {", "){") and k < len(lines):
+        candidates.append(lines[k].strip())
+    for chunk in candidates:
+        m = _INLINE.match(chunk)
+        if m and "isNumber" in chunk[: m.end()]:
+            return {">=": "nonneg", ">": "positive"}.get(m.group(1) or "", "number")
+    return None
+
+
 def _forms(cf, src: str) -> dict[str, dict[str, str]]:
     """Keys whose value goes straight to an MBUtils setter that rejects other forms."""
     out: dict[str, dict[str, str]] = {}
@@ -754,6 +800,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
                 break
             if chunk.strip() not in ("", "{", ")", "){", ") {") and i:
                 break
+        if form is None:
+            form = _inline_form(lines, n, rest)
         if form is None:
             bad.add(key)
             continue
@@ -783,18 +831,47 @@ def _bhv_chain(cls: str, bases: dict[str, list[str]]) -> list[str]:
     return walk(cls, frozenset())
 
 
+_WORD = re.compile(r"\w+")
+
+
+def _stem(path: str) -> str:
+    """The class a MOOS-IvP source file is named after (``PIDEngine.cpp`` -> PIDEngine)."""
+    return os.path.splitext(os.path.basename(path))[0]
+
+
 def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict:
     text = "".join(_read(cf.path) for cf in m.files)
     params = set().union(*(_keys(cf) for cf in m.files)) if m.files else set()
     from_libs: dict[str, list[str]] = {}
+    lib_files = []  # (library folder, file) of every library the app links
     for lib in _linked_libs(m.folder):
         folder = lib_folder.get(lib)
         lm = by_folder.get(folder) if folder else None
         if folder is None or lm is None or lm is m:
             continue
-        got = set().union(*(_keys(cf) for cf in lm.files)) - params
-        if got:
-            from_libs[_rel(folder, src)] = sorted(p for p in got if _param_like(p))
+        lib_files.extend((folder, cf) for cf in lm.files)
+    # A library file's keys count when the app reaches the file's class: the app's code
+    # names it (MOOS-IvP keeps one class per file: `PIDEngine m_pengine;` hands lines to
+    # PIDEngine.cpp), or a library file the app reaches does (MarineViewer -> VPlug_*).
+    # Linking a library does not credit the app with every key the library compares.
+    reached: set[str] = set()
+    words = set(_WORD.findall(text))
+    grew = True
+    while grew:
+        grew = False
+        for _folder, cf in lib_files:
+            if cf.path not in reached and _stem(cf.path) in words:
+                reached.add(cf.path)
+                words |= set(_WORD.findall(_read(cf.path)))
+                grew = True
+    for folder, cf in lib_files:
+        if cf.path in reached:
+            got = _keys(cf) - params
+            if got:
+                key = _rel(folder, src)
+                from_libs[key] = sorted(
+                    set(from_libs.get(key, [])) | {p for p in got if _param_like(p)}
+                )
     forms: dict[str, dict[str, str]] = {}
     for cf in m.files:
         forms.update(_forms(cf, src))

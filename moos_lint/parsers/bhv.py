@@ -4,7 +4,11 @@
 - A leading ``{`` or ``}`` and a trailing ``{`` are split off as lines of their own
   (not on lines starting with ``//`` or ``#``).
 - ``//`` starts a comment anywhere; ``#`` is *not* a comment.
-- A line the state machine does not expect fails the whole behavior set.
+- A line the state machine does not expect fails the whole behavior set; a line
+  that is still an unexpanded nsplug macro (``$(OFFSETS)``, given by the launch
+  script) is not judged.
+- ``Behavior = KIND`` lines in exclusive ``#ifdef`` branches followed by one
+  shared ``{ ... }`` body (valid after nsplug) are alternatives sharing the body.
 """
 
 from __future__ import annotations
@@ -12,12 +16,28 @@ from __future__ import annotations
 import dataclasses
 import re
 
-from moos_lint.model import Behavior, BehaviorFile, BhvParam, Initialize, SetBlock
+from moos_lint.model import Behavior, BehaviorFile, BhvParam, Initialize, SetBlock, has_macro
 from moos_lint.nsplug import Expansion, Line
 
 _BEHAVIOR = re.compile(r"^behavior\s*=\s*(\S*)\s*$", re.IGNORECASE)
 _INIT = re.compile(r"^(initialize_?)( +)(.*)$", re.IGNORECASE)
 _SET = re.compile(r"^set\s+(\S+?)\s*=\s*(.*)$", re.IGNORECASE)
+
+
+_BHV_HEADER = re.compile(r"^\s*(?:behavior\s*=|set\s+\S+\s*=|initialize_?\s)", re.IGNORECASE)
+_PROCESS_CONFIG = re.compile(r"^\s*processconfig\s*=", re.IGNORECASE)
+
+
+def is_behavior_fragment(expansion: Expansion) -> bool:
+    """A ``.plug`` fragment written for a behavior file: ``Behavior =``, ``set MODE =``
+    or ``initialize`` lines, no ``ProcessConfig``. MOOS-IvP missions include such plugs
+    from their behavior templates (``#include plugs/bhv_hsline.plug``)."""
+    found = False
+    for line in expansion.lines:
+        if _PROCESS_CONFIG.match(line.text):
+            return False
+        found = found or bool(_BHV_HEADER.match(line.text))
+    return found
 
 
 def _pieces(line: Line) -> list[tuple[Line, str, int]]:
@@ -61,6 +81,7 @@ def _joined(lines: list[Line]) -> list[Line]:
                 carry.lineno,
                 carry.chain,
                 carry.branches,
+                carry.facts,
             )
         else:
             carry = line
@@ -81,6 +102,7 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
     state = "top"  # top | bhv-wait | bhv | set-wait | set | set-else | skip
     behavior: Behavior | None = None
     setblock: SetBlock | None = None
+    alternatives: list[Behavior] = []  # the behavior and its exclusive alternatives
     skip_depth = 0
     for line in _joined(expansion.lines):
         for src, piece, offset in _pieces(line):
@@ -110,12 +132,26 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                 if text == "{":
                     state = "bhv"
                     continue
+                m = _BEHAVIOR.match(text)
+                if (
+                    m
+                    and m.group(1)
+                    and behavior is not None
+                    and all(src.excludes(b.header) for b in alternatives)
+                ):
+                    # `Behavior =` chosen in exclusive #ifdef branches, the body shared
+                    alt = Behavior(m.group(1), src, src.text.find(m.group(1), offset))
+                    alt.params = behavior.params
+                    bf.behaviors.append(alt)
+                    alternatives.append(alt)
+                    continue
                 bf.invalid.append((src, "expected `{` to open the Behavior block"))
                 state = "top"
             if state == "bhv":
                 assert behavior is not None
                 if text == "}":
-                    behavior.closed = True
+                    for b in alternatives:
+                        b.closed = True
                     state = "top"
                     continue
                 if text == "{" or _BEHAVIOR.match(text):
@@ -125,6 +161,8 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                         continue
                 else:
                     param = _bhv_param(src, text, offset)
+                    if param is None and has_macro(text):
+                        continue  # the macro's value (given at launch) supplies the line
                     if param is None:
                         bf.invalid.append(
                             (src, "a Behavior block line needs the form `parameter = value`")
@@ -154,6 +192,7 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
             if m and m.group(1):
                 behavior = Behavior(m.group(1), src, src.text.find(m.group(1), offset))
                 bf.behaviors.append(behavior)
+                alternatives = [behavior]
                 state = "bhv-wait"
                 continue
             if m:
@@ -182,6 +221,8 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                     (src, "`#` is not a comment in a behavior file: the helm rejects this line")
                 )
                 continue
+            if has_macro(text):
+                continue  # a line an nsplug macro supplies at launch: not known here
             bf.invalid.append((src, "the helm does not understand this line"))
     if state in ("bhv", "bhv-wait") and behavior is not None:
         bf.unclosed.append(behavior.header)

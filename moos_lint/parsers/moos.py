@@ -5,12 +5,19 @@
 - Keys and ProcessConfig names compare without regard to case or spaces.
 - ``ProcessConfig = NAME`` must be followed by a line that starts with ``{``;
   the first line that starts with ``}`` ends the block.
+- A block that goby's MOOS apps read with protobuf's text format (the
+  catalogue's text-format apps, or a block whose lines are mostly
+  ``key: value`` / ``name {``) runs to the last ``}`` before the next
+  ``ProcessConfig`` line and is read by :mod:`moos_lint.protobuf_text`.
 """
 
 from __future__ import annotations
 
-from moos_lint.model import Block, MoosFile, Param, antler_runs, parse_run
+from dataclasses import replace
+
+from moos_lint.model import Block, MoosFile, Param, antler_runs, has_macro, parse_run
 from moos_lint.nsplug import Expansion, Line
+from moos_lint.protobuf_text import looks_like_text_format, read_block
 
 
 def strip_comment(text: str) -> str:
@@ -57,17 +64,63 @@ def _header_name(param: Param) -> tuple[str, bool] | None:
     return "".join(value.split()), brace
 
 
+def _text_format_end(lines: list[Line], start: int, name: str) -> int | None:
+    """The index of the line closing a protobuf-text block opened at ``lines[start]``.
+
+    goby's apps read up to the next line naming ``ProcessConfig`` and cut at the
+    last ``}`` before it. None when the block does not read as protobuf text.
+    """
+    from moos_lint.catalogue import text_format_app
+
+    stop = len(lines)
+    for i in range(start + 1, len(lines)):
+        if "processconfig" in lines[i].text.lower():
+            stop = i
+            break
+    close = None
+    for i in range(stop - 1, start, -1):
+        if "}" in strip_comment(lines[i].text).split("#", 1)[0]:
+            close = i
+            break
+    if close is None:
+        return None
+    body = lines[start + 1 : close]
+    known = text_format_app(name) is not None
+    return close if looks_like_text_format(body, known) else None
+
+
+def _read_text_block(block: Block, lines: list[Line], start: int, close: int) -> None:
+    block.text_format = True
+    block.open = lines[start]
+    block.close = lines[close]
+    body = list(lines[start + 1 : close])
+    last = lines[close]
+    cut = last.text.rfind("}")
+    if last.text[:cut].strip():  # fields before the final "}" on its line
+        body.append(replace(last, text=last.text[:cut], raw=last.raw))
+    block.text_fields, block.text_errors = read_block(body)
+
+
 def parse_moos(expansion: Expansion) -> MoosFile:
     """Build the model of one preprocessed ``.moos`` file."""
     mf = MoosFile(path=expansion.path, expansion=expansion, lines=expansion.lines)
     current: Block | None = None  # the open block
     pending: Block | None = None  # a header waiting for its "{"
-    for line in expansion.lines:
+    lines = expansion.lines
+    skip_to = -1
+    for index, line in enumerate(lines):
+        if index <= skip_to:
+            continue
         stripped = line.text.strip()
         if not stripped or stripped.startswith("//"):
             continue
         if pending is not None:
             if stripped.startswith("{"):
+                close = _text_format_end(lines, index, pending.name)
+                if close is not None:
+                    _read_text_block(pending, lines, index, close)
+                    pending, skip_to = None, close
+                    continue
                 pending.open = line
                 current, pending = pending, None
                 continue
@@ -88,7 +141,8 @@ def parse_moos(expansion: Expansion) -> MoosFile:
             continue
         param = split_param(line)
         if param is None:
-            if "[" not in stripped and "]" not in stripped:
+            # a line that is still an nsplug macro gets its text at launch: not judged
+            if "[" not in stripped and "]" not in stripped and not has_macro(stripped):
                 mf.malformed.append(line)
             continue
         header = _header_name(param)

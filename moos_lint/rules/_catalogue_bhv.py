@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from typing import TYPE_CHECKING
 
 from moos_lint.catalogue import BehaviorInfo, catalogue_for
@@ -32,15 +33,50 @@ def repo_classes(ctx: Context) -> frozenset[str]:
             for c in f.classes:
                 stems.add(c.name.lower())
     root = _root(ctx)
-    for count, (_dirpath, dirs, files) in enumerate(os.walk(root)):
+    for count, (dirpath, dirs, files) in enumerate(os.walk(root)):
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
             if is_cpp(name):
                 stems.add(os.path.splitext(name)[0].lower())
+            if name == "CMakeLists.txt":
+                # the helm loads a behavior by its library's name (libBHV_X.so)
+                stems.update(_library_behaviors(os.path.join(dirpath, name)))
+            if name.endswith((".h", ".hpp")) and not name.lower().startswith("bhv_"):
+                # a behavior class in a file named otherwise (TrailiSBL_PingFormation.h
+                # declares BHV_TrailiSBL_PingFormation): read the declarations
+                stems.update(_declared_behaviors(os.path.join(dirpath, name)))
         if count > 20000:  # a huge tree: stop looking
             break
     run.memos.repo_cpp_stems = found = frozenset(stems)
     return found
+
+
+_CLASS = re.compile(rb"\bclass\s+(BHV_\w+)\s*(?::|\{)")
+
+
+def _declared_behaviors(path: str) -> set[str]:
+    """Lower-case names of the ``BHV_*`` classes a header declares."""
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(256 * 1024)
+    except OSError:
+        return set()
+    if b"BHV_" not in data:
+        return set()
+    return {m.group(1).decode("ascii", "replace").lower() for m in _CLASS.finditer(data)}
+
+
+_LIBRARY = re.compile(rb"add_library\s*\(\s*(BHV_\w+)", re.IGNORECASE)
+
+
+def _library_behaviors(path: str) -> set[str]:
+    """Lower-case ``BHV_*`` library targets a CMakeLists.txt builds."""
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(256 * 1024)
+    except OSError:
+        return set()
+    return {m.group(1).decode("ascii", "replace").lower() for m in _LIBRARY.finditer(data)}
 
 
 def _root(ctx: Context) -> str:

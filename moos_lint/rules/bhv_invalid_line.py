@@ -7,6 +7,9 @@ a brace or a comment; a Behavior-block line without `=`; an `initialize`
 followed by a tab or with a malformed `VAR=VALUE` pair; a `#` line (not a
 comment in a behavior file).
 
+A run of consecutive lines rejected for the same reason (a `/* ... */` block,
+a pasted paragraph) is one finding, on its first line.
+
 ## Why is this bad?
 The helm reports `Problem with line N in the BehaviorSet file` and the *whole*
 behavior set fails to load: the vehicle has no behaviors at all.
@@ -42,7 +45,21 @@ from moos_lint.diagnostics import Severity
 )
 def check(ctx):
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
+    runs: list[list] = []  # consecutive lines rejected for one reason: one finding
     for line, reason in ctx.bhv.invalid:
         if (line.path, line.lineno) in flagged:
             continue  # an nsplug problem on this line is reported already
-        yield ctx.at_line(line, f"{reason}: the helm fails to load the whole behavior file")
+        last = runs[-1][-1] if runs else None
+        if (
+            last
+            and last[1] == reason
+            and last[0].path == line.path
+            and (line.lineno - last[0].lineno == 1)
+        ):
+            runs[-1].append((line, reason))
+        else:
+            runs.append([(line, reason)])
+    for run in runs:
+        line, reason = run[0]
+        more = f" (and the {len(run) - 1} lines after it)" if len(run) > 1 else ""
+        yield ctx.at_line(line, f"{reason}{more}: the helm fails to load the whole behavior file")

@@ -88,6 +88,7 @@ def check(ctx):
     # it), in order, not with every earlier name.
     extending: dict[str, list[int]] = {}
     exact: dict[str, list[int]] = {}
+    first_of: dict[int, int] = {}  # a name's first place among the alternatives of one body
     for i, p in enumerate(named):
         value = p.value
         candidates = list(extending.get(value, ()))
@@ -96,7 +97,12 @@ def check(ctx):
         for end in range(1, len(value) + 1):
             extending.setdefault(value[:end], []).append(i)
         exact.setdefault(value, []).append(i)
+        # alternatives that share one body (`Behavior =` chosen by #ifdef) are one behavior:
+        # the body is compared only with the names before its first alternative
+        first = first_of.setdefault(id(p), i)
         for j in sorted(candidates):
+            if j >= first:
+                break
             q = named[j]
             if exclusive(p.line, q.line, ctx.expansion):
                 continue

@@ -6,7 +6,9 @@ folders nsplug searches, or that cannot be read.
 
 moos-lint searches where nsplug does: the folder nsplug runs in (taken to be
 the top-level file's folder), then each `--include-path` folder (nsplug's
-`--path`), then the including file's folder.
+`--path`), then the including file's folder, then the folders that the
+launch scripts beside the top-level file (`*.sh`, read as text, never run)
+hand nsplug with `--path=DIR` or `-p DIR`.
 
 ## Why is this bad?
 nsplug stops with an error and writes no mission file, so the launch script

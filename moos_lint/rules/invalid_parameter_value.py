@@ -4,6 +4,10 @@
 Checks the values of parameters whose form the app's own parser enforces,
 as recorded in the catalogue with the source line that enforces it:
 
+- in a block an app reads as protobuf text (goby's pAcommsHandler,
+  iFrontSeat, ...), a field of an enum type must hold one of the enum's
+  values (`driver_type: DRIVER_UPD`), as goby's `.proto` files declare them;
+
 - a boolean read with MOOS-IvP's `setBooleanOnString` accepts only `true`,
   `false`, `on`, `off`, `yes`, `no` and `toggle` (any case): `verbose = 1`
   is rejected;
@@ -87,13 +91,14 @@ MOOS-IvP caveats, deliberately not reported:
 
 import re
 
+from moos_lint.catalogue import text_format_schema
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity
 from moos_lint.geometry_forms import INVALID, is_geometry_form, judge
 from moos_lint.mbutil import is_number
 from moos_lint.model import has_macro
 from moos_lint.rules._catalogue_bhv import lookup
-from moos_lint.rules.unknown_parameter import block_apps
+from moos_lint.rules.unknown_parameter import block_apps, text_blocks
 
 BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
 _MOOS_DOUBLE = re.compile(r"^[0-9-]")
@@ -178,6 +183,7 @@ def check(ctx):
                     continue
                 value = "".join(p.value.split())  # MOOS drops every blank of a config line
                 yield from _judge(ctx, p, value, got, app.name)
+        yield from _text_enums(ctx)
     if ctx.bhv is not None:
         for bhv in ctx.bhv.behaviors:
             info, _known = lookup(ctx, bhv.kind.strip())
@@ -187,6 +193,41 @@ def check(ctx):
                 got = info.forms.get(p.lkey)
                 if got is not None:
                     yield from _judge(ctx, p, p.value.strip(), got, info.name)
+
+
+def _text_enums(ctx):
+    """Enum fields of protobuf-text blocks (goby's apps) whose value the enum lacks."""
+
+    schema = text_format_schema()
+    for _block, app in text_blocks(ctx):
+        todo = [(_block.text_fields, app.message)]
+        while todo:
+            fields, message = todo.pop()
+            known = schema.messages.get(message, {})
+            for f in fields:
+                kind = None if f.extension else known.get(f.name)
+                if kind is None:
+                    continue
+                if f.children is not None:
+                    if kind in schema.messages:
+                        todo.append((f.children, kind))
+                    continue
+                values = schema.enums.get(kind)
+                value = f.value or ""
+                if not values or not value or has_macro(value) or value in values:
+                    continue
+                if not value.replace("_", "").isalnum() or value[0].isdigit():
+                    continue  # a number: protobuf also reads an enum by its number
+                shown = ", ".join(f"`{v}`" for v in values[:8]) + (
+                    ", ..." if len(values) > 8 else ""
+                )
+                yield ctx.report(
+                    f.line.span(f.end - len(value), f.end),
+                    f"`{f.name}: {value}` is not a value of `{kind}` ({shown}): {app.name} stops "
+                    f"at start-up with a configuration error ({app.provenance}; "
+                    f"{schema.sources.get(message, '')})",
+                    line=f.line,
+                )
 
 
 def _judge(ctx, p, value, got, owner):

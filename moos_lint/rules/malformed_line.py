@@ -17,8 +17,15 @@ ProcessConfig = pLogger
 }
 ```
 
+Inside a block that an app reads with protobuf's text format (goby's MOOS
+apps such as pAcommsHandler and iFrontSeat, or a block whose lines are mostly
+`key: value`), the line must read as protobuf text instead: `name: value`,
+`name { ... }` with balanced braces, `#` comments. The app stops at start-up
+on such a line ("fatal configuration errors").
+
 ## How to fix
-Add the `=`, or turn the line into a `//` comment.
+Add the `=`, or turn the line into a `//` comment. In a protobuf-text block,
+write `name: value` or `name { ... }`.
 
 ## Options
 None.
@@ -35,3 +42,10 @@ def check(ctx):
         if text.startswith("#") or (text.startswith("/") and not text.startswith("//")):
             continue  # reported by not-a-comment / the nsplug rules
         yield ctx.at_line(line, "MOOS cannot read this line: it has no `key = value` form")
+    for block in ctx.moos.blocks:
+        for line, start, end, why in block.text_errors:
+            yield ctx.report(
+                line.span(start, end),
+                f"{block.name} reads this block as protobuf text: {why}",
+                line=line,
+            )

@@ -30,6 +30,11 @@ Correct the file name, or add the file next to the mission.
   to check, as `PROGRAM:parameter`. The program is the one the Run line starts
   (an alias such as `pHelmIvP ~ pHelmIvP_Standby` is followed to its block).
 
+A relative name is looked up from every folder the mission may be launched
+from: the mission's own folder and its parents up to the project root
+(launch scripts run `pAntler targs/targ_abe.moos` from the mission folder,
+and the helm then opens `targs/targ_abe.bhv` from there).
+
 MOOS-IvP caveats, deliberately not reported:
 - a name holding an unexpanded `$(X)` macro (`targ_$(VNAME).bhv`: the launch
   script sets VNAME), or a `~` or `${X}`;
@@ -46,6 +51,7 @@ import os
 
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
+from moos_lint.launch import find_relative, launch_folders, project_folder
 from moos_lint.model import has_macro
 from moos_lint.rules._hygiene import app_of, exclusive, names_match
 
@@ -80,7 +86,7 @@ def _generated(folder: str, name: str) -> bool:
 )
 def check(ctx):
     wanted = _params(ctx.options.get("file-params", FILE_PARAMS))
-    folder = os.path.dirname(ctx.unit.path)
+    folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
     seen: set[int] = set()
     for run in ctx.moos.runs:
         keys = wanted.get(app_of(run.binary).lower())
@@ -100,12 +106,15 @@ def check(ctx):
                     name = name[1:-1]
                 if not name or has_macro(name) or "~" in name or "${" in name:
                     continue
-                path = name if os.path.isabs(name) else os.path.join(folder, name)
-                if os.path.exists(path) or _generated(folder, name):
+                if find_relative(name, folders) or any(_generated(f, name) for f in folders):
                     continue
+                where = "next to the mission"
+                if len(folders) > 1:
+                    where += (
+                        f" nor in the {len(folders) - 1} folder(s) above it up to the project root"
+                    )
                 yield ctx.report(
                     p.value_span,
-                    f"`{p.key} = {name}`: no such file next to the mission "
-                    f"({os.path.basename(ctx.unit.path)})",
+                    f"`{p.key} = {name}`: no such file {where} ({os.path.basename(ctx.unit.path)})",
                     line=p.line,
                 )

@@ -35,16 +35,29 @@ None.
 MOOS-IvP caveats, deliberately not reported:
 - a kind holding an nsplug macro;
 - a kind with a C++ file of the same name in the project (its own behavior,
-  loaded through `ivp_behavior_dir`).
+  loaded through `ivp_behavior_dir`), a `BHV_*` class declared in one of the
+  project's headers, or a `BHV_*` library a CMakeLists.txt of the project
+  builds (the helm loads `libBHV_X.so` by the kind's name);
+- a kind that is not a name (`Behavior = ??` in a template).
 """
 
 import difflib
+import os
+import re
 
 from moos_lint.catalogue import catalogue_for
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
-from moos_lint.rules._catalogue_bhv import lookup
+from moos_lint.rules._catalogue_bhv import _root, lookup
+
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def _shown(folder: str) -> str:
+    """The searched folder, relative to the working folder when it lies under it."""
+    rel = os.path.relpath(folder)
+    return "the working folder" if rel == "." else f"`{folder if rel.startswith('..') else rel}`"
 
 
 @rule(
@@ -59,15 +72,15 @@ def check(ctx):
     cat = catalogue_for(ctx.run)
     for bhv in ctx.bhv.behaviors:
         kind = bhv.kind.strip()
-        if not kind or has_macro(kind):
-            continue
+        if not kind or has_macro(kind) or not _IDENT.fullmatch(kind):
+            continue  # `Behavior = ??` in a template is a placeholder, not a kind
         _info, known = lookup(ctx, kind)
         if known:
             continue
         names = {b.name.lower(): b.name for b in cat.behaviors.values()}
         close = [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
-        msg += "no C++ file of that name in the project)"
+        msg += f"no C++ file, class or library of that name under {_shown(_root(ctx))})"
         fix = None
         if close:
             msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"

@@ -16,7 +16,9 @@ Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
 Known ANTLER keys: `Run`, `MSBetweenLaunches`, `ExecutablePath`,
 `GentleKill`, `EnableDistributed`, `KillOnDBDisconnect`, and the named lists
 that a Run line refers to with `ExtraProcessParams=NAME`, `XConfig=NAME` or
-`Win32Config=NAME`. The app-level keys every MOOS app reads from its own
+`Win32Config=NAME`, and numbered console configurations (`4 = -geometry,...`,
+which old missions keep for `XConfig=4` lines, some of them commented out).
+The app-level keys every MOOS app reads from its own
 block (`AppTick`, `CommsTick`, `MaxAppTick`, `IterateMode`, `SortMailByTime`,
 `CatchCommandMessages`, the `moos_*` flags, and AppCasting's `COMMS_POLICY`,
 `APP_LOGGING`, `TERM_REPORT_INTERVAL`, `MAX_APPCAST_EVENTS`,
@@ -61,13 +63,23 @@ MOOS-IvP caveats, deliberately not reported:
 - a key starting with `#` or a single `/` while the not-a-comment rule (R007)
   is enabled: that rule reports the line already (`#Run = pX`).
 
+A top-of-file key that an app of the linted repository reads with
+`m_MissionReader.GetValue("KEY", value)` is known.
+
+In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
+top-of-file keys those apps read into their configuration (`log`, `log_path`,
+`modem_id`, `modem_id_lookup_path`, ...; the `moos_global` fields of goby's
+`.proto` files) are known too.
+
 Old MOOS missions set `Simulator = true`: no MOOS or MOOS-IvP program reads it
 today (CMOOSApp's simulate mode is never set from the file), so it is reported.
 """
 
 import difflib
+import re
 from collections.abc import Sequence
 
+from moos_lint.catalogue import text_format_app, text_format_schema
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
 from moos_lint.model import has_macro
@@ -132,6 +144,28 @@ APP_KEYS = [
 _LIST_OPTIONS = ("extraprocessparams", "xconfig", "win32config")
 
 
+_GET_VALUE = re.compile(rb"\bGetValue\s*\(\s*\"([A-Za-z0-9_]+)\"")
+
+
+def _repo_globals(run) -> frozenset[str]:
+    """Top-of-file keys the run's own C++ apps read (``m_MissionReader.GetValue("KEY", s)``)."""
+    found = run.memos.repo_globals
+    if found is not None:
+        return found
+    keys: set[str] = set()
+    for unit in run.units:
+        app = getattr(unit, "cpp", None)
+        for f in getattr(app, "files", None) or []:
+            try:
+                with open(f.path, "rb") as fh:
+                    data = fh.read(512 * 1024)
+            except OSError:
+                continue
+            keys.update(m.group(1).decode("ascii") for m in _GET_VALUE.finditer(data))
+    run.memos.repo_globals = found = frozenset(keys)
+    return found
+
+
 def _skip_key(key: str) -> bool:
     return not key or has_macro(key) or "define:" in key or "[" in key or "]" in key
 
@@ -152,6 +186,12 @@ def check(ctx):
     moos = ctx.moos
     r007 = any(r.code == "R007" for r in ctx.run.rules)
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
+    globals_known += sorted(_repo_globals(ctx.run))
+    if any(b.text_format for b in moos.blocks) or any(
+        text_format_app(r.binary.replace("\\", "/").rsplit("/", 1)[-1]) for r in moos.runs
+    ):
+        # goby's apps also read some top-of-file keys (`log_path`, `modem_id`)
+        globals_known += list(text_format_schema().moos_globals)
     fragment = ctx.unit.path in ctx.run.included_elsewhere
     if not fragment and (moos.is_mission or moos.blocks):
         for p in moos.globals:
@@ -163,6 +203,8 @@ def check(ctx):
                 if run.options.get(opt):
                     known.append(run.options[opt])
         for p in block.params:
+            if _norm(p.key).isdigit():
+                continue  # a numbered console configuration (`4 = -geometry,...`, XConfig=4)
             yield from _judge(ctx, p, known, "ANTLER-block", r007)
 
 
@@ -180,6 +222,17 @@ def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequenc
             p.key_span,
             f"`{key}` at the top of the file is ignored: every app reads "
             f"`{in_block[lkey]}` from its own ProcessConfig block",
+            line=p.line,
+        )
+        return
+    first = key.split()[0] if key.split() else ""
+    if first != key.strip() and first.lower() in by_lower:
+        # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing
+        yield ctx.report(
+            p.key_span,
+            f"`{key.strip()}`: the `=` after `{first}` is missing, so MOOS reads the key "
+            f"`{key.strip()}` and ignores the line (write `{first} = {key.split(None, 1)[1]}"
+            f" = {p.value}`)",
             line=p.line,
         )
         return

@@ -39,12 +39,23 @@ or describe it in a catalogue file.
 ## Options
 None.
 
+Blocks an app reads with protobuf's text format (goby's MOOS apps:
+pAcommsHandler, iFrontSeat, pTranslator) are checked against the app's
+configuration message, nested messages included (`common { verbosity: ... }`),
+as generated from goby's `.proto` files (`moos_lint/catalogue/goby.json`).
+Extension fields (`[micromodem.protobuf.Config.reset_nvram]`) the catalogue
+does not know are not judged.
+
 MOOS-IvP caveats, deliberately not reported:
 - apps the catalogue does not know, and apps whose parser does not reject
-  other keys (the core MOOS apps pLogger, pShare, pMOOSBridge, pScheduler:
-  they read keys one by one and never see the others), so that a key list
-  that may be incomplete never produces a finding;
+  other keys (pMOOSBridge, pScheduler: they read keys one by one and never
+  see the others), so that a key list that may be incomplete never produces
+  a finding. pShare and pLogger are checked: their whole key lists were read
+  from their sources (`Output =` and `Log =` lines are theirs, whatever the
+  value);
 - the ANTLER block (unknown-key, R-series, checks it);
+- a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
+  those from anywhere in the file with `GetValue`;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
   or `/` (not-a-comment reports those);
 - parameters handed to a library the app links: the catalogue counts every
@@ -61,10 +72,16 @@ MOOS-IvP caveats, deliberately not reported:
 import difflib
 import functools
 
-from moos_lint.catalogue import catalogue_for
+from moos_lint.catalogue import catalogue_for, text_format_app, text_format_schema
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Edit, Fix, Severity
-from moos_lint.model import has_macro
+from moos_lint.model import GLOBAL_KEYS, has_macro
+from moos_lint.rules.unknown_key import GLOBALS
+
+#: keys apps read with CMOOSFileReader::GetValue, which scans the whole file, blocks
+#: included: `term_reporting = false` inside a block is read by every AppCasting app
+#: (AppCastingMOOSApp.cpp:349). global-key-in-block (R009) judges such lines.
+_FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
 
 
 def block_apps(ctx):
@@ -80,6 +97,41 @@ def block_apps(ctx):
         app = cat.app(aliases.get(block.lname, block.name).strip())
         if app is not None:
             yield block, app
+
+
+def text_blocks(ctx):
+    """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
+    aliases = {}
+    for run in ctx.moos.runs:
+        if run.name and not has_macro(run.name):
+            aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    for block in ctx.moos.blocks:
+        if not block.text_format or has_macro(block.name):
+            continue
+        app = text_format_app(aliases.get(block.lname, block.name).strip())
+        if app is not None:
+            yield block, app
+
+
+def _text_unknown(fields, message: str, schema, app):
+    """(field, message, suggestions) for each field its message does not declare."""
+    known = schema.messages.get(message)
+    if known is None:
+        return
+    for f in fields:
+        if f.extension:
+            exts = schema.extensions.get(message, {})
+            name = f.name.lstrip(".")
+            kind = next((t for e, t in exts.items() if e == name or name.endswith("." + e)), None)
+            if kind is None:
+                kind = next((t for e, t in exts.items() if e.endswith("." + name)), None)
+        else:
+            kind = known.get(f.name)
+            if kind is None:
+                yield f, message, suggestions(f.name.lower(), known)
+                continue
+        if kind is not None and f.children is not None and kind in schema.messages:
+            yield from _text_unknown(f.children, kind, schema, app)
 
 
 def suggestions(key: str, known) -> list[str]:
@@ -106,7 +158,7 @@ def check(ctx):
             continue
         for p in block.params:
             key = p.lkey
-            if not key or app.reads(key) or has_macro(p.key):
+            if not key or app.reads(key) or has_macro(p.key) or key in _FILE_WIDE:
                 continue
             if key.startswith(("#", "/", "[")) or "[" in key or "]" in key:
                 continue
@@ -118,3 +170,17 @@ def check(ctx):
             if len(close) == 1:
                 fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
             yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
+    schema = text_format_schema()
+    for block, tapp in text_blocks(ctx):
+        for f, message, close in _text_unknown(block.text_fields, tapp.message, schema, tapp):
+            msg = f"`{f.name}`: {tapp.name} reads this block as protobuf text, and `{message}`"
+            msg += " has no such field"
+            fix = None
+            if close:
+                msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
+            if len(close) == 1:
+                fix = Fix(f"respell as `{close[0]}`", (Edit(f.name_span, close[0]),))
+            src = schema.sources.get(message, "")
+            yield ctx.report(
+                f.name_span, msg + f" ({tapp.provenance}; {src})", line=f.line, fix=fix
+            )

@@ -61,7 +61,12 @@ from moos_lint.variables import bare_name
 
 
 def _gaps(model) -> list[str]:
-    out = [f"`{p.name}` ({p.binary}) is not in the catalogue" for p in model.unknown_apps]
+    out = [
+        f"`{p.name}`"
+        + (f" ({p.binary})" if p.binary != p.name else "")
+        + " is not in the catalogue"
+        for p in model.unknown_apps
+    ]
     out += [f"behavior file `{b}` was not found" for b in model.unresolved_behaviors]
     return out
 
