@@ -26,6 +26,7 @@ import re
 import subprocess
 import sys
 from collections.abc import Iterable
+from typing import Any
 
 from moos_lint.catalogue import DELEGATE, OPTIONAL_BLOCK, READS_ORIGIN
 from moos_lint.cpp.app import build_apps
@@ -843,7 +844,7 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
     text = "".join(_read(cf.path) for cf in m.files)
     params = set().union(*(_keys(cf) for cf in m.files)) if m.files else set()
     from_libs: dict[str, list[str]] = {}
-    lib_files = []  # (library folder, file) of every library the app links
+    lib_files: list[tuple[str, Any]] = []  # (library folder, file) of every library the app links
     for lib in _linked_libs(m.folder):
         folder = lib_folder.get(lib)
         lm = by_folder.get(folder) if folder else None

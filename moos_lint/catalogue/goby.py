@@ -237,11 +237,11 @@ def _git_commit(src: str) -> str:
 
 def generate(src: str, commit: str = "", repository: str = "") -> dict:
     files: list[_ProtoFile] = []
-    for root, dirs, names in os.walk(src):
+    for top, dirs, names in os.walk(src):
         dirs[:] = sorted(d for d in dirs if not d.startswith("."))
         for n in sorted(names):
             if n.endswith(".proto"):
-                path = os.path.join(root, n)
+                path = os.path.join(top, n)
                 with open(path, encoding="utf-8", errors="replace") as fh:
                     files.append(_ProtoFile(os.path.relpath(path, src), fh.read()))
     messages: dict[str, dict] = {}

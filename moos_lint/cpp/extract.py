@@ -319,9 +319,9 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                     continue
             val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
             if val is None and a.fn is not None:
-                key = _config_branch_key(pf, a)
-                if key is not None:  # the configuration may change it: the default stands
-                    t.config_keys.setdefault(a.target, key)
+                ckey = _config_branch_key(pf, a)
+                if ckey is not None:  # the configuration may change it: the default stands
+                    t.config_keys.setdefault(a.target, ckey)
                     continue
             t.assigns.setdefault(a.target, []).append(val)
         for name, entries in _name_tables(pf):
@@ -333,10 +333,10 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
         for _call, fn, args in pf.calls:
             argv = args.named_children
             if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
-                key = string_value(strip_parens(argv[-2]))
+                ckey = string_value(strip_parens(argv[-2]))
                 member = target_name(argv[-1])
-                if key is not None and member:
-                    t.config_keys.setdefault(member, key.lower())
+                if ckey is not None and member:
+                    t.config_keys.setdefault(member, ckey.lower())
     return t
 
 

@@ -474,7 +474,7 @@ class Folder:
                 name = _function_short_name(fn)
                 if name:
                     self.functions.setdefault(name, []).append((pf, fn))
-        self.memo: dict[tuple, AbstractValue] = {}
+        self.memo: dict[tuple, Any] = {}  # AbstractValue, or None where a flow is unknown
         self._calls: dict[str, list[tuple[Any, Any]]] | None = None
         self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None
         #: function id -> variable -> the calls passing it (:func:`_calls_passing`)
@@ -590,9 +590,9 @@ class Evaluator:
                 h = comment_hint(line)
                 if h.known:
                     return replace(h, range=v.range, sign=v.sign or h.sign)
-            h = self._printed(pf, strip(node))
-            if h is not None:
-                return replace(h, range=v.range, sign=v.sign)
+            printed = self._printed(pf, strip(node))
+            if printed is not None:
+                return replace(printed, range=v.range, sign=v.sign)
         return v
 
     def _printed(self, pf: Any, n: Any) -> AbstractValue | None:

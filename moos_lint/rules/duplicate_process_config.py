@@ -28,6 +28,8 @@ Merge the two blocks into one.
 None.
 """
 
+from typing import Any
+
 from moos_lint.declare import Scope, rule
 from moos_lint.diagnostics import Severity
 
@@ -38,7 +40,7 @@ def check(ctx):
     # a block's first compatible predecessor is among them. Blocks outside any branch
     # are compatible with all, so none after the first such block is kept, and a file
     # of many duplicate blocks is checked in linear time.
-    firsts: dict[str, dict[tuple, object]] = {}
+    firsts: dict[str, dict[tuple, Any]] = {}
     closed: set[str] = set()  # names with a block outside any branch
     for block in ctx.moos.blocks:
         header = block.header

@@ -63,6 +63,7 @@ from __future__ import annotations
 
 import fnmatch
 import re
+from typing import Any
 
 from moos_lint.declare import Kind, Scope, rule
 from moos_lint.diagnostics import Severity, Subject
@@ -106,16 +107,17 @@ def check(ctx):
         program = programs.get(block.lname, block.name)
         if not (_INTERFACE.match(block.name) or _INTERFACE.match(program)):
             continue
-        found = []
+        found: list[tuple[str, Any, Any, str]] = []
         app = app_of(block.name, programs)
         if app is not None:
             found = [
-                (r.name, r.span, r.line) for r in block_variables(block, app) if r.role == PUBLISH
+                (r.name, r.span, r.line, "")
+                for r in block_variables(block, app)
+                if r.role == PUBLISH
             ]
         for p in block.params:
             if any(fnmatch.fnmatchcase(p.lkey, k) for k in keys) and _WORD.fullmatch(p.value):
-                found.append((p.value, p.value_span, p.line))
-        found = [(n, s, ln, "") for n, s, ln in found]
+                found.append((p.value, p.value_span, p.line, ""))
         listed = {(s.line, n) for n, s, _l, _w in found}
         for c in configured.get(block.name, ()):
             # as in C++: a name that is a bare category (no sensor prefix)

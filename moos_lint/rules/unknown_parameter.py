@@ -101,7 +101,7 @@ def block_apps(ctx):
 
 def text_blocks(ctx):
     """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
-    aliases = {}
+    aliases: dict[str, str] = {}
     for run in ctx.moos.runs:
         if run.name and not has_macro(run.name):
             aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
