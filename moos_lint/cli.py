@@ -189,10 +189,13 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         check.add_argument(
             "--no-cache",
             action="store_true",
-            help="neither read nor write the result cache (.moos_lint_cache/ or `cache-dir`)",
+            help="neither read nor write the result cache (kept in the user's cache folder)",
         )
         check.add_argument(
-            "--cache-dir", type=Path, metavar="DIR", help="keep the result cache in DIR"
+            "--cache-dir",
+            type=Path,
+            metavar="DIR",
+            help="keep the result cache in DIR (default: ~/.cache/moos-lint, see the README)",
         )
         check.add_argument(
             "--respect-gitignore",
@@ -350,6 +353,9 @@ def _settings(args: argparse.Namespace):
 def cmd_check(args: argparse.Namespace) -> int:
     from moos_lint.config import ConfigError
 
+    for p in args.paths:  # a typo lints nothing: an error even with --exit-zero
+        if not os.path.lexists(p):
+            return _usage_error(f"{p}: no such file or directory")
     try:
         settings = _settings(args)
     except ConfigError as exc:
@@ -375,10 +381,11 @@ def _check(args: argparse.Namespace, settings) -> int:
     from moos_lint.context import project_root
     from moos_lint.output import render
 
+    paths = list(args.paths) or [Path(".")]
     # A baseline outside any project (no config, no VCS) is relative to its own folder.
     baseline_file = args.write_baseline or args.baseline
     fallback = os.path.dirname(os.path.abspath(baseline_file)) if baseline_file else None
-    root = project_root(settings, args.paths, fallback)
+    root = project_root(settings, paths, fallback)
     base = None
     if args.baseline:
         from moos_lint import baseline as bl
@@ -387,30 +394,27 @@ def _check(args: argparse.Namespace, settings) -> int:
 
     # --fix/--diff re-lint edited text in memory, and a baseline is written from a fresh run
     use_cache = not (args.no_cache or args.fix or args.diff or args.write_baseline)
-    cache_dir = None
+    folder = None
     if use_cache:
-        from moos_lint.cache import cache_dir_for
+        from moos_lint.cache import cache_folder
 
-        cache_dir = os.path.abspath(args.cache_dir) if args.cache_dir else cache_dir_for(settings)
+        given = str(args.cache_dir) if args.cache_dir else None
+        folder = cache_folder(settings, paths, given)
 
     fmt = args.output_format or ("github" if os.environ.get("GITHUB_ACTIONS") == "true" else "text")
     # an unchanged run prints the report it printed before, rendered the same way
-    replay = cache_dir is not None and not args.baseline
+    replay = folder is not None and not args.baseline
     color = False
     if fmt in ("text", "concise"):
         from moos_lint.output.color import wanted
 
         color = wanted(args.color, 1 if args.output_file is None else -1)
     render_key = repr((fmt, bool(args.statistics), bool(args.quiet), os.getcwd(), color))
-    if replay and cache_dir is not None:
+    if replay and folder is not None:
         from moos_lint.cache import cached_output
 
         shown = cached_output(
-            list(args.paths) or [Path(".")],
-            settings,
-            context=args.context,
-            cache_dir=cache_dir,
-            render_key=render_key,
+            paths, settings, context=args.context, folder=folder, render_key=render_key
         )
         if shown is not None:
             text, has_findings, watch = shown
@@ -418,7 +422,7 @@ def _check(args: argparse.Namespace, settings) -> int:
             if failed is not None:
                 return failed
             status = EXIT_FINDINGS if has_findings and not args.exit_zero else EXIT_CLEAN
-            _remember(args, cache_dir, watch, text, status)
+            _remember(args, watch, text, status)
             return status
 
     from moos_lint.progress import for_terminal
@@ -427,15 +431,15 @@ def _check(args: argparse.Namespace, settings) -> int:
 
     def lint(cache=None, *, filtered: bool = True):
         with _CyclicGCPaused(), _Cleared(progress):
-            if cache_dir is not None and cache is None:
+            if folder is not None and cache is None:
                 from moos_lint.cache import cached_lint  # the engine loads only on a miss
 
                 result = cached_lint(
-                    list(args.paths) or [Path(".")],
+                    paths,
                     settings,
                     context=args.context,
                     jobs=args.jobs,
-                    cache_dir=cache_dir,
+                    folder=folder,
                     progress=progress,
                 )
             else:
@@ -443,7 +447,7 @@ def _check(args: argparse.Namespace, settings) -> int:
                 from moos_lint.engine import lint_paths
 
                 result = lint_paths(
-                    args.paths,
+                    paths,
                     settings,
                     context=args.context,
                     cache=cache,
@@ -451,29 +455,20 @@ def _check(args: argparse.Namespace, settings) -> int:
                     progress=progress,
                     parallel=parallel,
                 )
-        from moos_lint.diagnostics import Diagnostic, Severity, Span
-
-        for missing in result.missing:
-            result.diagnostics.insert(
-                0,
-                Diagnostic(
-                    "R001",
-                    "unreadable-file",
-                    Severity.ERROR,
-                    Span(os.path.abspath(missing), 1, 1),
-                    "no such file or directory",
-                ),
-            )
         if base is not None and filtered:
             from moos_lint import baseline as bl
 
             result.diagnostics, result.baselined = bl.new_findings(
                 result.diagnostics, base, result.sources
             )
+        if not result.files:
+            result.warnings.append(no_files_warning(paths))
         return result
 
     if args.write_baseline:
-        return _write_baseline(args, settings, root, lint(filtered=False))
+        result = lint(filtered=False)
+        _warn(result)
+        return _write_baseline(args, settings, root, result)
     result = lint()
     if args.fix or args.diff:
         from moos_lint.fix import fix_until_stable
@@ -486,11 +481,13 @@ def _check(args: argparse.Namespace, settings) -> int:
         if written is not None:
             return written
         result = outcome.result
+    _warn(result)
     text = render(fmt, result, statistics=args.statistics, quiet=args.quiet, color=color)
-    if replay and cache_dir is not None:  # (no cache with --fix or --diff)
+    # (a run with a warning is not kept: the replay prints no warning)
+    if replay and folder is not None and not result.warnings:  # (no cache with --fix or --diff)
         from moos_lint.cache import store_output
 
-        store_output(cache_dir, result, render_key, text, bool(result.diagnostics))
+        store_output(folder, result, render_key, text, bool(result.diagnostics))
     failed = _emit(args.output_file, text)
     if failed is not None:
         return failed
@@ -501,12 +498,21 @@ def _check(args: argparse.Namespace, settings) -> int:
         )
         return EXIT_ERROR
     status = EXIT_FINDINGS if result.diagnostics and not args.exit_zero else EXIT_CLEAN
-    if replay and cache_dir is not None and result.cache_watch is not None:
-        _remember(args, cache_dir, result.cache_watch, text, status)
+    if replay and result.cache_watch is not None and not result.warnings:
+        _remember(args, result.cache_watch, text, status)
     return status
 
 
-def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, status: int):
+def no_files_warning(paths) -> str:
+    return f"warning: no MOOS or C++ files found under {', '.join(str(p) for p in paths)}"
+
+
+def _warn(result) -> None:
+    for warning in result.warnings:
+        print(f"moos-lint: {warning}", file=sys.stderr)
+
+
+def _remember(args: argparse.Namespace, watch: dict, text: str, status: int):
     """Keep a cached run's report for the same command line (:mod:`moos_lint.replay`)."""
     if getattr(args, "argv", None) is None:
         return
@@ -514,8 +520,7 @@ def _remember(args: argparse.Namespace, cache_dir: str, watch: dict, text: str, 
 
     paths = [str(p) for p in args.paths]
     config = str(args.config) if args.config else None
-    output = str(args.output_file) if args.output_file is not None else None
-    remember(cache_dir, args.argv, paths, config, watch, text, status, output)
+    remember(args.argv, paths, config, watch, text, status)
 
 
 def _outside_any_project(settings, root: str) -> str | None:

@@ -87,7 +87,7 @@ class Settings:
         self.compile_commands = compile_commands  # a compile_commands.json, or its folder
         #: app/behavior catalogue files (JSON or TOML) for apps whose C++ is elsewhere
         self.catalogues = [] if catalogues is None else catalogues
-        #: where the result cache lives (None: ``.moos_lint_cache`` in the root)
+        #: where the result cache lives, inside the project (None: the user's cache folder)
         self.cache_dir = cache_dir
         #: leave out what git ignores (``.gitignore``, ``.ignore``, global excludes)
         self.respect_gitignore = respect_gitignore
@@ -241,7 +241,15 @@ def settings_from_dict(data: dict[str, Any], path: Path, prefix: str = "") -> Se
         cd = data["cache-dir"]
         if not isinstance(cd, str) or not cd:
             raise ConfigError(f"{path}: `{prefix}cache-dir` must be a path")
-        s.cache_dir = str((root / cd).resolve())
+        full = str((root / cd).resolve())
+        from moos_lint.project import real_within
+
+        if not real_within(full, str(root)):  # a repository never writes outside itself
+            raise ConfigError(
+                f"{path}: `{prefix}cache-dir` must be a folder inside the project "
+                f"({root}), not `{cd}`; --cache-dir or MOOS_LINT_CACHE_DIR may name any folder"
+            )
+        s.cache_dir = full
     if "respect-gitignore" in data:
         if not isinstance(data["respect-gitignore"], bool):
             raise ConfigError(f"{path}: `{prefix}respect-gitignore` must be true or false")
@@ -289,5 +297,7 @@ def resolve_settings(paths: list[Path], config: Path | None) -> Settings:
     start = paths[0] if paths else Path(".")
     found = find_config(start)
     if found is None:
-        return Settings(root=os.path.abspath(start if start.is_dir() else start.parent))
+        from moos_lint.project import project_root
+
+        return Settings(root=project_root(paths))
     return load_config(found)

@@ -17,9 +17,10 @@ A mission *uses* a file when
   that a launch script writes (``targ_$(VNAME).bhv`` made by nsplug from
   ``meta_vehicle.bhv``) links its template only when a generated file exists.
 
-The project root is the folder of the configuration file in use; without one,
-the nearest folder above the first given path holding ``.git``, ``.hg`` or
-``.svn``; otherwise the working directory.
+The project root is the one :mod:`moos_lint.project` defines: the folder of
+the configuration file in use; without one, the nearest folder above the
+first given path holding ``.git``, ``.hg`` or ``.svn``; otherwise the working
+folder when the given paths lie under it, else their deepest common folder.
 """
 
 from __future__ import annotations
@@ -29,8 +30,6 @@ import os
 import re
 from collections.abc import Iterable
 from pathlib import Path
-
-from moos_lint.markers import VCS_MARKERS
 
 TYPE_CHECKING = False  # typing itself is not imported at run time
 
@@ -44,25 +43,12 @@ _MACRO = re.compile(r"[$%]\([^)]*\)")
 def project_root(
     settings: Settings, paths: Iterable[str | os.PathLike] = (), fallback: str | None = None
 ) -> str:
-    """The folder findings' paths are made relative to (baseline) and missions are searched in.
+    """The project root (:func:`moos_lint.project.project_root`) of a run over ``paths``
+    with ``settings``; ``fallback`` stands for the working folder (a baseline outside
+    any project is relative to its own folder)."""
+    from moos_lint.project import project_root as root_of
 
-    Without a configuration file or a version-control folder: ``fallback``, or
-    the working directory.
-    """
-    if settings.config_path:
-        return os.path.dirname(os.path.abspath(settings.config_path))
-    first = next(iter(paths), None)
-    if first is not None:
-        start = os.path.abspath(first)
-        here = start if os.path.isdir(start) else os.path.dirname(start)
-        while True:
-            if any(os.path.exists(os.path.join(here, m)) for m in VCS_MARKERS):
-                return here
-            parent = os.path.dirname(here)
-            if parent == here:
-                break
-            here = parent
-    return os.path.abspath(fallback) if fallback else os.getcwd()
+    return root_of(list(paths), settings.config_path, cwd=fallback)
 
 
 def _norm(path: str) -> str:

@@ -39,8 +39,12 @@ def kind_of(path: str) -> str | None:
 
 class Discovered:
     """The files to lint (absolute paths, sorted), the paths given that do not exist, the
-    folders whose listing decided the files (walked, or holding a path given), and the
-    ignore files (``.gitignore``, ...) that did, present or not (:mod:`moos_lint.gitignore`)."""
+    folders whose listing decided the files (walked, or holding a path given), each
+    with its modification time taken *before* it was listed (None: it cannot be
+    stat'ed: a file added while the walk goes on changes its folder's time after
+    that, so a list kept with these times is never taken for the newer listing), and
+    the ignore files (``.gitignore``, ...) that decided, present or not
+    (:mod:`moos_lint.gitignore`)."""
 
     __slots__ = ("files", "folders", "ignore_files", "missing")
 
@@ -48,13 +52,20 @@ class Discovered:
         self,
         files: list[str],
         missing: list[str],
-        folders: list[str] | None = None,
+        folders: dict[str, int | None] | None = None,
         ignore_files: list[str] | None = None,
     ) -> None:
         self.files = files
         self.missing = missing
-        self.folders = [] if folders is None else folders
+        self.folders = {} if folders is None else folders
         self.ignore_files = [] if ignore_files is None else ignore_files
+
+
+def _mtime(path: str) -> int | None:
+    try:
+        return os.stat(path).st_mtime_ns
+    except OSError:
+        return None
 
 
 def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
@@ -91,11 +102,13 @@ def discover(
     ignorer = Ignorer(root) if respect_gitignore else None
     files: set[str] = set()
     missing: list[str] = []
-    folders: list[str] = []
+    folders: dict[str, int | None] = {}
     for given in paths:
         p = os.path.abspath(given)
         if not os.path.isdir(p):  # a file given by name: its folder tells whether it exists
-            folders.append(os.path.dirname(p))
+            folders.setdefault(os.path.dirname(p), _mtime(os.path.dirname(p)))
+        else:
+            folders.setdefault(p, _mtime(p))  # before os.walk lists it
         if not os.path.lexists(p):
             missing.append(str(given))
             continue
@@ -115,7 +128,6 @@ def discover(
                 dirnames[:] = []
                 continue
             seen_dirs.add(key)
-            folders.append(dirpath)
             rel_dir = os.path.relpath(dirpath, root)  # normalised: a name joins it as is
             prefix = "" if rel_dir == "." else rel_dir + os.sep
             frame = active = None
@@ -138,6 +150,8 @@ def discover(
                     files.add(os.path.join(dirpath, d))
                     continue
                 keep.append(d)
+                sub = os.path.join(dirpath, d)
+                folders.setdefault(sub, _mtime(sub))  # before os.walk lists it
             dirnames[:] = keep
             if frame is not None and keep:
                 frames[dirpath] = frame

@@ -9,5 +9,3 @@ project root are found by.
 CONFIG_FILES = (".moos-lint.toml", "moos-lint.toml", "pyproject.toml")
 #: version-control folders: the project root of a run without a config file
 VCS_MARKERS = (".git", ".hg", ".svn")
-#: the result cache's folder in the project root
-CACHE_DIR = ".moos_lint_cache"

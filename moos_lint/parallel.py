@@ -88,9 +88,14 @@ def stop(workers: Any) -> None:
 
 
 # ------------------------------------------------------------------ phase 1: C++
-def _cpp_folder(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
-    """In a worker: read, prefilter and parse one folder of C++ files."""
-    return cpp_folder_facts(paths)
+def _cpp_folder(paths: list[str]) -> tuple[tuple, list]:
+    """In a worker: read, prefilter and parse one folder of C++ files; with the reads
+    noted meanwhile (see :func:`moos_lint.source.keep_journal`)."""
+    from moos_lint import source
+
+    size = source.journal_size()
+    facts = cpp_folder_facts(paths)
+    return facts, source.journal_since(size)
 
 
 def cpp_folder_facts(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
@@ -131,8 +136,12 @@ def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
             if not futures[i].cancel():  # a worker has it (or had it)
                 break
             yield cpp_folder_facts(tasks[i])
+        from moos_lint.source import merge_journal
+
         for fut in as_completed([f for f in futures if not f.cancelled()]):
-            yield fut.result()
+            facts, reads = fut.result()
+            merge_journal(reads)
+            yield facts
     except Exception as exc:  # a worker died: the main process redoes the C++
         yield tasks[0] if tasks else [], {}, None, f"{type(exc).__name__}: {exc}"
 
@@ -143,18 +152,22 @@ _REPORTED: set[str] = set()
 
 def _unit_rules(
     indices: list[int],
-) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str]]:
-    """In a worker: the findings of some units, and the files and folders newly read."""
+) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]]:
+    """In a worker: the findings of some units, the files and folders newly read, and
+    the reads noted meanwhile (see :func:`moos_lint.source.keep_journal`)."""
+    from moos_lint import source
+
     run = _RUN
     if run is None:
         raise RuntimeError("a rule worker started without a run")
+    size = source.journal_size()
     out = []
     for i in indices:
         diags, errors = run.run_rules(run.units[i])
         out.append((i, diags, errors))
     read = run.cache.paths() - _REPORTED
     _REPORTED.update(read)
-    return out, read, set(run.cache.probed)
+    return out, read, set(run.cache.probed), source.journal_since(size)
 
 
 def _unit_weight(unit: Unit) -> int:
@@ -192,10 +205,13 @@ def run_rules_parallel(
     _REPORTED.clear()
     _REPORTED.update(run.cache.paths())
     workers = pool(jobs)
+    from moos_lint.source import merge_journal
+
     try:
         futures = [workers.submit(_unit_rules, b) for b in batches]
         for fut in as_completed(futures):
-            batch, read, probed = fut.result()
+            batch, read, probed, reads = fut.result()
+            merge_journal(reads)
             for i, diags, errors in batch:
                 results[i] = (diags, errors)
                 done.add(i)

@@ -31,6 +31,8 @@ class Result:
     outside_links: list[str] = field(default_factory=list)
     #: the linted files' expansions and models (engine units), in the order given
     units: list[Unit] = field(default_factory=list)
+    #: what the run has to say besides its findings ("no MOOS or C++ files found ...")
+    warnings: list[str] = field(default_factory=list)
     #: the result cache entry this result is stored in (see :mod:`moos_lint.cache`)
     cache_token: str | None = None
     #: what the cached result depends on, in stat terms (see :mod:`moos_lint.replay`)

@@ -107,31 +107,95 @@ def read_source(path: str | Path) -> SourceFile | ReadProblem:
     return decode(data, path)
 
 
+#: the journal of reads, while one is kept (see :func:`keep_journal`)
+_journal: dict[str, tuple[tuple[int, int] | None, str]] | None = None
+
+
+def keep_journal() -> None:
+    """Note every file read from now on: its (mtime, size) just before the read and a
+    hash of the bytes read (see :func:`content_digest`). The result cache stores a
+    result with what its files were when they were read, not when it is stored."""
+    global _journal
+    _journal = {}
+
+
+def take_journal() -> dict[str, tuple[tuple[int, int] | None, str]]:
+    """The reads noted since :func:`keep_journal` (and stop noting)."""
+    global _journal
+    out, _journal = _journal or {}, None
+    return out
+
+
+def journal_size() -> int:
+    """How many reads are noted so far (0 when no journal is kept)."""
+    return 0 if _journal is None else len(_journal)
+
+
+def journal_since(size: int) -> list[tuple[str, tuple[tuple[int, int] | None, str]]]:
+    """The reads noted after the first ``size`` (a forked worker sends them back)."""
+    if _journal is None:
+        return []
+    return list(_journal.items())[size:]
+
+
+def merge_journal(entries: list[tuple[str, tuple[tuple[int, int] | None, str]]]) -> None:
+    """Add the reads a worker process noted (the first read of a file wins)."""
+    if _journal is not None:
+        for path, noted in entries:
+            _journal.setdefault(path, noted)
+
+
+def content_digest(data: bytes | ReadProblem) -> str:
+    """A hash of a file's bytes; for a file that could not be read, why it could not."""
+    if not isinstance(data, bytes):
+        return f"unread:{data.kind}"
+    from hashlib import blake2b
+
+    return blake2b(data, digest_size=20).hexdigest()
+
+
+def digest_now(path: str | Path) -> str:
+    """:func:`content_digest` of the file as it is now (not noted in the journal)."""
+    return content_digest(_read_bytes(Path(path))[0])
+
+
 def read_bytes(path: str | Path) -> bytes | ReadProblem:
-    """Read a regular file's bytes without ever blocking or raising."""
+    """Read a regular file's bytes without ever blocking or raising (noted in the
+    journal, when one is kept)."""
+    data, stamp = _read_bytes(path)
+    if _journal is not None:
+        key = os.fspath(path)
+        if key not in _journal:  # the first read is the one the result is made of
+            _journal[key] = (stamp, content_digest(data))
+    return data
+
+
+def _read_bytes(path: str | Path) -> tuple[bytes | ReadProblem, tuple[int, int] | None]:
+    """The bytes (or the problem) and the file's (mtime, size) just before they were read."""
     try:
         st = os.stat(path)
     except OSError as exc:
-        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
+        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}"), None
+    stamp = (st.st_mtime_ns, st.st_size)
     if stat.S_ISDIR(st.st_mode):
-        return ReadProblem("not-regular", "is a directory, not a file")
+        return ReadProblem("not-regular", "is a directory, not a file"), stamp
     if not stat.S_ISREG(st.st_mode):
-        return ReadProblem(
-            "not-regular", "is not a regular file (device, FIFO or socket): not read"
-        )
+        why = "is not a regular file (device, FIFO or socket): not read"
+        return ReadProblem("not-regular", why), stamp
     if st.st_size > MAX_FILE_BYTES:
-        return ReadProblem(
-            "too-large", f"file is {st.st_size} bytes, over the {MAX_FILE_BYTES} byte limit"
-        )
+        why = f"file is {st.st_size} bytes, over the {MAX_FILE_BYTES} byte limit"
+        return ReadProblem("too-large", why), stamp
     try:
         # O_NONBLOCK guards against a file replaced by a FIFO after the stat.
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except OSError as exc:
-        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
+        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}"), stamp
     try:
         st = os.fstat(fd)
+        stamp = (st.st_mtime_ns, st.st_size)
         if not stat.S_ISREG(st.st_mode):
-            return ReadProblem("not-regular", "is not a regular file: not read")
+            why = "is not a regular file: not read"
+            return ReadProblem("not-regular", why), (st.st_mtime_ns, st.st_size)
         # os.read, not a file object: most files come in one call, as large as the file
         chunks = []
         left = MAX_FILE_BYTES + 1
@@ -142,7 +206,7 @@ def read_bytes(path: str | Path) -> bytes | ReadProblem:
             chunks.append(chunk)
             left -= len(chunk)
     except OSError as exc:
-        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}")
+        return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}"), stamp
     finally:
         os.close(fd)
-    return chunks[0] if len(chunks) == 1 else b"".join(chunks)
+    return (chunks[0] if len(chunks) == 1 else b"".join(chunks)), stamp

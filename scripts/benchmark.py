@@ -38,7 +38,8 @@ site-packages (an editable-install finder, certificate injectors, ...). The
 environment is made in a temporary folder and reaches moos-lint and its
 dependencies where this interpreter has them, through one ``.pth`` file that
 lists those folders (paths only, no import lines). The tree is never written:
-caches, reports and copies go to the temporary folder.
+caches (and the cache key: ``XDG_CACHE_HOME``), reports and copies go to the
+temporary folder.
 """
 
 from __future__ import annotations
@@ -587,6 +588,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"  {'figure':44s} {'value':>22s}  {'target':28s} {'ratio':>7s}  verdict")
     t = Table()
     with tempfile.TemporaryDirectory(prefix="moos-lint-bench-") as tmp:
+        # the cache key goes to the temporary folder too, never to the user's cache
+        os.environ["XDG_CACHE_HOME"] = os.path.join(tmp, "user-cache")
+        os.environ.pop("MOOS_LINT_CACHE_DIR", None)
         try:
             inst = clean_install(os.path.join(tmp, "install"))
         except (OSError, subprocess.CalledProcessError) as exc:

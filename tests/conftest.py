@@ -1,9 +1,10 @@
-"""The test session keeps moos-lint's result cache in a temporary folder.
+"""The test session never sees a developer's own cache, nor writes into it.
 
-Many tests check that a lint run leaves the linted tree untouched, byte for
-byte; the cache (on by default, in ``.moos_lint_cache`` in the project root)
-goes to a folder of its own instead, through ``MOOS_LINT_CACHE_DIR``, which
-every subprocess inherits. The cache's own tests set their folder explicitly.
+moos-lint keeps its cache in the user's cache folder (``$XDG_CACHE_HOME/moos-lint``,
+``~/.cache/moos-lint`` by default). The session points ``XDG_CACHE_HOME`` at a
+temporary folder of its own, which every subprocess inherits, and drops
+``MOOS_LINT_CACHE_DIR``, so every test runs with the cache where a user's run
+keeps it (and where the cache's own tests look for it).
 """
 
 from __future__ import annotations
@@ -13,18 +14,24 @@ import shutil
 import tempfile
 
 _CACHE: str | None = None
+_SAVED: dict[str, str | None] = {}
 
 
 def pytest_configure(config):
     global _CACHE
-    if "MOOS_LINT_CACHE_DIR" not in os.environ:
-        _CACHE = tempfile.mkdtemp(prefix="moos-lint-test-cache-")
-        os.environ["MOOS_LINT_CACHE_DIR"] = _CACHE
+    _CACHE = tempfile.mkdtemp(prefix="moos-lint-test-cache-")
+    for name in ("XDG_CACHE_HOME", "MOOS_LINT_CACHE_DIR"):
+        _SAVED[name] = os.environ.pop(name, None)
+    os.environ["XDG_CACHE_HOME"] = _CACHE
 
 
 def pytest_unconfigure(config):
+    for name, value in _SAVED.items():
+        if value is None:
+            os.environ.pop(name, None)
+        else:
+            os.environ[name] = value
     if _CACHE is not None:
-        os.environ.pop("MOOS_LINT_CACHE_DIR", None)
         shutil.rmtree(_CACHE, ignore_errors=True)
 
 

@@ -160,12 +160,13 @@ def test_unused_suppression(project):
     assert run("check", "m.moos", "--ignore", "R003")[0] == 0
 
 
-def test_missing_path_is_reported_and_others_linted(project):
+def test_a_missing_path_is_a_usage_error_even_with_exit_zero(project, capsys):
     (project / "bad.moos").write_text(BAD)
-    status, out = run("check", "nope.moos", "bad.moos", "--output-format", "json")
-    codes = [(d["path"], d["code"]) for d in json.loads(out)]
-    assert ("nope.moos", "R001") in codes and ("bad.moos", "R003") in codes
-    assert status == 1
+    for extra in ([], ["--exit-zero"]):
+        status = main(["check", "bad.moos", "nope.moos", "--output-format", "json", *extra])
+        out, err = capsys.readouterr()
+        assert status == 2 and out == ""
+        assert "nope.moos: no such file or directory" in err
 
 
 def test_expand_command(project, capsys):

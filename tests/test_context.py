@@ -132,5 +132,6 @@ def test_project_root(tmp_path, monkeypatch):
     assert project_root(Settings(config_path=str(cfg)), [nested]) == str(tmp_path / "a")
     monkeypatch.chdir(nested)
     (tmp_path / ".hg").rmdir()
-    outside = tmp_path / "x.moos"
-    assert project_root(Settings(), [outside]) in (os.getcwd(), str(nested))
+    outside = tmp_path / "x.moos"  # outside the working folder: its own folder
+    assert project_root(Settings(), [outside]) == str(tmp_path)
+    assert project_root(Settings(), [nested / "y.moos"]) == str(nested)  # the working folder

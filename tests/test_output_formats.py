@@ -294,6 +294,34 @@ def test_every_format_handles_no_findings(tmp_path, monkeypatch, fmt):
         assert ET.fromstring(out.encode()).find("testsuite").get("failures") == "0"
 
 
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_a_run_that_finds_nothing_to_lint_says_so_in_every_format(tmp_path, monkeypatch, fmt):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("GITHUB_ACTIONS", raising=False)
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "docs" / "notes.txt").write_text("no mission here\n")
+    out, err = io.StringIO(), io.StringIO()
+    with redirect_stdout(out), redirect_stderr(err):
+        status = main(["check", "docs", "--output-format", fmt])
+    out = out.getvalue()
+    warning = "warning: no MOOS or C++ files found under docs"
+    assert status == 0 and warning in err.getvalue()
+    if fmt == "sarif":
+        log = json.loads(out)
+        sarif_validator().validate(log)
+        (invocation,) = log["runs"][0]["invocations"]
+        assert invocation["executionSuccessful"] is False
+        assert invocation["toolExecutionNotifications"][0]["message"]["text"] == warning
+    elif fmt == "github":
+        assert out == f"::warning::{warning}\n"
+    elif fmt == "junit":
+        suite = ET.fromstring(out.encode()).find("testsuite")
+        assert suite.get("skipped") == "1" and suite.get("failures") == "0"
+        assert suite.find("testcase/skipped").get("message") == warning
+    elif fmt in ("json", "gitlab"):
+        assert json.loads(out) == []  # (their schemas hold findings only: stderr says it)
+
+
 def test_unknown_format_is_a_usage_error(project):
     with pytest.raises(SystemExit) as exc, redirect_stderr(io.StringIO()):
         main(["check", "m.moos", "--output-format", "xml"])

@@ -113,10 +113,10 @@ def counted(monkeypatch):
     return calls
 
 
-def _cached(tree: Path, cache_dir: Path):
-    return result_cache.cached_lint(
-        [tree], _settings(tree), context=False, jobs=1, cache_dir=str(cache_dir)
-    )
+def _cached(tree: Path, cache_dir: Path, settings=None):
+    settings = settings or _settings(tree)
+    folder = result_cache.cache_folder(settings, [tree], str(cache_dir))
+    return result_cache.cached_lint([tree], settings, context=False, jobs=1, folder=folder)
 
 
 def test_the_cache_skips_an_unchanged_run(tree, tmp_path, counted):
@@ -126,7 +126,7 @@ def test_the_cache_skips_an_unchanged_run(tree, tmp_path, counted):
     second = _json(_cached(tree, store))
     assert counted == [4], "an unchanged run was linted again"
     assert second == first
-    assert [p.name for p in store.glob("run-*.pickle")]
+    assert [p.name for p in store.glob("run-*.json")]
 
 
 def test_the_cache_notices_a_changed_include(tree, tmp_path, counted):
@@ -156,7 +156,7 @@ def test_the_cache_notices_an_include_that_now_exists(tree, tmp_path, counted):
 def test_the_stored_file_list_notices_new_and_removed_files(tree, tmp_path, counted):
     store = tmp_path / "cache"
     _cached(tree, store)
-    assert list(store.glob("files-*.pickle")), "the discovered files were not kept"
+    assert list(store.glob("files-*.json")), "the discovered files were not kept"
     (tree / "sub").mkdir()
     (tree / "sub" / "c.moos").write_text(MISSION.replace("alpha", "charlie"))
     found = _cached(tree, store).files
@@ -187,50 +187,70 @@ def test_a_changed_setting_is_another_entry(tree, tmp_path, counted):
     _cached(tree, store)
     settings = _settings(tree)
     settings.ignore = ["R"]
-    result_cache.cached_lint([tree], settings, context=False, jobs=1, cache_dir=str(store))
+    _cached(tree, store, settings)
     assert len(counted) == 2
 
 
 def test_a_corrupt_or_partial_entry_is_ignored(tree, tmp_path, counted):
     store = tmp_path / "cache"
     first = _json(_cached(tree, store))
-    (entry,) = store.glob("run-*.pickle")
+    (entry,) = store.glob("run-*.json")
     data = entry.read_bytes()
-    for broken in (b"", data[: len(data) // 2], b"not a pickle at all", b"\x80\x04K\x01."):
+    head, _, body = data.partition(b"\n")
+    broken_entries = (
+        b"",
+        data[: len(data) // 2],
+        b"not json at all",
+        b"\x80\x04K\x01.",
+        body,  # unsealed
+        head + b"\n" + body + b" ",  # changed after sealing (still valid JSON)
+    )
+    for broken in broken_entries:
         entry.write_bytes(broken)
         assert _json(_cached(tree, store)) == first
-    assert len(counted) == 5
+    assert len(counted) == 1 + len(broken_entries)
     # a partial temporary file left by a killed run is harmless too
     (store / ".tmp-x.part").write_bytes(data[:10])
     assert _json(_cached(tree, store)) == first
-    assert len(counted) == 5
+    assert len(counted) == 1 + len(broken_entries)
 
 
-def test_the_cache_writes_only_its_folder_and_no_cache_writes_nothing(tree, monkeypatch, capsys):
-    monkeypatch.delenv(result_cache.ENV_VAR, raising=False)
+def test_the_cache_writes_only_its_folder_and_no_cache_writes_nothing(
+    tree, tmp_path, monkeypatch, capsys
+):
+    monkeypatch.delenv("MOOS_LINT_CACHE_DIR", raising=False)
+    user = tmp_path / "user-cache"
+    monkeypatch.setenv("XDG_CACHE_HOME", str(user))
     monkeypatch.chdir(tree)
 
-    def listing():
-        return sorted(str(p.relative_to(tree)) for p in tree.rglob("*"))
+    def listing(root):
+        return sorted(str(p.relative_to(root)) for p in root.rglob("*"))
 
-    before = listing()
+    before = listing(tree)
     main(["check", ".", "--no-cache", "--output-format", "json"])
-    assert listing() == before
+    assert listing(tree) == before and not user.exists()
     main(["check", ".", "--output-format", "json"])
-    added = sorted(set(listing()) - set(before))
-    assert added[0] == ".moos_lint_cache" and all(
-        p.startswith(".moos_lint_cache/") for p in added[1:]
-    )
-    assert (tree / ".moos_lint_cache" / ".gitignore").read_text().strip().endswith("*")
+    assert listing(tree) == before
+    written = listing(user)
+    assert "moos-lint/key" in written
+    assert (user / "moos-lint" / "key").stat().st_mode & 0o777 == 0o600
+    runs = [p for p in written if p.endswith(".json") and "/run-" in p]
+    assert len(runs) == 1 and runs[0].count("/") == 2  # moos-lint/<project>/run-KEY.json
     capsys.readouterr()
 
 
-def test_cache_dir_in_the_config(tree, tmp_path, monkeypatch):
-    monkeypatch.delenv(result_cache.ENV_VAR, raising=False)
+def test_cache_dir_in_the_config_stays_in_the_project(tree, tmp_path, monkeypatch):
+    from moos_lint.config import ConfigError
+
+    monkeypatch.delenv("MOOS_LINT_CACHE_DIR", raising=False)
     (tree / "moos-lint.toml").write_text('cache-dir = "../elsewhere"\n')
+    with pytest.raises(ConfigError, match="cache-dir"):
+        _settings(tree)
+    (tree / "moos-lint.toml").write_text('cache-dir = ".cache/moos-lint"\n')
     settings = _settings(tree)
-    assert settings.cache_dir == str((tmp_path / "elsewhere").resolve())
-    assert result_cache.cache_dir_for(settings) == settings.cache_dir
+    assert settings.cache_dir == str((tree / ".cache" / "moos-lint").resolve())
+    folder = result_cache.cache_folder(settings, [tree], None)
+    assert folder is not None and folder.path == settings.cache_dir
 
 
 # ------------------------------------------------------------------ --jobs
@@ -372,10 +392,11 @@ def test_an_unchanged_run_prints_the_same_report_and_status(tree, tmp_path):
     assert json.loads(as_json.stdout) and as_json.returncode == 1
     elsewhere = _cli_run(base, tmp_path)
     assert elsewhere.stdout != first.stdout  # paths are shown relative to the working folder
-    # a path that does not exist is reported, replayed or not
+    # a path that does not exist is a usage error, replayed or not
     missing = ["check", str(tree), str(tree / "nope.moos"), "--cache-dir", store]
-    assert "nope.moos" in _cli_run(missing, tree).stdout
-    assert "nope.moos" in _cli_run(missing, tree).stdout
+    for _ in range(2):
+        proc = _cli_run(missing, tree)
+        assert proc.returncode == 2 and "nope.moos" in proc.stderr
     # a changed file is linted again, and its report is the fresh one
     (tree / "plug.moos").write_text(PLUG)
     changed = _cli_run(base, tree)

@@ -8,6 +8,7 @@ code) sends the run back to the normal path, which prints the fresh report.
 
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -20,7 +21,17 @@ from moos_lint import engine, replay
 from moos_lint.cli import main
 from tests.test_performance import BEHAVIORS, MISSION, PLUG
 
-LIGHT = ("argparse", "pathlib", "pickle", "hashlib", "json", "moos_lint.cache", "moos_lint.config")
+#: modules the replay must not load (json and the built-in SHA-256 it may)
+HEAVY = (
+    "argparse",
+    "pathlib",
+    "pickle",
+    "hashlib",
+    "hmac",
+    "_hashlib",
+    "moos_lint.cache",
+    "moos_lint.config",
+)
 
 
 @pytest.fixture
@@ -32,8 +43,13 @@ def tree(tmp_path, monkeypatch):
     (root / "shared.bhv").write_text(BEHAVIORS)
     monkeypatch.delenv("MOOS_LINT_CACHE_DIR", raising=False)
     monkeypatch.delenv("GITHUB_ACTIONS", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "user-cache"))
     monkeypatch.chdir(root)
     return root
+
+
+def replay_entries(tree: Path) -> list[Path]:
+    return list((tree.parent / "user-cache" / "moos-lint" / "replay").glob("replay-*.json"))
 
 
 def _run(argv: list[str], capsys) -> tuple[int, str]:
@@ -62,7 +78,8 @@ def test_an_unchanged_run_is_replayed_before_argparse_loads(tree):
         "from moos_lint.cli import main\n"
         "status = main(['check', '.'])\n"
         "new = set(sys.modules) - before\n"
-        f"print('LOADED', sorted(m for m in new if m.startswith({LIGHT!r})), status)\n"
+        f"heavy = {HEAVY!r}\n"
+        "print('LOADED', sorted(m for m in new if m in heavy), status)\n"
     )
 
     def run():
@@ -77,7 +94,8 @@ def test_an_unchanged_run_is_replayed_before_argparse_loads(tree):
     again, _, loaded = run()
     assert loaded.strip() == "[] 1", loaded
     assert again == report and "R0" in report
-    assert list((tree / ".moos_lint_cache").glob("replay-*.marshal"))
+    assert replay_entries(tree)
+    assert not (tree / ".moos_lint_cache").exists()
 
 
 def test_the_replay_prints_what_the_normal_run_prints(tree, capsys):
@@ -163,12 +181,28 @@ def test_changed_moos_lint_code_is_not_replayed(tree, capsys, monkeypatch, tmp_p
     assert _replayed(argv, capsys) is None
 
 
-def test_a_corrupt_entry_is_a_miss(tree, capsys):
+def test_a_corrupt_unsealed_or_misshapen_entry_is_a_miss(tree, capsys):
+    from moos_lint.cache_files import seal, user_key
+
     argv = ["check", "."]
     before = _run(argv, capsys)
-    (entry,) = (tree / ".moos_lint_cache").glob("replay-*.marshal")
+    (entry,) = replay_entries(tree)
     data = entry.read_bytes()
-    for broken in (b"", data[: len(data) // 2], b"not marshal", b"\xe9\x00"):
+    head, _, body = data.partition(b"\n")
+    key = user_key(create=False)
+    misshapen = json.loads(body)
+    misshapen["status"] = "0"
+    for broken in (
+        b"",
+        data[: len(data) // 2],
+        b"not json",
+        b"\xe9\x00",
+        body,  # the JSON without its seal
+        head + b"\n" + body.replace(b"R0", b"X0"),  # text changed after sealing
+        seal(b"k" * 32, entry.name, body),  # sealed under another key
+        seal(key, entry.name, json.dumps(misshapen).encode()),  # sealed, but not the layout
+        seal(key, entry.name, b"[1, 2]"),
+    ):
         entry.write_bytes(broken)
         assert _replayed(argv, capsys) is None
         assert _run(argv, capsys) == before
@@ -177,6 +211,7 @@ def test_a_corrupt_entry_is_a_miss(tree, capsys):
 def test_no_entry_without_the_cache(tree, capsys):
     _run(["check", ".", "--no-cache"], capsys)
     assert not (tree / ".moos_lint_cache").exists()
+    assert not (tree.parent / "user-cache").exists()
     assert _replayed(["check", "."], capsys) is None
 
 
@@ -198,12 +233,12 @@ def test_the_entry_is_found_from_the_cache_dir_option_and_the_environment(
     store = tmp_path / "store"
     argv = ["check", ".", "--cache-dir", str(store)]
     before = _run(argv, capsys)
-    assert list(store.glob("replay-*.marshal"))
+    assert list(store.glob("replay-*.json"))
     assert _replayed(argv, capsys) == before
     monkeypatch.setenv("MOOS_LINT_CACHE_DIR", str(tmp_path / "env-store"))
     argv = ["check", "."]
     before = _run(argv, capsys)
-    assert list(Path(tmp_path / "env-store").glob("replay-*.marshal"))
+    assert list(Path(tmp_path / "env-store").glob("replay-*.json"))
     assert _replayed(argv, capsys) == before
 
 
@@ -239,7 +274,7 @@ def test_a_second_checkout_of_the_same_version_lints_afresh(tree, tmp_path):
 
     first = run(None)
     assert first.returncode == 1 and "R0" in first.stdout, first.stderr
-    assert list((tree / ".moos_lint_cache").glob("replay-*"))  # an entry to replay
+    assert replay_entries(tree)  # an entry to replay
     assert not linted.exists()
     second = run(str(checkout))
     assert second.returncode == 1, second.stderr

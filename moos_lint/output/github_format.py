@@ -25,7 +25,7 @@ def escape_property(text: str) -> str:
 
 
 def render(result, cwd: str, **_kw) -> str:
-    out: list[str] = []
+    out = [f"::warning::{escape_data(w)}" for w in result.warnings]
     for d in result.diagnostics:
         s = d.span
         props = [

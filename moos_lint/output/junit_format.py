@@ -3,7 +3,8 @@
 One ``<testsuite>`` named ``moos-lint``; every linted file is a test case,
 ``classname`` the file's path. A clean file is a passing case; a file with
 findings has one failing case per finding (``name`` = ``CODE:line:col``), so
-each finding shows up on its own.
+each finding shows up on its own. A run that found nothing to lint is one
+skipped case whose message says so.
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ def render(result: Result, cwd: str, **_kw) -> str:
         by_file.setdefault(d.span.path, []).append(d)
     n_fail = len(result.diagnostics)
     boundary_notes = notes(result)
-    n_skipped = len(boundary_notes)
+    n_skipped = len(boundary_notes) + len(result.warnings)
     n_tests = sum(max(len(v), 1) for v in by_file.values()) + n_skipped
     suites = ET.Element(
         "testsuites", name="moos-lint", tests=str(n_tests), failures=str(n_fail), errors="0"
@@ -49,6 +50,9 @@ def render(result: Result, cwd: str, **_kw) -> str:
         skipped=str(n_skipped),
         time="0",
     )
+    for w in result.warnings:  # (nothing was linted: a skipped case says why)
+        case = ET.SubElement(suite, "testcase", classname="moos-lint", name="moos-lint", time="0")
+        ET.SubElement(case, "skipped", message=_clean(w))
     for path in sorted(by_file):
         shown = _clean(shown_path(path, cwd))
         diags = by_file[path]

@@ -125,20 +125,25 @@ def _result(d: Diagnostic, index: int, cwd: str) -> dict:
 
 
 def _invocation(result: Result, cwd: str) -> dict:
-    """The run's invocation: whether it succeeded, and a notification for each file
+    """The run's invocation: whether it succeeded (no internal error, and something to
+    lint), a warning when it found nothing to lint, and a notification for each file
     outside the project whose findings are not shown (see :mod:`moos_lint.boundary`)."""
-    out: dict = {"executionSuccessful": not result.internal_errors}
-    boundary_notes = notes(result)
-    if boundary_notes:
-        out["toolExecutionNotifications"] = [
-            {
-                "descriptor": {"id": OUTSIDE_CODE},
-                "level": "note",
-                "message": {"text": note},
-                "locations": [{"physicalLocation": {"artifactLocation": _artifact(path, cwd)}}],
-            }
-            for path, note in boundary_notes
-        ]
+    out: dict = {"executionSuccessful": not result.internal_errors and not result.warnings}
+    # a run that found nothing to lint did not do its job: a warning says so
+    notifications: list[dict] = [
+        {"level": "warning", "message": {"text": w}} for w in result.warnings
+    ]
+    notifications += [
+        {
+            "descriptor": {"id": OUTSIDE_CODE},
+            "level": "note",
+            "message": {"text": note},
+            "locations": [{"physicalLocation": {"artifactLocation": _artifact(path, cwd)}}],
+        }
+        for path, note in notes(result)
+    ]
+    if notifications:
+        out["toolExecutionNotifications"] = notifications
     return out
 
 

@@ -7,7 +7,6 @@ import re
 from typing import TYPE_CHECKING
 
 from moos_lint.catalogue import BehaviorInfo, catalogue_for
-from moos_lint.markers import VCS_MARKERS
 from moos_lint.suffixes import is_cpp
 
 if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
@@ -80,18 +79,9 @@ def _library_behaviors(path: str) -> set[str]:
 
 
 def _root(ctx: Context) -> str:
-    """The project: the config's folder, else the nearest VCS root, else the file's folder."""
-    if ctx.settings.config_path:
-        return os.path.dirname(os.path.abspath(ctx.settings.config_path))
-    start = os.path.dirname(os.path.abspath(ctx.unit.path))
-    here = start
-    while True:
-        if any(os.path.exists(os.path.join(here, m)) for m in VCS_MARKERS):
-            return here
-        parent = os.path.dirname(here)
-        if parent == here:
-            return start
-        here = parent
+    """The project root (:mod:`moos_lint.project`), which the settings carry: the
+    config's folder, else the version-control top, else the working folder."""
+    return os.path.abspath(ctx.settings.root)
 
 
 def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:

@@ -194,7 +194,7 @@ def _slow_worker(paths):
     import time
 
     time.sleep(0.2)
-    return parallel.cpp_folder_facts(paths)
+    return parallel.cpp_folder_facts(paths), []
 
 
 @pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
