@@ -129,8 +129,9 @@ def test_the_lint_step_runs_moos_lint(tmp_path: Path):
         MOOS_LINT_ARGS="",
         MOOS_LINT_FORMAT="concise",
     )
-    # `docs/*` is a path that does not exist (never a glob): a finding, the run goes on
-    assert clean.returncode == 1 and "docs/*:1:1: R001" in clean.stdout
+    # `docs/*` is a path that does not exist (never a glob): a usage error, nothing linted
+    assert clean.returncode == 2 and clean.stdout == ""
+    assert "docs/*: no such file or directory" in clean.stderr
 
 
 def test_the_sarif_step_writes_a_report_and_an_output(tmp_path: Path):
