@@ -1,3 +1,3 @@
-from moos_lint.cli import run
+from moos_lint.commands.cli import run
 
 run()

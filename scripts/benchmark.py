@@ -59,7 +59,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 #: the console script's entry point, as ``[project.scripts]`` in pyproject.toml names it
-ENTRY_POINT = "moos_lint.cli:run"
+ENTRY_POINT = "moos_lint.commands.cli:run"
 MISSION_SUFFIXES = (".moos", ".bhv")
 RELINT_RUNS = 20
 COPIES = (1, 4, 16)
@@ -174,8 +174,8 @@ def clean_install(folder: str) -> Installation:
 
 
 def lintable(tree: str) -> list[str]:
-    from moos_lint.config import resolve_settings
-    from moos_lint.discovery import discover
+    from moos_lint.core.config import resolve_settings
+    from moos_lint.files.discovery import discover
 
     settings = resolve_settings([Path(tree)], None)
     return [str(p) for p in discover([Path(tree)], settings.exclude, settings.root).files]
@@ -183,8 +183,8 @@ def lintable(tree: str) -> list[str]:
 
 def cpp_near(files: list[str], lines: int) -> str | None:
     """The C++ file that mentions the MOOS API and is closest to ``lines`` lines."""
-    from moos_lint.cpp.prefilter import mentions_moos
-    from moos_lint.suffixes import is_cpp_source
+    from moos_lint.files.suffixes import is_cpp_source
+    from moos_lint.frontends.cpp.prefilter import mentions_moos
 
     best, best_gap = None, None
     for p in files:
@@ -275,11 +275,11 @@ def own_findings(report: str) -> list[tuple[str, int]]:
 def floor(tree: str) -> None:
     """Read every lintable file of ``tree``, and parse and query the C++ files that
     mention the MOOS API, split between the processes a cold run uses."""
-    from moos_lint import parallel
-    from moos_lint.cpp.parse import backend
-    from moos_lint.cpp.prefilter import mentions_moos
-    from moos_lint.source import read_bytes
-    from moos_lint.suffixes import is_cpp
+    from moos_lint.files.source import read_bytes
+    from moos_lint.files.suffixes import is_cpp
+    from moos_lint.frontends.cpp.parse import backend
+    from moos_lint.frontends.cpp.prefilter import mentions_moos
+    from moos_lint.speed import parallel
 
     files = lintable(tree)
     jobs = parallel.effective_jobs(None, len(files))
@@ -305,7 +305,7 @@ def floor(tree: str) -> None:
 
 def relint(paths: list[str], runs: int) -> None:
     """Print, as JSON, the wall and CPU times of ``runs`` editor re-lints of each path."""
-    from moos_lint.lsp.analysis import analyse, settle
+    from moos_lint.commands.lsp.analysis import analyse, settle
 
     settle()  # as the server does before it takes requests
     times = {}

@@ -3,7 +3,7 @@
 Draws ``fixtures/graph/harbour.moos`` with the installed ``moos-lint`` and takes
 a screenshot of the page with headless Chromium (``chromium`` on the PATH, or
 ``--browser``), written to ``docs/graph.png``. Run it again after changing the
-page (``moos_lint/graph_html.py``) and commit the picture.
+page (``moos_lint/commands/graph_html.py``) and commit the picture.
 """
 
 from __future__ import annotations

@@ -11,10 +11,10 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-from moos_lint.config import Settings, load_config
-from moos_lint.engine import Result, lint_files
-from moos_lint.fix import FixOutcome, fix_until_stable
-from moos_lint.registry import Rule, get_rule
+from moos_lint.core.config import Settings, load_config
+from moos_lint.core.engine import Result, lint_files
+from moos_lint.core.fix import FixOutcome, fix_until_stable
+from moos_lint.core.registry import Rule, get_rule
 from tests.fixture_expect import RULE_FIXTURES, linted_files
 
 FOLDERS = ("fire", "quiet")
@@ -56,7 +56,7 @@ def _run(code: str, kind: str) -> FolderRun:
         return lint_files(files, settings_for(rule), cache=cache)
 
     result = lint()
-    # the real `--fix` loop (moos_lint.fix), in memory: nothing is written
+    # the real `--fix` loop (moos_lint.core.fix), in memory: nothing is written
     fixed = fix_until_stable(lint, first=result)
     return FolderRun(rule, kind, tuple(files), result, fixed)
 

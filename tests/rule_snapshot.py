@@ -6,9 +6,9 @@
 * each finding of the rule, in report order: code, name, severity, span
   (start and end, 1-based, end column exclusive), message, notes, the include
   chain, and its fix: the fix's message, each edit, and the diff of the fix
-  applied alone (through :func:`moos_lint.fix.apply_fixes`);
+  applied alone (through :func:`moos_lint.core.fix.apply_fixes`);
 * each file as ``moos-lint check --fix`` leaves it (the real fix loop,
-  :func:`moos_lint.fix.fix_until_stable`, in memory), in full, and the rule's
+  :func:`moos_lint.core.fix.fix_until_stable`, in memory), in full, and the rule's
   findings that remain after the fixes.
 
 Paths are relative to the rule's fixture folder, so a snapshot is the same on
@@ -21,8 +21,8 @@ import difflib
 import os
 from pathlib import Path
 
-from moos_lint.diagnostics import Diagnostic, Span
-from moos_lint.fix import Document, apply_fixes, unified_diff
+from moos_lint.core.fix import Document, apply_fixes, unified_diff
+from moos_lint.files.diagnostics import Diagnostic, Span
 from tests.fixture_expect import FIXTURES, RULE_FIXTURES
 from tests.rule_runs import FOLDERS, FolderRun
 

@@ -19,9 +19,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.discovery import kind_of
-from moos_lint.nsplug import MAX_INCLUDE_DEPTH
-from moos_lint.source import read_source
+from moos_lint.files.discovery import kind_of
+from moos_lint.files.source import read_source
+from moos_lint.frontends.nsplug import MAX_INCLUDE_DEPTH
 from tests.fixture_expect import FIXTURES, expectations
 
 BAD = FIXTURES / "bad-input"
@@ -220,8 +220,8 @@ def test_config_files_that_are_not_files_are_not_read_when_searching(tmp_path):
 
 def test_an_unreadable_file_is_reported_and_the_others_are_linted(tmp_path, monkeypatch, capsys):
     """Root-proof: opening the file fails with EACCES, as chmod 000 does for other users."""
-    from moos_lint import source
-    from moos_lint.cli import main
+    from moos_lint.commands.cli import main
+    from moos_lint.files import source
 
     (tmp_path / "secret.moos").write_text("ServerPort = 1\n")
     (tmp_path / "other.moos").write_text("ServerPort = 1\n}\n")
@@ -311,9 +311,9 @@ def test_cpp_bad_inputs(tmp_path):
 
 @pytest.mark.skipif(kind_of("App.cpp") != "cpp", reason="moos-lint does not lint C++ files")
 def test_a_crash_in_the_cpp_reader_is_an_internal_error_not_a_traceback(tmp_path, monkeypatch):
-    from moos_lint.config import Settings
-    from moos_lint.cpp import units
-    from moos_lint.engine import INTERNAL_ERROR, lint_files
+    from moos_lint.core.config import Settings
+    from moos_lint.core.engine import INTERNAL_ERROR, lint_files
+    from moos_lint.semantics import cpp_units as units
 
     for folder in ("a", "b"):
         (tmp_path / folder).mkdir()

@@ -10,8 +10,8 @@ from contextlib import redirect_stderr, redirect_stdout
 
 import pytest
 
-from moos_lint import baseline as bl
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
+from moos_lint.core import baseline as bl
 
 SELECT = "R003,R012"
 BRACES = "ProcessConfig = pA {\n}\nProcessConfig = pB {\n}\n"
@@ -162,7 +162,7 @@ def test_baseline_and_fix_together(project):
 
 
 def test_new_findings_api_keeps_internal_errors():
-    from moos_lint.diagnostics import Diagnostic, Severity, Span
+    from moos_lint.files.diagnostics import Diagnostic, Severity, Span
 
     d = Diagnostic("L900", "internal-error", Severity.ERROR, Span("/r/x.moos", 1), "boom")
     base = bl.Baseline(root="/r", files={"x.moos": {"L900": [""]}})

@@ -42,13 +42,13 @@ MALFORMED = "this line is not a MOOS line\n"
 #: a run of the real command line, the engine's lint counted (``LINTED`` on stderr)
 PROBE = """
 import sys
-from moos_lint import engine
+from moos_lint.core import engine
 real = engine.lint_files
 def lint_files(*a, **kw):
     print("LINTED", file=sys.stderr)
     return real(*a, **kw)
 engine.lint_files = lint_files
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
 sys.exit(main(sys.argv[1:]))
 """
 
@@ -161,8 +161,8 @@ def test_committed_pickles_and_corrupt_entries_under_every_name_are_inert(world)
 
 
 def test_a_crafted_replay_entry_forges_no_report_and_writes_no_file(world, monkeypatch):
-    from moos_lint import replay
-    from moos_lint.cache_files import seal, user_key
+    from moos_lint.speed import replay
+    from moos_lint.speed.cache_files import seal, user_key
 
     victim = world.home / "notes.txt"
     victim.write_text("mine\n")
@@ -339,14 +339,14 @@ def test_a_key_that_is_not_private_is_never_used(world):
 
 EDIT_DURING_RUN = """
 import sys
-from moos_lint import cache
+from moos_lint.speed import cache
 real = cache.store
 def store(*a, **kw):
     with open("alpha.moos", "a") as fh:  # saved after the lint read it, before the store
         fh.write(MALFORMED)
     return real(*a, **kw)
 cache.store = store
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
 sys.exit(main(["check", "."]))
 """.replace("MALFORMED", repr(MALFORMED))
 
@@ -374,7 +374,7 @@ def test_a_file_saved_during_a_run_is_reported_by_the_next_run(world):
 def test_the_seal_is_rfc_2104_hmac_sha256():
     import hmac
 
-    from moos_lint.cache_files import mac, seal, unseal
+    from moos_lint.speed.cache_files import mac, seal, unseal
 
     for key in (b"k" * 32, b"", b"x" * 64, b"y" * 100):
         for body in (b"", b"{}", os.urandom(5000)):

@@ -5,12 +5,12 @@ from __future__ import annotations
 import json
 import re
 
-from moos_lint.catalogue import STOCK, stock
-from moos_lint.diagnostics import Diagnostic, Severity, Span, Subject
-from moos_lint.graph import _flagged_vars
-from moos_lint.nsplug import Preprocessor
-from moos_lint.parsers.bhv import parse_bhv
-from moos_lint.suffixes import is_cpp, is_cpp_source
+from moos_lint.commands.graph import _flagged_vars
+from moos_lint.files.diagnostics import Diagnostic, Severity, Span, Subject
+from moos_lint.files.suffixes import is_cpp, is_cpp_source
+from moos_lint.frontends.nsplug import Preprocessor
+from moos_lint.frontends.parsers.bhv import parse_bhv
+from moos_lint.semantics.catalogue import STOCK, stock
 
 #: a source file and line (or line range) of MOOS-IvP or MOOS core
 _EVIDENCE = re.compile(r"(ivp/src|MOOS_Jul2724)/[\w/.-]+\.(cpp|h):\d+")

@@ -15,8 +15,8 @@ from contextlib import redirect_stderr, redirect_stdout
 
 import pytest
 
-from moos_lint.cli import main
-from moos_lint.output import FORMATS, inert, shown_path
+from moos_lint.commands.cli import main
+from moos_lint.commands.output import FORMATS, inert, shown_path
 
 # GitHub's runner splits a log on CR and LF.
 LINE_BREAK = re.compile(r"\r\n|\r|\n")

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "fixtures" / "example"
@@ -203,11 +203,11 @@ def test_console_script_runs_on_the_example():
 
 def test_version_is_fast_and_light():
     code = (
-        "import sys, moos_lint.cli as c\n"
+        "import sys, moos_lint.commands.cli as c\n"
         "try:\n c.main(['--version'])\nexcept SystemExit: pass\n"
         "print(sorted(m for m in sys.modules if m.split('.')[0] in "
         "('tree_sitter', 'clang', 'pygls', 'moos_lint')))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True).stdout
     assert "tree_sitter" not in out and "pygls" not in out and "clang" not in out
-    assert "moos_lint.engine" not in out
+    assert "moos_lint.core.engine" not in out

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from moos_lint.config import Settings
-from moos_lint.engine import lint_files
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
 
 APP = """
 #include "MOOS/libMOOS/MOOSLib.h"

@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cli import main
-from moos_lint.config import Settings
-from moos_lint.context import project_root, related_missions
-from moos_lint.engine import lint_paths
+from moos_lint.commands.cli import main
+from moos_lint.core.config import Settings
+from moos_lint.core.context import project_root, related_missions
+from moos_lint.core.engine import lint_paths
 
 ANTLER = "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n}\n"
 

@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.config import Settings
-from moos_lint.discovery import discover
-from moos_lint.engine import lint_files
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
+from moos_lint.files.discovery import discover
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "moos-ivp"
 

@@ -9,8 +9,8 @@ import pytest
 
 pytest.importorskip("tree_sitter")
 
-from moos_lint.config import Settings
-from moos_lint.engine import lint_files
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
 
 APP = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "clang_app"
 FILES = [str(APP / n) for n in ("Compass.cpp", "Compass.h", "MOOSStub.h", "main.cpp")]
@@ -38,7 +38,7 @@ def _lint(backend: str, db: Path | None, select: list[str]):
 
 def _clang_app(tmp_path):
     ci = pytest.importorskip("clang.cindex")
-    from moos_lint.cpp.clang import system_include
+    from moos_lint.frontends.cpp.clang import system_include
 
     try:
         ci.conf.lib  # noqa: B018
@@ -76,7 +76,7 @@ def test_tree_sitter_alone_sees_neither(tmp_path):
 
 def test_missing_compile_commands_warns_once_and_falls_back(tmp_path, capsys):
     pytest.importorskip("clang.cindex")
-    import moos_lint.cpp.clang as clang_mod
+    import moos_lint.frontends.cpp.clang as clang_mod
 
     clang_mod._warned.clear()
     missing = tmp_path / "nowhere"
@@ -94,7 +94,7 @@ def test_missing_compile_commands_warns_once_and_falls_back(tmp_path, capsys):
 def test_missing_libclang_says_so(monkeypatch, capsys):
     import builtins
 
-    import moos_lint.cpp.clang as clang_mod
+    import moos_lint.frontends.cpp.clang as clang_mod
 
     real_import = builtins.__import__
 
@@ -110,7 +110,7 @@ def test_missing_libclang_says_so(monkeypatch, capsys):
 
 
 def test_config_key_and_cli_flag(tmp_path):
-    from moos_lint.config import ConfigError, load_config
+    from moos_lint.core.config import ConfigError, load_config
 
     cfg = tmp_path / "moos-lint.toml"
     cfg.write_text('cpp-backend = "clang"\ncompile-commands = "build"\n')
@@ -125,7 +125,7 @@ def test_config_key_and_cli_flag(tmp_path):
 
 
 def test_only_parse_shaping_flags_reach_libclang():
-    from moos_lint.cpp.clang import parse_flags
+    from moos_lint.frontends.cpp.clang import parse_flags
 
     crafted = [
         *("-include", "/etc/passwd", "-include/etc/shadow"),
@@ -144,7 +144,7 @@ def test_only_parse_shaping_flags_reach_libclang():
 
 
 def test_compile_database_search_stops_at_the_project_root(tmp_path):
-    from moos_lint.cpp.clang import find_compile_commands
+    from moos_lint.frontends.cpp.clang import find_compile_commands
 
     project = tmp_path / "project"
     app = project / "src" / "pApp"

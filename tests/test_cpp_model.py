@@ -10,11 +10,11 @@ import pytest
 pytest.importorskip("tree_sitter")
 pytest.importorskip("tree_sitter_cpp")
 
-from moos_lint.config import Settings
-from moos_lint.cpp.app import build_apps, read_relevant
-from moos_lint.cpp.cmake import executable_name
-from moos_lint.cpp.prefilter import mentions_moos
-from moos_lint.engine import lint_files
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
+from moos_lint.frontends.cpp.app import build_apps, read_relevant
+from moos_lint.frontends.cpp.cmake import executable_name
+from moos_lint.frontends.cpp.prefilter import mentions_moos
 
 APP = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "model_app"
 
@@ -121,7 +121,7 @@ def test_inline_suppression_in_cpp(tmp_path):
 
 
 def test_directory_discovery_takes_cpp(tmp_path):
-    from moos_lint.discovery import discover
+    from moos_lint.files.discovery import discover
 
     (tmp_path / "App.cpp").write_text("int x;\n")
     (tmp_path / "notes.txt").write_text("x\n")

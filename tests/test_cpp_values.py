@@ -7,8 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cpp.app import parse_folder
-from moos_lint.cpp.values import (
+from moos_lint.files.source import SourceFile
+from moos_lint.frontends.cpp.app import parse_folder
+from moos_lint.frontends.cpp.values import (
     AbstractValue,
     RepositoryResolver,
     neg,
@@ -17,7 +18,6 @@ from moos_lint.cpp.values import (
     to_rad,
     within_pi,
 )
-from moos_lint.source import SourceFile
 
 
 def published(code: str) -> dict[str, AbstractValue]:

@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.docs import main as docs_main
-from moos_lint.registry import CODE_RE, NAME_RE, all_rules
-from moos_lint.rule_page import missing_sections, render_rule_page
+from moos_lint.commands.rule_page import missing_sections, render_rule_page
+from moos_lint.core.registry import CODE_RE, NAME_RE, all_rules
+from scripts.docs import main as docs_main
 
 ROOT = Path(__file__).resolve().parent.parent
 RULES = all_rules()
@@ -28,7 +28,7 @@ def test_codes_and_names_are_unique():
 def test_rule_pages_are_current(capsys):
     status = docs_main([str(ROOT / "rules"), "--check"])
     out = capsys.readouterr().out
-    assert status == 0, f"run `python3 -m moos_lint.docs rules`:\n{out}"
+    assert status == 0, f"run `python3 scripts/docs.py rules`:\n{out}"
 
 
 def test_page_renders_metadata():

@@ -10,9 +10,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cli import main
-from moos_lint.diagnostics import Diagnostic, Edit, Fix, Severity, Span
-from moos_lint.fix import Document, apply_fixes, load_document, write_atomic
+from moos_lint.commands.cli import main
+from moos_lint.core.fix import Document, apply_fixes, load_document, write_atomic
+from moos_lint.files.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "fix"
 SELECT = "R,L001"

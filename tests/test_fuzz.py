@@ -25,12 +25,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from moos_lint.config import Settings
-from moos_lint.diagnostics import Diagnostic
-from moos_lint.engine import INTERNAL_ERROR, Result, lint_files
-from moos_lint.nsplug import Preprocessor, expand_text
-from moos_lint.output import FORMATS, render
-from moos_lint.source import SourceFile, decode
+from moos_lint.commands.output import FORMATS, render
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import INTERNAL_ERROR, Result, lint_files
+from moos_lint.files.diagnostics import Diagnostic
+from moos_lint.files.source import SourceFile, decode
+from moos_lint.frontends.nsplug import Preprocessor, expand_text
 from tests.fixture_expect import FIXTURES, LINTED_SUFFIXES
 
 LONG = os.environ.get("MOOS_LINT_FUZZ", "") == "long"

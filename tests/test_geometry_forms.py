@@ -10,8 +10,8 @@ compiled with g++): ``convex_polygon`` is ``string2Poly(v).is_convex()``,
 
 import pytest
 
-from moos_lint.geometry_forms import INVALID, UNKNOWN, VALID, judge
-from moos_lint.rules.invalid_parameter_value import problem
+from moos_lint.rules.mission.invalid_parameter_value import problem
+from moos_lint.semantics.geometry_forms import INVALID, UNKNOWN, VALID, judge
 
 V, X = VALID, INVALID
 

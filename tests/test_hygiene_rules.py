@@ -4,10 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from moos_lint.config import Settings
-from moos_lint.engine import lint_files
-from moos_lint.nsplug import Preprocessor
-from moos_lint.rules._hygiene import exclusive, names_match
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
+from moos_lint.frontends.nsplug import Preprocessor
+from moos_lint.rules.hygiene._shared import exclusive, names_match
 
 
 def _lint(tmp_path: Path, files: dict[str, str], select: list[str], **opts) -> list:

@@ -82,7 +82,7 @@ def import_graph() -> dict[str, set[str]]:
                     deps.add(target)
         graph[name] = deps
     rule_modules = {m for m in modules if m.startswith("moos_lint.rules.")}
-    graph["moos_lint.registry"] |= rule_modules  # load_rules imports each by name
+    graph["moos_lint.core.registry"] |= rule_modules  # load_rules imports each by name
     return graph
 
 
@@ -133,9 +133,9 @@ def test_the_allow_list_holds_only_live_cycles():
 def test_the_graph_sees_function_level_imports_and_skips_type_checking_ones():
     tree = ast.parse(
         "from typing import TYPE_CHECKING\n"
-        "if TYPE_CHECKING:\n    import moos_lint.engine\n"
-        "def f():\n    from moos_lint import cache\n"
+        "if TYPE_CHECKING:\n    import moos_lint.core.engine\n"
+        "def f():\n    from moos_lint.speed import cache\n"
     )
     names = [t for n in _imports(tree) for t in _targets("moos_lint.x", False, n)]
-    assert "moos_lint.cache" in names and "moos_lint.engine" not in names
+    assert "moos_lint.speed.cache" in names and "moos_lint.core.engine" not in names
     assert cycles({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == [("a", "b", "c")]

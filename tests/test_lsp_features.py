@@ -11,17 +11,17 @@ pytest.importorskip("lsprotocol")
 
 from lsprotocol import types as lsp
 
-from moos_lint.diagnostics import Span
-from moos_lint.lsp import features
-from moos_lint.lsp.analysis import analyse, settings_for
-from moos_lint.lsp.catalogue import Catalogue, Component, ParamInfo, from_app_catalogue
-from moos_lint.lsp.documents import (
+from moos_lint.commands.lsp import features
+from moos_lint.commands.lsp.analysis import analyse, settings_for
+from moos_lint.commands.lsp.catalogue import Catalogue, Component, ParamInfo, from_app_catalogue
+from moos_lint.commands.lsp.documents import (
     DocumentStore,
     memory_reader,
     path_to_uri,
     uri_to_path,
 )
-from moos_lint.source import SourceFile
+from moos_lint.files.diagnostics import Span
+from moos_lint.files.source import SourceFile
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures" / "lsp"
 CATALOGUE = Catalogue(

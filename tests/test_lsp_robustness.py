@@ -14,7 +14,7 @@ import pytest
 
 pytest.importorskip("pygls")
 
-from moos_lint.lsp.documents import path_to_uri
+from moos_lint.commands.lsp.documents import path_to_uri
 
 BAD_MISSION = "ServerHost = localhost\nProcessConfig = pHelmIvP {\n  AppTick = 4\n}\n"
 

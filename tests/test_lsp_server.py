@@ -16,9 +16,9 @@ pytest_lsp = pytest.importorskip("pytest_lsp")
 from lsprotocol import types as lsp  # noqa: E402
 from pytest_lsp import ClientServerConfig, LanguageClient  # noqa: E402
 
-from moos_lint.lsp.catalogue import default_catalogue  # noqa: E402
-from moos_lint.lsp.documents import path_to_uri  # noqa: E402
-from moos_lint.registry import get_rule  # noqa: E402
+from moos_lint.commands.lsp.catalogue import default_catalogue  # noqa: E402
+from moos_lint.commands.lsp.documents import path_to_uri  # noqa: E402
+from moos_lint.core.registry import get_rule  # noqa: E402
 
 FIXTURES = Path(__file__).resolve().parent.parent / "fixtures" / "lsp"
 SERVER = ClientServerConfig(server_command=[sys.executable, "-m", "moos_lint", "server"])

@@ -11,15 +11,21 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.catalogue import STOCK, Catalogue, CatalogueError, load_user_catalogue, stock
-from moos_lint.catalogue.generate import _names
-from moos_lint.cli import main
-from moos_lint.config import ConfigError, Settings, load_config
-from moos_lint.engine import LintRun, lint_files
-from moos_lint.graph import build_graph, to_dot, to_html
-from moos_lint.mission_model import behavior_paths, model_of
-from moos_lint.registry import select_rules
-from moos_lint.rules.invalid_parameter_value import is_number, problem
+from moos_lint.commands.cli import main
+from moos_lint.commands.graph import build_graph, to_dot, to_html
+from moos_lint.core.config import ConfigError, Settings, load_config
+from moos_lint.core.engine import LintRun, lint_files
+from moos_lint.core.registry import select_rules
+from moos_lint.rules.mission.invalid_parameter_value import is_number, problem
+from moos_lint.semantics.catalogue import (
+    STOCK,
+    Catalogue,
+    CatalogueError,
+    load_user_catalogue,
+    stock,
+)
+from moos_lint.semantics.mission_model import behavior_paths, model_of
+from scripts.generate_catalogue import _names
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "moos-ivp"
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "rules"
@@ -233,7 +239,7 @@ def test_corpus_action_that_no_behavior_reads():
 def test_corpus_runs_every_mission_without_internal_errors():
     corpus = needs_corpus()
     settings = Settings(root=str(corpus), select=["M"])
-    from moos_lint.discovery import discover
+    from moos_lint.files.discovery import discover
 
     files = discover([corpus / "ivp" / "missions"], [], str(corpus)).files
     result = lint_files(files, settings)
@@ -355,8 +361,8 @@ def test_what_a_sibling_publishes_is_kept_across_editor_runs_while_unchanged(tmp
     """The language server re-lints a mission at every edit; the publishers of the missions
     beside it are kept from one run to the next only while nothing they came from changed:
     the sibling mission, its behavior files (text and which files a name resolves to)."""
-    from moos_lint import mission_model as mm
-    from moos_lint.lsp.analysis import analyse
+    from moos_lint.commands.lsp.analysis import analyse
+    from moos_lint.semantics import mission_model as mm
 
     shore = tmp_path / "shore.moos"
     shore.write_text(
@@ -400,8 +406,8 @@ def test_what_a_sibling_publishes_is_kept_across_editor_runs_while_unchanged(tmp
 
 
 def test_a_kept_sibling_follows_a_changed_user_catalogue(tmp_path, monkeypatch):
-    from moos_lint import mission_model as mm
-    from moos_lint.lsp.analysis import analyse
+    from moos_lint.commands.lsp.analysis import analyse
+    from moos_lint.semantics import mission_model as mm
 
     monkeypatch.setattr(mm, "_KEPT", mm.OrderedDict())
     (tmp_path / "moos-lint.toml").write_text('catalogues = ["apps.toml"]\n')

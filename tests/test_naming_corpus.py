@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.config import Settings
-from moos_lint.engine import lint_paths
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_paths
 
 CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "moos-ivp"
 CODES = ["N001", "N002", "N003", "N004", "N005", "N006"]

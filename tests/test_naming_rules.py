@@ -4,12 +4,18 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from moos_lint.config import Settings
-from moos_lint.engine import lint_files
-from moos_lint.nsplug import Preprocessor
-from moos_lint.parsers.bhv import parse_bhv
-from moos_lint.parsers.moos import parse_moos
-from moos_lint.variables import PUBLISH, SUBSCRIBE, bare_name, bhv_variables, moos_variables
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
+from moos_lint.frontends.nsplug import Preprocessor
+from moos_lint.frontends.parsers.bhv import parse_bhv
+from moos_lint.frontends.parsers.moos import parse_moos
+from moos_lint.semantics.variables import (
+    PUBLISH,
+    SUBSCRIBE,
+    bare_name,
+    bhv_variables,
+    moos_variables,
+)
 
 
 def _lint(tmp_path: Path, name: str, text: str, code: str, options: dict | None = None):

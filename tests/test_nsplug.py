@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.nsplug import MAX_INCLUDE_DEPTH, Preprocessor, expand_text
+from moos_lint.frontends.nsplug import MAX_INCLUDE_DEPTH, Preprocessor, expand_text
 
 
 def write(tmp_path: Path, name: str, text: str) -> Path:
@@ -205,7 +205,7 @@ def _include_bomb(folder: Path, fan_out: int = 10, levels: int = 8) -> Path:
 
 
 def test_an_include_bomb_stops_at_its_budget(tmp_path, monkeypatch):
-    import moos_lint.nsplug as nsplug
+    import moos_lint.frontends.nsplug as nsplug
 
     monkeypatch.setattr(nsplug, "MAX_EXPANDED_LINES", 5_000)
     exp = Preprocessor().expand(_include_bomb(tmp_path))
@@ -228,8 +228,8 @@ def test_a_macro_that_grows_without_bound_stops(tmp_path):
 
 
 def test_the_cli_reports_an_include_bomb(tmp_path, monkeypatch, capsys):
-    import moos_lint.nsplug as nsplug
-    from moos_lint.cli import main
+    import moos_lint.frontends.nsplug as nsplug
+    from moos_lint.commands.cli import main
 
     monkeypatch.setattr(nsplug, "MAX_EXPANDED_LINES", 5_000)
     top = _include_bomb(tmp_path)

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
 
 TREE = os.environ.get("MOOS_IVP_TREE", "")
 APP = Path(TREE) / "ivp" / "src" / "app_nsplug" if TREE else None

@@ -12,12 +12,12 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from moos_lint.cli import main
-from moos_lint.diagnostics import Diagnostic, IncludeSite, Severity, Span
-from moos_lint.engine import Result
-from moos_lint.output import FORMATS, render
-from moos_lint.output.github_format import escape_data, escape_property
-from moos_lint.registry import all_rules
+from moos_lint.commands.cli import main
+from moos_lint.commands.output import FORMATS, render
+from moos_lint.commands.output.github_format import escape_data, escape_property
+from moos_lint.core.engine import Result
+from moos_lint.core.registry import all_rules
+from moos_lint.files.diagnostics import Diagnostic, IncludeSite, Severity, Span
 
 SCHEMA = Path(__file__).resolve().parents[1] / "fixtures" / "schemas" / "sarif-schema-2.1.0.json"
 SELECT = "R003,R011,R012,L001"

@@ -26,12 +26,13 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint import cache as result_cache
-from moos_lint import engine, parallel
-from moos_lint.cli import main
-from moos_lint.config import Settings, resolve_settings
-from moos_lint.discovery import _excluded
-from moos_lint.output import render
+from moos_lint.commands.cli import main
+from moos_lint.commands.output import render
+from moos_lint.core import engine
+from moos_lint.core.config import Settings, resolve_settings
+from moos_lint.files.discovery import _excluded
+from moos_lint.speed import cache as result_cache
+from moos_lint.speed import parallel
 from tests.fixture_expect import FIXTURES
 
 MISSION = """\
@@ -240,7 +241,7 @@ def test_the_cache_writes_only_its_folder_and_no_cache_writes_nothing(
 
 
 def test_cache_dir_in_the_config_stays_in_the_project(tree, tmp_path, monkeypatch):
-    from moos_lint.config import ConfigError
+    from moos_lint.core.config import ConfigError
 
     monkeypatch.delenv("MOOS_LINT_CACHE_DIR", raising=False)
     (tree / "moos-lint.toml").write_text('cache-dir = "../elsewhere"\n')
@@ -297,7 +298,7 @@ def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
 
 
 def _shown(path: str) -> list[tuple]:
-    from moos_lint.lsp.analysis import analyse
+    from moos_lint.commands.lsp.analysis import analyse
 
     text = Path(path).read_text(encoding="utf-8", errors="replace")
     found = analyse(path, {path: text}).findings
@@ -307,7 +308,7 @@ def _shown(path: str) -> list[tuple]:
 def test_the_server_checks_only_units_that_can_report_in_the_document(monkeypatch):
     """Re-linting a document checks its own unit and the units that include or use it, and
     shows exactly what checking every neighbour shows."""
-    from moos_lint.lsp import analysis
+    from moos_lint.commands.lsp import analysis
 
     folders = [FIXTURES / "example", *sorted((FIXTURES / "rules").glob("*/fire"))]
     docs = [
@@ -334,9 +335,9 @@ def test_the_server_checks_only_units_that_can_report_in_the_document(monkeypatc
 def test_expansions_kept_across_runs_see_every_change_to_what_they_read(tmp_path):
     """The language server keeps expansions between runs: an edit in the editor or on
     disk, other defines, or an include that now exists is seen at once."""
-    from moos_lint import nsplug
-    from moos_lint.nsplug import ExpansionStore, FileCache, Preprocessor
-    from moos_lint.source import SourceFile, split_lines
+    from moos_lint.files.source import SourceFile, split_lines
+    from moos_lint.frontends import nsplug
+    from moos_lint.frontends.nsplug import ExpansionStore, FileCache, Preprocessor
 
     mission = "#include plug.moos\n#include later.moos\nA = $(X)\n"
     (tmp_path / "m.moos").write_text(mission)

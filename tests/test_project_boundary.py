@@ -18,10 +18,10 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from moos_lint.boundary import Boundary, apply
-from moos_lint.cli import _keep_inside, main
-from moos_lint.diagnostics import Diagnostic, Edit, Fix, Severity, Span
-from moos_lint.output import FORMATS
+from moos_lint.commands.cli import _keep_inside, main
+from moos_lint.commands.output import FORMATS
+from moos_lint.files.boundary import Boundary, apply
+from moos_lint.files.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 
 MARKER = "Qz7MarkerOutsideText"
 SCHEMA = Path(__file__).resolve().parents[1] / "fixtures" / "schemas" / "sarif-schema-2.1.0.json"
@@ -136,7 +136,7 @@ def test_fix_leaves_a_link_to_an_outside_file_alone(project):
 
 
 def test_fix_refuses_a_document_outside_the_project(tmp_path, capsys):
-    from moos_lint.fix import FixOutcome, load_document
+    from moos_lint.core.fix import FixOutcome, load_document
 
     root = tmp_path / "project"
     root.mkdir()
@@ -186,8 +186,8 @@ def test_apply_hides_redacts_and_drops_fixes(tmp_path):
 
 def test_language_server_diagnostics_never_quote_an_outside_file(project):
     pytest.importorskip("lsprotocol")
-    from moos_lint.lsp.analysis import analyse
-    from moos_lint.lsp.features import diagnostics
+    from moos_lint.commands.lsp.analysis import analyse
+    from moos_lint.commands.lsp.features import diagnostics
 
     for name in ("abs.moos", "rel.moos", "path.moos", "macro.moos", "pw.moos"):
         path = str(project / name)

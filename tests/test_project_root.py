@@ -1,10 +1,10 @@
-"""The one definition of the project root (moos_lint.project)."""
+"""The one definition of the project root (moos_lint.files.project)."""
 
 from __future__ import annotations
 
 import os
 
-from moos_lint.project import is_within, project_root, real_within
+from moos_lint.files.project import is_within, project_root, real_within
 
 
 def test_config_folder_wins(tmp_path):

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from moos_lint.catalogue import goby, text_format_app, text_format_schema
-from moos_lint.nsplug import Line
-from moos_lint.protobuf_text import looks_like_text_format, read_block
+from moos_lint.frontends.nsplug import Line
+from moos_lint.frontends.parsers.protobuf_text import looks_like_text_format, read_block
+from moos_lint.semantics.catalogue import goby, text_format_app, text_format_schema
 
 
 def _lines(text: str) -> list[Line]:

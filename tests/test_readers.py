@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from moos_lint.nsplug import Preprocessor
-from moos_lint.parsers.bhv import parse_bhv
-from moos_lint.parsers.moos import parse_moos, strip_comment
+from moos_lint.frontends.nsplug import Preprocessor
+from moos_lint.frontends.parsers.bhv import parse_bhv
+from moos_lint.frontends.parsers.moos import parse_moos, strip_comment
 
 
 def moos(tmp_path: Path, text: str):

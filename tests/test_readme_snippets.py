@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.cli import build_parser
+from moos_lint.commands.cli import build_parser
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 

@@ -1,4 +1,4 @@
-"""The replay of an unchanged run (:mod:`moos_lint.replay`): light, and never stale.
+"""The replay of an unchanged run (:mod:`moos_lint.speed.replay`): light, and never stale.
 
 A second identical ``moos-lint check`` prints the first one's report before
 argparse loads; anything the report depends on (a linted or included file, a
@@ -17,8 +17,9 @@ from pathlib import Path
 import pytest
 
 import moos_lint
-from moos_lint import engine, replay
-from moos_lint.cli import main
+from moos_lint.commands.cli import main
+from moos_lint.core import engine
+from moos_lint.speed import replay
 from tests.test_performance import BEHAVIORS, MISSION, PLUG
 
 #: modules the replay must not load (json and the built-in SHA-256 it may)
@@ -29,8 +30,8 @@ HEAVY = (
     "hashlib",
     "hmac",
     "_hashlib",
-    "moos_lint.cache",
-    "moos_lint.config",
+    "moos_lint.speed.cache",
+    "moos_lint.core.config",
 )
 
 
@@ -75,7 +76,7 @@ def test_an_unchanged_run_is_replayed_before_argparse_loads(tree):
     code = (
         "import sys\n"
         "before = set(sys.modules)\n"  # (site hooks may import some)
-        "from moos_lint.cli import main\n"
+        "from moos_lint.commands.cli import main\n"
         "status = main(['check', '.'])\n"
         "new = set(sys.modules) - before\n"
         f"heavy = {HEAVY!r}\n"
@@ -182,7 +183,7 @@ def test_changed_moos_lint_code_is_not_replayed(tree, capsys, monkeypatch, tmp_p
 
 
 def test_a_corrupt_unsealed_or_misshapen_entry_is_a_miss(tree, capsys):
-    from moos_lint.cache_files import seal, user_key
+    from moos_lint.speed.cache_files import seal, user_key
 
     argv = ["check", "."]
     before = _run(argv, capsys)

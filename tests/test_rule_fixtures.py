@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from moos_lint.registry import all_rules
+from moos_lint.core.registry import all_rules
 from tests.fixture_expect import RULE_FIXTURES, expectations, linted_files
 from tests.rule_runs import folder_run
 

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import pytest
 
-from moos_lint.fix import apply_fixes
-from moos_lint.registry import all_rules
+from moos_lint.core.fix import apply_fixes
+from moos_lint.core.registry import all_rules
 from tests.fixture_expect import FIXTURES, RULE_FIXTURES
 from tests.rule_runs import FOLDERS, folder_run
 from tests.rule_snapshot import SNAPSHOT_NAME, UPDATE_COMMAND, diff, render, snapshot_path

@@ -19,9 +19,9 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.config import Settings
-from moos_lint.engine import Context, LintRun, _empty_unit
-from moos_lint.registry import Scope, all_rules
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import Context, LintRun, _empty_unit
+from moos_lint.core.registry import Scope, all_rules
 
 SMALL = int(os.environ.get("MOOS_LINT_SCALING_BLOCKS", "500"))
 BIG = 10 * SMALL
@@ -136,7 +136,7 @@ def rule_times(files: list[str], root: str) -> tuple[dict[str, float], set[str]]
     """Each rule's time on the inputs (processor time, which other work on the machine
     does not inflate: the best of two, after a first untimed pass that builds the
     models the rules share), and the codes found."""
-    from moos_lint.cpp.units import build_cpp_units
+    from moos_lint.semantics.cpp_units import build_cpp_units
 
     settings = Settings(root=root)
     rules = all_rules()

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint.angles import angle_kind, format_rad, literal_number, wrap_pi
-from moos_lint.config import Settings
-from moos_lint.engine import lint_files
-from moos_lint.geometry import geometry_points, start_pos_points
+from moos_lint.core.config import Settings
+from moos_lint.core.engine import lint_files
+from moos_lint.semantics.angles import angle_kind, format_rad, literal_number, wrap_pi
+from moos_lint.semantics.geometry import geometry_points, start_pos_points
 
 
 @pytest.mark.parametrize(

@@ -20,10 +20,11 @@ from pathlib import Path
 
 import pytest
 
-from moos_lint import engine, parallel
-from moos_lint.cli import main
-from moos_lint.config import resolve_settings
-from moos_lint.output import render
+from moos_lint.commands.cli import main
+from moos_lint.commands.output import render
+from moos_lint.core import engine
+from moos_lint.core.config import resolve_settings
+from moos_lint.speed import parallel
 from tests.fixture_expect import FIXTURES
 from tests.test_performance import MISSION, PLUG, _cached, _cli_run, _json, _settings, _tree
 
@@ -38,7 +39,7 @@ def tree(tmp_path):
 
 
 def test_the_prefilter_keeps_parsing_to_files_that_mention_moos(tmp_path, monkeypatch):
-    from moos_lint.cpp import app, parse
+    from moos_lint.frontends.cpp import app, parse
 
     app_dir = tmp_path / "pApp"
     app_dir.mkdir()
@@ -57,7 +58,7 @@ def test_the_prefilter_keeps_parsing_to_files_that_mention_moos(tmp_path, monkey
 
 
 def test_the_language_server_reparses_only_changed_cpp(tmp_path, monkeypatch):
-    from moos_lint.cpp import app, parse
+    from moos_lint.frontends.cpp import app, parse
 
     monkeypatch.setattr(app, "PARSE_MEMO_SIZE", 8)
     monkeypatch.setattr(app, "_parse_memo", app.OrderedDict())
@@ -83,7 +84,7 @@ def test_the_language_server_reparses_only_changed_cpp(tmp_path, monkeypatch):
 
 
 def test_a_run_expands_a_shared_behavior_file_once(tmp_path, monkeypatch):
-    from moos_lint.nsplug import Preprocessor
+    from moos_lint.frontends.nsplug import Preprocessor
 
     _tree(tmp_path)
     expanded: list[str] = []
@@ -107,17 +108,18 @@ def test_a_warm_run_loads_no_parser_and_no_rule(tree, tmp_path):
     store = tmp_path / "cache"
     code = (
         "import sys\n"
-        "from moos_lint.cli import main\n"
+        "from moos_lint.commands.cli import main\n"
         f"args = ['check', {str(tree)!r}, '--cache-dir', {str(store)!r}, '-q', '--exit-zero']\n"
         "main(args)\n"
-        "loaded = ('moos_lint.engine', 'moos_lint.nsplug', 'moos_lint.parsers', "
-        "'moos_lint.rules', 'moos_lint.mission_model', 'tree_sitter')\n"
+        "loaded = ('moos_lint.core.engine', 'moos_lint.frontends.nsplug', "
+        "'moos_lint.frontends.parsers', "
+        "'moos_lint.rules', 'moos_lint.semantics.mission_model', 'tree_sitter')\n"
         "print([m for m in sys.modules if m.startswith(loaded)])\n"
     )
     run = [sys.executable, "-c", code]
     first = subprocess.run(run, capture_output=True, text=True, timeout=120)
     assert first.returncode == 0, first.stderr
-    assert "moos_lint.engine" in first.stdout  # a cold run lints
+    assert "moos_lint.core.engine" in first.stdout  # a cold run lints
     second = subprocess.run(run, capture_output=True, text=True, timeout=120)
     assert second.returncode == 0, second.stderr
     assert second.stdout.strip().endswith("[]"), second.stdout
@@ -133,7 +135,7 @@ def test_small_inputs_stay_in_one_process():
 def test_version_imports_no_parser_and_no_server():
     code = (
         "import sys\n"
-        "from moos_lint.cli import main\n"
+        "from moos_lint.commands.cli import main\n"
         "try:\n    main(['--version'])\nexcept SystemExit:\n    pass\n"
         "heavy = ('tree_sitter', 'tree_sitter_cpp', 'clang', 'pygls', 'lsprotocol', 'argparse')\n"
         "print([m for m in sys.modules if m.split('.')[0] in heavy])\n"
@@ -144,8 +146,8 @@ def test_version_imports_no_parser_and_no_server():
 
 
 def test_a_kept_expansion_is_expanded_again_only_when_what_it_read_changes(tmp_path, monkeypatch):
-    from moos_lint import nsplug
-    from moos_lint.nsplug import ExpansionStore, FileCache, Preprocessor
+    from moos_lint.frontends import nsplug
+    from moos_lint.frontends.nsplug import ExpansionStore, FileCache, Preprocessor
 
     (tmp_path / "m.moos").write_text("#include plug.moos\nA = 1\n")
     (tmp_path / "plug.moos").write_text("B = 2\n")
@@ -163,7 +165,7 @@ def test_a_kept_expansion_is_expanded_again_only_when_what_it_read_changes(tmp_p
         def reader(p):
             text = (texts or {}).get(str(p))
             if text is not None:
-                from moos_lint.source import SourceFile, split_lines
+                from moos_lint.files.source import SourceFile, split_lines
 
                 return SourceFile(path=p, text=text, lines=split_lines(text))
             return nsplug.read_source(p)
@@ -221,7 +223,7 @@ def test_the_main_process_takes_the_cpp_folders_no_worker_started(monkeypatch):
 
 
 def test_the_stored_file_list_ignores_the_folder_around_the_linted_one(tree, tmp_path, monkeypatch):
-    from moos_lint import discovery
+    from moos_lint.files import discovery
 
     walks: list[int] = []
     real = discovery.discover
@@ -253,8 +255,8 @@ def test_rule_workers_take_a_folder_at_a_time():
 
 
 def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch):
-    from moos_lint.cpp import app as cpp_app
-    from moos_lint.cpp.parse import backend
+    from moos_lint.frontends.cpp import app as cpp_app
+    from moos_lint.frontends.cpp.parse import backend
 
     be = backend()
     monkeypatch.setattr(cpp_app, "PARSE_MEMO_SIZE", 8)
@@ -306,9 +308,10 @@ def test_a_command_line_lint_pauses_the_cyclic_gc_and_restores_it(tree, monkeypa
 def test_a_run_over_missions_alone_loads_no_cpp_module(tree):
     code = (
         "import sys\n"
-        "from moos_lint.cli import main\n"
+        "from moos_lint.commands.cli import main\n"
         f"main(['check', {str(tree)!r}, '--no-cache', '-q', '--exit-zero'])\n"
-        "print([m for m in sys.modules if m.startswith(('moos_lint.cpp', 'tree_sitter'))])\n"
+        "print([m for m in sys.modules if m.startswith(('moos_lint.frontends.cpp', "
+        "'tree_sitter'))])\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert out.returncode == 0, out.stderr
@@ -318,12 +321,12 @@ def test_a_run_over_missions_alone_loads_no_cpp_module(tree):
 def test_the_server_freezes_its_lifelong_objects_and_still_collects_later_cycles():
     code = (
         "import gc, sys, weakref\n"
-        "from moos_lint.lsp.analysis import settle\n"
+        "from moos_lint.commands.lsp.analysis import settle\n"
         "settle()\n"
         "frozen = gc.get_freeze_count()\n"
         "settle()  # only the first call freezes\n"
         "assert gc.get_freeze_count() == frozen > 10_000, frozen\n"
-        "assert 'moos_lint.rules.unknown_parameter' in sys.modules\n"
+        "assert 'moos_lint.rules.mission.unknown_parameter' in sys.modules\n"
         "class Node:\n    pass\n"
         "a, b = Node(), Node()\n"
         "a.other, b.other = b, a\n"
@@ -339,7 +342,7 @@ def test_the_server_freezes_its_lifelong_objects_and_still_collects_later_cycles
 
 def test_the_server_settles_before_it_takes_requests(monkeypatch):
     pytest.importorskip("pygls")
-    from moos_lint.lsp import server as lsp_server
+    from moos_lint.commands.lsp import server as lsp_server
 
     order: list[str] = []
 
@@ -366,9 +369,10 @@ def test_a_replayed_run_loads_nothing_to_render_its_report(tree, tmp_path):
     code = (
         "import sys\n"
         "before = set(sys.modules)\n"
-        "from moos_lint.cli import main\n"
+        "from moos_lint.commands.cli import main\n"
         f"status = main({base!r})\n"
-        "heavy = ('moos_lint.diagnostics', 'moos_lint.output.text_format', 'moos_lint.engine', "
+        "heavy = ('moos_lint.files.diagnostics', 'moos_lint.commands.output.text_format', "
+        "'moos_lint.core.engine', "
         "'dataclasses', 'shutil')\n"
         "print('LOADED', [m for m in set(sys.modules) - before if m.startswith(heavy)], status)\n"
     )

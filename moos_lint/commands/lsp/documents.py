@@ -1,0 +1,148 @@
+"""The editor's open documents, and which of them depends on which file.
+
+The engine reads every file through a :class:`~moos_lint.frontends.nsplug.FileCache`; the
+reader made here serves an open document's in-memory (unsaved) text and falls
+back to the disk for every other file. Each lint of a document records every
+file it read, so that an edit to an included fragment or a behavior file
+re-lints the open missions that use it.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from urllib.parse import quote, unquote, urlparse
+
+from moos_lint.files.source import ReadProblem, SourceFile, decode, read_source
+
+
+def norm(path: str | Path) -> str:
+    return os.path.normpath(os.path.abspath(path))
+
+
+def uri_to_path(uri: str) -> str | None:
+    """The local file a ``file:`` URI names, or None for any other URI."""
+    try:
+        parts = urlparse(uri)
+    except ValueError:
+        return None
+    if parts.scheme != "file":
+        return None
+    path = unquote(parts.path)
+    if os.name == "nt" and len(path) > 2 and path[0] == "/" and path[2] == ":":
+        path = path[1:]  # pragma: no cover
+    if not path:
+        return None
+    return norm(path)
+
+
+def path_to_uri(path: str) -> str:
+    return "file://" + quote(Path(path).as_posix(), safe="/:")
+
+
+@dataclass(slots=True)
+class Document:
+    uri: str
+    path: str
+    text: str
+    version: int | None = None
+    #: every file the last lint of this document read (itself included)
+    reads: set[str] = field(default_factory=set)
+    #: the files its own nsplug expansion pulled in with ``#include``
+    includes: set[str] = field(default_factory=set)
+
+
+def memory_reader(
+    texts: dict[str, str],
+    seen: set[str] | None = None,
+    disk: Callable[[Path], SourceFile | ReadProblem] = read_source,
+) -> Callable[[Path], SourceFile | ReadProblem]:
+    """A FileCache reader: ``texts`` (path -> editor text) first, then the disk.
+
+    Every path asked for is added to ``seen``. A document whose text equals the
+    file on disk is served from the disk read, which keeps what only the bytes
+    tell (the encoding, a byte-order mark).
+    """
+
+    def read(path: Path) -> SourceFile | ReadProblem:
+        key = norm(path)
+        if seen is not None:
+            seen.add(key)
+        text = texts.get(key)
+        if text is None:
+            return disk(path)
+        on_disk = disk(path)
+        if isinstance(on_disk, SourceFile) and on_disk.text == text:
+            return on_disk
+        return decode(text.encode("utf-8", "surrogatepass"), path)
+
+    return read
+
+
+class DocumentStore:
+    """Open documents by path. Safe to use from the server thread and lint threads."""
+
+    def __init__(self) -> None:
+        self._docs: dict[str, Document] = {}
+        self._lock = threading.Lock()
+
+    def open(self, uri: str, text: str, version: int | None = None) -> Document | None:
+        path = uri_to_path(uri)
+        if path is None:
+            return None
+        with self._lock:
+            doc = self._docs.get(path)
+            if doc is None:
+                doc = Document(uri, path, text, version)
+                self._docs[path] = doc
+            else:
+                doc.uri, doc.text, doc.version = uri, text, version
+            return doc
+
+    def update(self, uri: str, text: str, version: int | None) -> Document | None:
+        return self.open(uri, text, version)
+
+    def close(self, uri: str) -> Document | None:
+        path = uri_to_path(uri)
+        if path is None:
+            return None
+        with self._lock:
+            return self._docs.pop(path, None)
+
+    def get(self, path: str) -> Document | None:
+        with self._lock:
+            return self._docs.get(norm(path))
+
+    def by_uri(self, uri: str) -> Document | None:
+        path = uri_to_path(uri)
+        return self.get(path) if path else None
+
+    def texts(self) -> dict[str, str]:
+        """A snapshot of every open document's text, by path."""
+        with self._lock:
+            return {p: d.text for p, d in self._docs.items()}
+
+    def documents(self) -> list[Document]:
+        with self._lock:
+            return list(self._docs.values())
+
+    def record(self, path: str, reads: set[str], includes: set[str]) -> None:
+        with self._lock:
+            doc = self._docs.get(path)
+            if doc is not None:
+                doc.reads, doc.includes = set(reads), set(includes)
+
+    def dependents(self, path: str) -> list[Document]:
+        """Other open documents whose last lint read ``path``."""
+        key = norm(path)
+        with self._lock:
+            return [d for p, d in self._docs.items() if p != key and key in d.reads]
+
+    def includers(self, path: str) -> list[str]:
+        """Open documents whose own expansion includes ``path``."""
+        key = norm(path)
+        with self._lock:
+            return sorted(p for p, d in self._docs.items() if p != key and key in d.includes)

@@ -1,0 +1,169 @@
+"""Finding the files to lint: mission, fragment, behavior and C++ files under the given paths."""
+
+from __future__ import annotations
+
+import fnmatch
+import functools
+import os
+import re
+from pathlib import Path
+
+from moos_lint.files.gitignore import Frame, Ignorer, ignored
+from moos_lint.files.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES
+
+#: folders and files never linted, whatever the configuration says
+DEFAULT_EXCLUDE = (
+    ".git",
+    ".hg",
+    ".svn",
+    ".moos_lint_cache",
+    "__pycache__",
+    ".venv",
+    "node_modules",
+)
+
+SUFFIXES = MOOS_SUFFIXES + BHV_SUFFIXES
+
+
+def kind_of(path: str) -> str | None:
+    """``moos``, ``bhv``, ``cpp`` or None, from the file name."""
+    low = path.lower()
+    if low.endswith(MOOS_SUFFIXES):
+        return "moos"
+    if low.endswith(BHV_SUFFIXES):
+        return "bhv"
+    if low.endswith(CPP_SUFFIXES):
+        return "cpp"
+    return None
+
+
+class Discovered:
+    """The files to lint (absolute paths, sorted), the paths given that do not exist, the
+    folders whose listing decided the files (walked, or holding a path given), each
+    with its modification time taken *before* it was listed (None: it cannot be
+    stat'ed: a file added while the walk goes on changes its folder's time after
+    that, so a list kept with these times is never taken for the newer listing), and
+    the ignore files (``.gitignore``, ...) that decided, present or not
+    (:mod:`moos_lint.files.gitignore`)."""
+
+    __slots__ = ("files", "folders", "ignore_files", "missing")
+
+    def __init__(
+        self,
+        files: list[str],
+        missing: list[str],
+        folders: dict[str, int | None] | None = None,
+        ignore_files: list[str] | None = None,
+    ) -> None:
+        self.files = files
+        self.missing = missing
+        self.folders = {} if folders is None else folders
+        self.ignore_files = [] if ignore_files is None else ignore_files
+
+
+def _mtime(path: str) -> int | None:
+    try:
+        return os.stat(path).st_mtime_ns
+    except OSError:
+        return None
+
+
+def _excluded(rel: str, name: str, patterns: list[str]) -> bool:
+    """Whether ``name`` or ``rel`` matches a pattern (or ``rel`` lies under one)."""
+    m = _matcher(tuple(patterns))
+    if m is None:
+        return False
+    return bool(m.match(os.path.normcase(name)) or m.match(os.path.normcase(rel)))
+
+
+@functools.lru_cache(maxsize=16)
+def _matcher(patterns: tuple[str, ...]) -> re.Pattern | None:
+    """One regex for the patterns (``pat`` and ``pat/*``), as ``fnmatch`` reads them."""
+    parts = []
+    for pat in patterns:
+        pat = os.path.normcase(pat.rstrip("/"))
+        parts += [fnmatch.translate(pat), fnmatch.translate(pat + "/*")]
+    if not parts:
+        return None
+    return re.compile("|".join(f"(?:{p})" for p in parts))
+
+
+def discover(
+    paths: list[Path], exclude: list[str], root: str, respect_gitignore: bool = True
+) -> Discovered:
+    """Walk ``paths``; directories are searched, files given by name are always taken.
+
+    With ``respect_gitignore``, what git ignores is not linted (see
+    :mod:`moos_lint.files.gitignore`). A file named on the command line is linted even when
+    git ignores it, as ruff does; a folder named there is walked, and what is
+    ignored below it is left out.
+    """
+    patterns = [*DEFAULT_EXCLUDE, *exclude]
+    ignorer = Ignorer(root) if respect_gitignore else None
+    files: set[str] = set()
+    missing: list[str] = []
+    folders: dict[str, int | None] = {}
+    for given in paths:
+        p = os.path.abspath(given)
+        if not os.path.isdir(p):  # a file given by name: its folder tells whether it exists
+            folders.setdefault(os.path.dirname(p), _mtime(os.path.dirname(p)))
+        else:
+            folders.setdefault(p, _mtime(p))  # before os.walk lists it
+        if not os.path.lexists(p):
+            missing.append(str(given))
+            continue
+        if not os.path.isdir(p):
+            files.add(p)
+            continue
+        seen_dirs: set[tuple[int, int]] = set()
+        frames: dict[str, Frame] = {}
+        for dirpath, dirnames, filenames in os.walk(p, followlinks=True):
+            try:
+                st = os.stat(dirpath)
+            except OSError:
+                dirnames[:] = []
+                continue
+            key = (st.st_dev, st.st_ino)
+            if key in seen_dirs:  # a symlink loop
+                dirnames[:] = []
+                continue
+            seen_dirs.add(key)
+            rel_dir = os.path.relpath(dirpath, root)  # normalised: a name joins it as is
+            prefix = "" if rel_dir == "." else rel_dir + os.sep
+            frame = active = None
+            if ignorer is not None:
+                if dirpath == p:
+                    frame = ignorer.start(p)
+                else:
+                    names = {*dirnames, *filenames}
+                    frame = ignorer.enter(frames[os.path.dirname(dirpath)], dirpath, names)
+                active = frame if frame.layers else None
+            keep = []
+            for d in sorted(dirnames):
+                rel = prefix + d
+                if _excluded(rel, d, patterns):
+                    continue
+                if active is not None and ignored(active, os.path.join(dirpath, d), True):
+                    continue
+                if kind_of(d) in ("moos", "bhv"):
+                    # A directory named like a mission file: report it, do not descend.
+                    files.add(os.path.join(dirpath, d))
+                    continue
+                keep.append(d)
+                sub = os.path.join(dirpath, d)
+                folders.setdefault(sub, _mtime(sub))  # before os.walk lists it
+            dirnames[:] = keep
+            if frame is not None and keep:
+                frames[dirpath] = frame
+            for f in filenames:
+                if kind_of(f) is None:
+                    continue
+                rel = prefix + f
+                if _excluded(rel, f, patterns):
+                    continue
+                full = os.path.join(dirpath, f)
+                if active is not None and ignored(active, full, False):
+                    continue
+                files.add(full)
+    inputs = sorted(ignorer.inputs) if ignorer is not None else []
+    return Discovered(sorted(files), missing, folders, inputs)

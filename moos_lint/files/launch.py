@@ -1,0 +1,102 @@
+"""The folders a mission may be launched from.
+
+pAntler, the helm and every MOOS app open relative paths (``behaviors =
+targs/targ_abe.bhv``, ``obstacle_file = ...``) from the folder they were started
+in, not from the mission file's folder. Launch scripts run ``pAntler
+targs/targ_abe.moos`` from the mission folder, so a path inside a generated
+mission is often relative to a parent of the file's folder. The plausible
+launch folders of a mission file are its own folder and its parents up to the
+project root (see :mod:`moos_lint.files.project`): a relative path is missing only
+when none of them holds it.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import re
+
+from moos_lint.files.project import is_within, vcs_top
+
+
+def project_folder(settings, path: str) -> str:
+    """The project root for a file: the config's folder, the checkout's top, or the
+    working folder holding the file (the file's own folder otherwise)."""
+    config = getattr(settings, "config_path", None)
+    if config:
+        return os.path.dirname(os.path.abspath(config))
+    top = vcs_top(path)
+    if top is not None:
+        return top
+    here = os.getcwd()
+    if is_within(path, here):
+        return here
+    return os.path.dirname(os.path.abspath(path))
+
+
+def launch_folders(path: str, root: str) -> list[str]:
+    """The file's folder, then each parent up to ``root`` (when the file lies under it)."""
+    here = os.path.dirname(os.path.abspath(path))
+    out = [here]
+    root = os.path.abspath(root)
+    if not is_within(here, root):
+        return out
+    while here != root:
+        parent = os.path.dirname(here)
+        if parent == here:
+            break
+        here = parent
+        out.append(here)
+    return out
+
+
+def find_relative(name: str, folders: list[str]) -> str | None:
+    """The first ``folder/name`` that exists, or None."""
+    if os.path.isabs(name):
+        return name if os.path.exists(name) else None
+    for folder in folders:
+        candidate = os.path.join(folder, name)
+        if os.path.exists(candidate):
+            return candidate
+    return None
+
+
+_NSPLUG_PATH = re.compile(r"(?:--path=|--path\s+|(?<!\S)-p\s+)([^\s;|&]+)")
+_SCRIPT_BYTES = 256 * 1024
+
+
+@functools.lru_cache(maxsize=256)
+def script_include_paths(folder: str) -> tuple[str, ...]:
+    """The ``--path`` folders the folder's launch scripts hand nsplug.
+
+    Launch scripts (``*.sh`` beside a mission) run ``nsplug meta_x.moos targ_x.moos
+    --path=../shared_plugins`` from their own folder; includes the template cannot
+    find beside itself come from there. The scripts are read as text, never run;
+    a path holding a shell variable is not followed.
+    """
+    out: list[str] = []
+    try:
+        names = sorted(os.listdir(folder))
+    except OSError:
+        return ()
+    for name in names:
+        if not name.endswith(".sh"):
+            continue
+        path = os.path.join(folder, name)
+        try:
+            with open(path, "rb") as fh:
+                text = fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")
+        except OSError:
+            continue
+        for line in text.replace("\\\n", " ").splitlines():
+            code = line.split("#", 1)[0]
+            if "nsplug" not in code:
+                continue
+            for m in _NSPLUG_PATH.finditer(code):
+                for part in m.group(1).strip("\"'").split(":"):
+                    if not part or "$" in part or "`" in part:
+                        continue
+                    where = os.path.normpath(os.path.join(folder, part))
+                    if os.path.isdir(where) and where not in out:
+                        out.append(where)
+    return tuple(out)

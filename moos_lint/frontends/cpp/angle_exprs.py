@@ -1,0 +1,248 @@
+"""Reading value expressions of C++ for angles, headings, depths and positions.
+
+The expressions are the ``expanded`` text of :class:`~moos_lint.frontends.cpp.model.Value`:
+local variables are replaced by what they were assigned, and wraps found on
+the way are written ``__wrap_pi(...)`` / ``__wrap_2pi(...)``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from moos_lint.frontends.cpp.extract import WRAP_2PI, WRAP_PI
+
+PI = r"(?:M_PI|\bPI\b|\bpi\b|3\.14\d*)"
+#: heading-ish identifiers (a word of the name)
+HEADING_WORD = r"\w*(?:heading|Heading|HEADING|hdg|Hdg|HDG)\w*"
+_TERM = r"[A-Za-z_][\w.]*(?:(?:->|\.)\w+)*(?:\(\s*\))?"
+DEG2RAD_CALLS = ("MOOSDeg2Rad", "degToRadians", "deg2rad", "DEG2RAD", "degToRad", "deg_to_rad")
+RAD2DEG_CALLS = (
+    "MOOSRad2Deg",
+    "radToDegrees",
+    "rad2deg",
+    "RAD2DEG",
+    "radToDeg",
+    "rad_to_deg",
+    "radToHeading",
+)
+_DEG2RAD = re.compile(
+    r"(?:" + "|".join(DEG2RAD_CALLS) + r")\s*\(|"
+    r"\*\s*\(?\s*" + PI + r"\s*/\s*180|" + PI + r"\s*/\s*180|/\s*180(?:\.0*)?\s*\*\s*" + PI
+)
+_RAD2DEG = re.compile(
+    r"(?:" + "|".join(RAD2DEG_CALLS) + r")\s*\(|180(?:\.0*)?\s*/\s*" + PI + r"|57\.29"
+)
+_INV_TRIG = re.compile(r"\b(?:std::)?(?:atan2|atan|asin|acos)f?\s*\(")
+_ARITH = re.compile(r"(?<![eE(,=\s])\s*[-+*/]\s*(?!=)|[^\s(,=]\s+[-+*/]\s")
+
+
+def words(name: str) -> list[str]:
+    return [w for w in re.split(r"[^A-Za-z0-9]+", name) if w]
+
+
+def last_word(name: str) -> str:
+    w = words(name)
+    return w[-1].upper() if w else ""
+
+
+def is_yaw_var(name: str) -> bool:
+    return last_word(name) == "YAW"
+
+
+def is_heading_var(name: str) -> bool:
+    return last_word(name) in ("HEADING", "HDG")
+
+
+def is_z_var(name: str) -> bool:
+    return last_word(name) == "Z" and (len(words(name)) > 1 or name == "Z")
+
+
+def is_latlong_var(name: str) -> bool:
+    return last_word(name) in ("LAT", "LON", "LONG", "LATITUDE", "LONGITUDE")
+
+
+def is_other_angle_var(name: str) -> bool:
+    return last_word(name) in ("ROLL", "PITCH")
+
+
+def is_depth_var(name: str) -> bool:
+    return last_word(name) == "DEPTH"
+
+
+_ANGLE_WORDS = {"YAW", "PITCH", "ROLL", "TURN", "HEADING", "HDG"}
+
+
+def is_rate_var(name: str) -> bool:
+    """An angular rate: a gyro axis (``IMU_GYRO_Z``) or an angle's ``RATE`` (``YAW_RATE``)."""
+    ws = [w.upper() for w in words(name)]
+    if any(w in ("GYRO", "GYR") for w in ws):
+        return True
+    return len(ws) > 1 and ws[-1] == "RATE" and ws[-2] in _ANGLE_WORDS
+
+
+def strip_calls(expr: str, names: set[str] | frozenset[str]) -> str:
+    """``expr`` with each call to one of ``names`` (its arguments included) replaced by ``W``."""
+    out = expr
+    for _ in range(20):
+        m = re.search(r"\b(" + "|".join(map(re.escape, sorted(names))) + r")\s*\(", out)
+        if not m:
+            break
+        depth, i = 0, m.end() - 1
+        while i < len(out):
+            if out[i] == "(":
+                depth += 1
+            elif out[i] == ")":
+                depth -= 1
+                if depth == 0:
+                    break
+            i += 1
+        out = out[: m.start()] + "W" + out[i + 1 :]
+    return out
+
+
+def outer_wrap(expr: str) -> str | None:
+    """ "pi" or "2pi" when the whole expression is one wrap call, else None."""
+    e = _strip_outer_parens(expr.strip())
+    for kind, names in (("pi", WRAP_PI), ("2pi", WRAP_2PI)):
+        m = re.match(r"^(?:" + "|".join(map(re.escape, sorted(names))) + r")\s*\(", e)
+        if m and _strip_calls_all(e) == "W":
+            return kind
+    m = re.match(r"^(?:std::)?fmod\s*\((.*),\s*(.*)\)$", e, re.S)
+    if m and _TWO_PI_RE.search(m.group(2)) and _strip_calls_all(e) == "W":
+        return "2pi"
+    return None
+
+
+_TWO_PI_RE = re.compile(r"2(?:\.0*)?\s*\*\s*" + PI + r"|M_2PI|TWO_PI")
+
+
+def _strip_calls_all(expr: str) -> str:
+    return strip_calls(expr, {*WRAP_PI, *WRAP_2PI, "fmod", "std::fmod"})
+
+
+def _strip_outer_parens(e: str) -> str:
+    while e.startswith("(") and e.endswith(")") and _balanced(e[1:-1]):
+        e = e[1:-1].strip()
+    return e
+
+
+def _balanced(s: str) -> bool:
+    d = 0
+    for ch in s:
+        d += ch == "("
+        d -= ch == ")"
+        if d < 0:
+            return False
+    return d == 0
+
+
+def has_arithmetic(expr: str) -> bool:
+    """Binary arithmetic (or a degrees-to-radians call) outside any wrap."""
+    e = _strip_outer_parens(strip_calls(expr, {*WRAP_PI, *WRAP_2PI}).strip())
+    if re.search(r"(?:" + "|".join(DEG2RAD_CALLS) + r")\s*\(", e):
+        return True
+    e = re.sub(r"\w+\s*\([^()]*\)", "F", e)  # other calls are opaque
+    e = re.sub(r"^[\s(]*-", "", e)  # a leading negation keeps ±π
+    e = re.sub(r"(?<=[(,])\s*-", "", e)
+    e = re.sub(r"->", ".", e)
+    e = re.sub(r"\d\.?\d*[eE][-+]\d+", "1", e)
+    return bool(re.search(r"[\w)\]]\s*[-+*/]\s*[\w(.]", e))
+
+
+def converts_to_degrees(expr: str) -> bool:
+    return bool(_RAD2DEG.search(expr))
+
+
+def converts_to_radians(expr: str) -> bool:
+    return bool(_DEG2RAD.search(expr))
+
+
+def looks_radian(expr: str) -> str | None:
+    """Why the value is in radians (a short reason), or None."""
+    if converts_to_degrees(expr):
+        return None
+    if _INV_TRIG.search(expr):
+        return "an inverse trigonometric result (radians)"
+    if converts_to_radians(expr):
+        return "converted to radians"
+    if re.search(r"\bheadingToRadians\s*\(", expr):
+        return "converted to radians"
+    e = _strip_outer_parens(expr.strip())
+    m = re.fullmatch(r"-?\s*(" + _TERM + r")", e)
+    if m and re.search(r"(?:^|[_.>])(?:m_)?(?:yaw|Yaw|YAW)\b|_rad\b|Rad\b|_rads\b", m.group(1)):
+        return f"`{m.group(1)}` holds radians"
+    if re.search(PI, expr) and not re.search(r"\b180\b", expr):
+        return "an expression in π"
+    return None
+
+
+def heading_to_rad_without_minus(expr: str) -> re.Match | None:
+    """A heading turned into radians as ``+heading·π/180`` (no minus sign before it)."""
+    patterns = [
+        r"(?P<h>" + HEADING_WORD + r")\s*\*\s*\(?\s*" + PI + r"\s*/\s*180(?:\.0*)?",
+        r"(?P<h>" + HEADING_WORD + r")\s*/\s*180(?:\.0*)?\s*\*\s*" + PI,
+        r"\(?\s*"
+        + PI
+        + r"\s*/\s*180(?:\.0*)?\s*\)?\s*\*\s*(?P<h>"
+        + HEADING_WORD
+        + r")\b(?!\s*\()",
+        r"(?:" + "|".join(DEG2RAD_CALLS) + r")\s*\(\s*(?P<h>"
+        r"(?:angle180|angle360)?\s*\(?\s*" + HEADING_WORD + r"\s*\)?)\s*\)",
+    ]
+    for pat in patterns:
+        for m in re.finditer(pat, expr):
+            if _negated(expr, m.start(), m.start("h")):
+                continue
+            return m
+    return None
+
+
+def _negated(expr: str, start: int, hstart: int) -> bool:
+    """A minus sign right before the conversion (through parentheses) or before the heading."""
+    inner = expr[start:hstart]
+    if re.search(r"-\s*\(?\s*$", inner):
+        return True
+    i = start - 1
+    while i >= 0 and expr[i] in " (\t":
+        i -= 1
+    if i >= 0 and expr[i] == "-":
+        return True
+    # (-heading) * M_PI / 180
+    j = hstart - 1
+    while j >= 0 and expr[j] in " (\t":
+        j -= 1
+    return j >= 0 and expr[j] == "-"
+
+
+def depth_without_negation(expr: str) -> str | None:
+    """The depth term when the value is a depth as is (``m_depth``, ``rec.getDepth()``)."""
+    e = _strip_outer_parens(expr.strip())
+    m = re.fullmatch(r"\+?\s*(" + _TERM + r")", e)
+    if (
+        m
+        and re.search(r"depth|Depth|DEPTH", m.group(1))
+        and not re.search(
+            r"(?:z|Z)", re.sub(r"depth|Depth|DEPTH", "", m.group(1)).replace("get", "")
+        )
+    ):
+        return m.group(1)
+    return None
+
+
+def heading_term(expr: str) -> str | None:
+    """The value is taken from a heading / hdg / deg name without conversion."""
+    if converts_to_radians(expr) or re.search(PI, expr):
+        return None
+    e = _strip_outer_parens(expr.strip())
+    m = re.fullmatch(r"-?\s*(" + _TERM + r")", e)
+    if m and re.search(r"heading|Heading|HEADING|hdg|Hdg|HDG|_deg\b|Deg\b|degrees", m.group(1)):
+        return m.group(1)
+    m = re.fullmatch(r"(?:angle360|angle180)\s*\((.*)\)", e)
+    if m:
+        return "angle360/angle180 (degrees)"
+    return None
+
+
+def literal_over_two_pi(number: float | None) -> bool:
+    return number is not None and abs(number) > 2 * math.pi + 1e-9

@@ -1,0 +1,216 @@
+"""Building app models: C++ files grouped by folder, parsed once, with their process names."""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections import OrderedDict
+from collections.abc import Iterable
+from typing import Any
+
+from moos_lint.files.source import SourceFile, decode, read_bytes
+from moos_lint.frontends.cpp.cmake import executable_name
+from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile
+from moos_lint.frontends.cpp.prefilter import mentions_moos
+
+
+def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
+    """The C++ files that can be read and mention the MOOS API.
+
+    The prefilter runs on the bytes, before decoding: most C++ files of a
+    repository never mention the MOOS API and are never decoded. (The pattern is
+    ASCII, so bytes and the re-encoded text match alike.)
+    """
+    out: dict[str, SourceFile] = {}
+    for path in paths:
+        data = read_bytes(path)
+        if not isinstance(data, bytes):
+            continue
+        kept = _read_memo.get(path) if PARSE_MEMO_SIZE else None
+        if kept is not None and kept[0] == data:
+            src = kept[1]  # the same bytes as last time: the same verdict and text
+        else:
+            src = None
+            if mentions_moos(data):
+                decoded = decode(data, path)
+                if isinstance(decoded, SourceFile):
+                    src = decoded
+            if PARSE_MEMO_SIZE:
+                _read_memo[path] = (data, src)
+        if src is not None:
+            out[path] = src
+    return out
+
+
+#: the language server's C++ files, by their bytes: a re-lint prefilters and decodes only
+#: the files that changed
+_read_memo: dict[str, tuple[bytes, SourceFile | None]] = {}
+
+
+def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
+    """Parse the files of one folder and extract their facts."""
+    from moos_lint.frontends.cpp.extract import Extractor, ParsedFile, collect_tables
+    from moos_lint.frontends.cpp.parse import backend
+
+    be = backend()
+    parsed = []
+    for path, src in sorted(sources.items()):
+        # a bare CR ends a line for moos-lint (and for the spans), not for tree-sitter
+        text = src.text.replace("\r\n", "\n").replace("\r", "\n")
+        data = text.encode("utf-8", "replace")
+        tree, matches = _parse(be, path, data)
+        parsed.append(ParsedFile(path, data, tree, matches))
+    tables = collect_tables(parsed)
+    from moos_lint.frontends.cpp.values import Evaluator, Folder
+
+    evaluator = Evaluator(Folder(parsed))
+    return [Extractor(pf, tables, evaluator).run() for pf in parsed]
+
+
+#: How many parsed files (tree and query matches, by path and bytes) a process keeps. The
+#: language server turns it on: re-linting one file then reparses only the files that
+#: changed, not every neighbour, and an edited file incrementally from its last tree.
+#: A command-line run parses each file once and keeps none.
+PARSE_MEMO_SIZE = 0
+_parse_memo: OrderedDict[tuple[str, bytes], tuple[Any, Any]] = OrderedDict()
+
+
+#: the last tree of each path (language server): an edited file is parsed incrementally
+_last_tree: OrderedDict[str, tuple[bytes, Any]] = OrderedDict()
+
+
+#: one parse at a time: the language server lints on several threads, and a tree-sitter
+#: parser and the memos above are shared
+_PARSE_LOCK = threading.Lock()
+
+
+def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+    with _PARSE_LOCK:
+        return _parse_locked(be, path, data)
+
+
+def _parse_locked(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+    key = (path, data)
+    hit = _parse_memo.get(key) if PARSE_MEMO_SIZE else None
+    if hit is not None:
+        _parse_memo.move_to_end(key)
+        return hit
+    tree = None
+    if PARSE_MEMO_SIZE and path in _last_tree:
+        old_data, old_tree = _last_tree[path]
+        tree = be.parse(data, edited(old_tree, old_data, data))
+        # Error recovery may shape a broken text differently from a parse of the whole
+        # text; a text without errors parses to the same tree either way.
+        if tree is not None and tree.root_node.has_error:
+            tree = None
+    if tree is None:
+        tree = be.parse(data)
+    hit = (tree, be.matches(tree))
+    if PARSE_MEMO_SIZE:
+        _parse_memo[key] = hit
+        while len(_parse_memo) > PARSE_MEMO_SIZE:
+            _parse_memo.popitem(last=False)
+        _last_tree[path] = (data, tree)
+        _last_tree.move_to_end(path)
+        while len(_last_tree) > PARSE_MEMO_SIZE:
+            _last_tree.popitem(last=False)
+    return hit
+
+
+def _point(data: bytes, pos: int) -> tuple[int, int]:
+    return data.count(b"\n", 0, pos), pos - (data.rfind(b"\n", 0, pos) + 1)
+
+
+def _common(same: Any, limit: int) -> int:
+    """The largest ``k <= limit`` with ``same(k)`` (``same`` holds up to some length)."""
+    lo, hi = 0, limit
+    while lo < hi:
+        mid = (lo + hi + 1) // 2
+        if same(mid):
+            lo = mid
+        else:
+            hi = mid - 1
+    return lo
+
+
+def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
+    """A copy of ``old_tree`` told what changed from ``old`` to ``new`` (one edited range:
+    the text between their common start and common end), for an incremental parse."""
+    limit = min(len(old), len(new))
+    start = _common(lambda k: old[:k] == new[:k], limit)
+    end = _common(lambda k: old[len(old) - k :] == new[len(new) - k :], limit - start)
+    tree = old_tree.copy()
+    tree.edit(
+        start_byte=start,
+        old_end_byte=len(old) - end,
+        new_end_byte=len(new) - end,
+        start_point=_point(old, start),
+        old_end_point=_point(old, len(old) - end),
+        new_end_point=_point(new, len(new) - end),
+    )
+    return tree
+
+
+def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
+    """One :class:`AppModel` per folder of relevant C++ files, linked."""
+    by_folder: dict[str, dict[str, SourceFile]] = {}
+    for path, src in sources.items():
+        by_folder.setdefault(os.path.dirname(path), {})[path] = src
+    apps = [AppModel(folder=f, files=parse_folder(s)) for f, s in sorted(by_folder.items())]
+    link_apps(apps)
+    return apps
+
+
+def link_apps(apps: list[AppModel]) -> None:
+    """Find each folder's app class (base chains may cross folders) and its process name."""
+    bases: dict[str, list[str]] = {}
+    for app in apps:
+        for f in app.files:
+            for c in f.classes:
+                bases.setdefault(c.name, []).extend(c.bases)
+    for app in apps:
+        app.app_class, app.base_chain, app.process_name = None, [], None
+        _find_app_class(app, bases)
+        if app.is_app:
+            _process_name(app)
+
+
+def base_chain(name: str, bases: dict[str, list[str]], seen: frozenset = frozenset()) -> list[str]:
+    """``[name, ..., MOOS base]`` when ``name`` derives from a MOOS app base, else []."""
+    if name in APP_BASES:
+        return [name]
+    if name in seen:
+        return []
+    for b in bases.get(name, ()):
+        chain = base_chain(b, bases, seen | {name})
+        if chain:
+            return [name, *chain]
+    return []
+
+
+def _find_app_class(app: AppModel, bases: dict[str, list[str]]) -> None:
+    classes: list[CppClass] = [c for f in app.files for c in f.classes]
+    candidates = [(c, base_chain(c.name, bases)) for c in classes]
+    candidates = [(c, ch) for c, ch in candidates if len(ch) > 1]
+    if not candidates:
+        return
+    derived_from = {b for c, _ in candidates for b in c.bases}
+    leaves = [(c, ch) for c, ch in candidates if c.name not in derived_from] or candidates
+    app.app_class, app.base_chain = leaves[0]
+
+
+def _process_name(app: AppModel) -> None:
+    for f in app.files:
+        if f.has_main and f.run_names:
+            app.process_name, app.process_name_span = f.run_names[0]
+            app.process_name_source = "run"
+            return
+    found = executable_name(app.folder)
+    if found is not None:
+        app.process_name = found[0]
+        app.process_name_source = "cmake"
+    elif any(f.has_main for f in app.files):
+        app.process_name = os.path.basename(os.path.normpath(app.folder))
+        app.process_name_source = "folder"
+    if app.app_class is not None:
+        app.process_name_span = app.app_class.span

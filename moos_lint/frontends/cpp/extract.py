@@ -1,0 +1,954 @@
+"""From one parsed C++ file to its part of the app model (:class:`CppFile`).
+
+Two passes over the query's matches of every file of a folder: first the
+tables that name resolution needs across the folder (``#define`` strings,
+what each member or constant is assigned), then the facts themselves.
+"""
+
+from __future__ import annotations
+
+import bisect
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+from moos_lint.files.diagnostics import Span
+from moos_lint.frontends.cpp.model import (
+    Assignment,
+    ConfigParam,
+    CppClass,
+    CppFile,
+    IOUse,
+    MailKey,
+    Name,
+    Publication,
+    Subscription,
+    Value,
+)
+from moos_lint.frontends.cpp.names import key_literal, mail_key_of, valued_name
+
+PUBLISH = {"Notify"}
+SUBSCRIBE = {"Register"}
+CONFIG_CALLS = {"GetConfigurationParam", "GetConfigurationParamNoCase", "GetConfiguration"}
+STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
+PREFIX_CALLS = {"strBegins", "find", "compare", "rfind", "starts_with", "MOOSStrCmpN"}
+IO_TYPES = re.compile(
+    r"^(?:CMOOSSerialPort|CMOOSLinuxSerialPort|CMOOSNTSerialPort|SerialPort|QSerialPort|Serial)$"
+)
+#: a MOOS client of another community: a bridge's sockets carry MOOS itself
+MOOS_CLIENT_TYPES = re.compile(r"^(?:CMOOSCommClient|MOOSAsyncCommClient|CMOOSAsyncCommClient)$")
+SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
+DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
+BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
+SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: conversions from degrees that tell what a variable read by mail carries
+FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
+#: every call :meth:`Extractor._call` looks at (the query captures no other)
+#: ``Set`` on a table of published ``CMOOSVariable``s (published by ``PublishFreshMOOSVariables``)
+VARIABLE_SET = {"Set"}
+CALLED = (
+    PUBLISH
+    | SUBSCRIBE
+    | {"Run"}
+    | CONFIG_CALLS
+    | BAUD_CALLS
+    | SOCKET_CALLS
+    | STRCMP
+    | FROM_DEGREES
+    | VARIABLE_SET
+)
+WRAP_PI = {
+    "MOOS_ANGLE_WRAP",
+    "radAngleWrap",
+    "angleWrap",
+    "wrapToPi",
+    "wrap_to_pi",
+    "wrapAngle",
+    "normalizeAngle",
+    "normalize_angle",
+    "angle_wrap",
+    "__wrap_pi",
+}
+WRAP_2PI = {"wrapTo2Pi", "wrap_to_2pi", "__wrap_2pi"}
+_PI = r"(?:M_PI|\bPI\b|3\.14\d*)"
+_TWO_PI = re.compile(r"(?:2(?:\.0*)?\s*\*\s*" + _PI + r"|M_2PI|TWO_PI|2PI|6\.28\d*)")
+_HALF_PI_BOUND = re.compile(r"[<>]=?\s*-?\s*" + _PI + r"(?!\s*/)")
+_ZERO_BOUND = re.compile(r"<\s*0(?:\.0*)?\b")
+_ANGLE_TARGET = re.compile(r"yaw|heading|hdg", re.I)
+_NUMBER = re.compile(r"^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[fFlL]?$")
+
+
+def text(n: Any) -> str:
+    return n.text.decode("utf-8", "replace") if n is not None else ""
+
+
+def callee(fn: Any) -> str:
+    """The called function's own name: ``Notify`` for ``m_Comms.Notify`` or ``CMOOSApp::Notify``."""
+    t = fn.type
+    if t == "identifier":
+        return text(fn)
+    if t == "field_expression":
+        return text(fn.child_by_field_name("field"))
+    if t == "qualified_identifier":
+        return callee(fn.child_by_field_name("name"))
+    if t == "template_function":
+        return text(fn.child_by_field_name("name"))
+    return ""
+
+
+def string_value(n: Any) -> str | None:
+    """The value of a string literal (concatenations included), or None."""
+    if n is None:
+        return None
+    if n.type == "string_literal":
+        parts = []
+        for c in n.named_children:
+            if c.type == "string_content":
+                parts.append(text(c))
+            elif c.type == "escape_sequence":
+                parts.append(_unescape(text(c)))
+            else:
+                return None
+        return "".join(parts)
+    if n.type == "concatenated_string":
+        vals = [string_value(c) for c in n.named_children]
+        return None if any(v is None for v in vals) else "".join(vals)  # type: ignore[arg-type]
+    if n.type == "raw_string_literal":
+        t = text(n)
+        m = re.match(r'R"([^(]*)\((.*)\)\1"$', t, re.S)
+        return m.group(2) if m else None
+    return None
+
+
+def _unescape(esc: str) -> str:
+    return {"\\n": "\n", "\\t": "\t", "\\\\": "\\", '\\"': '"', "\\'": "'"}.get(esc, esc[1:])
+
+
+def strip_parens(n: Any) -> Any:
+    while n is not None and n.type == "parenthesized_expression" and n.named_child_count == 1:
+        n = n.named_children[0]
+    return n
+
+
+def target_name(n: Any) -> str:
+    """``m_x`` for ``m_x``, ``this->m_x``, ``&m_x`` or ``m_x[3]`` declarators and left sides."""
+    n = strip_parens(n)
+    if n is None:
+        return ""
+    if n.type in ("identifier", "field_identifier"):
+        return text(n)
+    if n.type == "field_expression":
+        obj = text(n.child_by_field_name("argument"))
+        if obj == "this":
+            return text(n.child_by_field_name("field"))
+        return text(n)
+    if n.type in ("reference_declarator", "pointer_declarator", "init_declarator"):
+        for c in n.named_children:
+            name = target_name(c)
+            if name:
+                return name
+    if n.type == "qualified_identifier":
+        return text(n.child_by_field_name("name"))
+    return ""
+
+
+def function_name(fn_def: Any) -> str:
+    """``App::OnNewMail`` for a function definition node."""
+    decl = fn_def.child_by_field_name("declarator")
+    while decl is not None and decl.type != "function_declarator":
+        decl = decl.child_by_field_name("declarator")
+    if decl is None:
+        return ""
+    return re.sub(r"\s+", "", text(decl.child_by_field_name("declarator")))
+
+
+def short(fn_name: str) -> str:
+    return fn_name.rsplit("::", 1)[-1]
+
+
+def enclosing(n: Any, types: tuple[str, ...]) -> Any:
+    p = n.parent
+    while p is not None and p.type not in types:
+        p = p.parent
+    return p
+
+
+@dataclass
+class _Asg:
+    target: str
+    op: str
+    rhs: Any
+    node: Any
+    fn: Any  # the function_definition, or None at file scope
+
+
+@dataclass
+class FolderTables:
+    """What name resolution may use across the files of one folder."""
+
+    defines: dict[str, str] = field(default_factory=dict)
+    # member/global/constant name -> its assigned values (None: not a literal)
+    assigns: dict[str, list[str | None]] = field(default_factory=dict)
+    # member -> the configuration key read into it (``GetConfigurationParam("prefix", m_prefix)``)
+    config_keys: dict[str, str] = field(default_factory=dict)
+    # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
+    name_tables: dict[str, list[str]] = field(default_factory=dict)
+
+
+class Spans:
+    """Byte positions to 1-based line and character columns."""
+
+    def __init__(self, path: str, data: bytes):
+        self.path = path
+        self.lines = data.split(b"\n")
+
+    def col(self, row: int, bcol: int) -> int:
+        if row >= len(self.lines):
+            return bcol + 1
+        return len(self.lines[row][:bcol].decode("utf-8", "replace")) + 1
+
+    def of(self, n: Any) -> Span:
+        (r1, c1), (r2, c2) = n.start_point, n.end_point
+        if r2 != r1:  # findings stay on one line: the first
+            line = self.lines[r1] if r1 < len(self.lines) else b""
+            return Span(self.path, r1 + 1, self.col(r1, c1), r1 + 1, self.col(r1, len(line)))
+        return Span(self.path, r1 + 1, self.col(r1, c1), r2 + 1, self.col(r2, c2))
+
+
+class ParsedFile:
+    """One file's tree and its query matches, sorted out by kind."""
+
+    def __init__(self, path: str, data: bytes, tree: Any, matches: list[tuple[int, dict]]):
+        self.path = path
+        self.data = data
+        self.tree = tree
+        self.spans = Spans(path, data)
+        self.calls: list[tuple[Any, Any, Any]] = []
+        self.cmps: list[tuple[Any, Any, Any]] = []
+        self.asgs: list[_Asg] = []
+        self.inits: list[tuple[str, Any]] = []
+        self.defines: list[tuple[str, str]] = []
+        self.strings: list[Any] = []
+        self.includes: list[Any] = []
+        self.types: list[Any] = []
+        self.namespaces: list[Any] = []
+        self.classes: list[tuple[Any, Any]] = []
+        self.functions: list[Any] = []
+        # the enclosing function of a node, by byte range (no walk up the tree)
+        fns = sorted(
+            (caps["fn"][0] for _idx, caps in matches if "fn" in caps), key=lambda n: n.start_byte
+        )
+        self._fn_starts = [f.start_byte for f in fns]
+        self._fns = fns
+        self._fn_names: dict[int, str] = {}
+        for _idx, caps in matches:
+            if "call" in caps:
+                self.calls.append((caps["call"][0], caps["call.fn"][0], caps["call.args"][0]))
+            elif "cmp" in caps:
+                self.cmps.append((caps["cmp"][0], caps["cmp.l"][0], caps["cmp.r"][0]))
+            elif "asg" in caps:
+                node = caps["asg"][0]
+                op = "="
+                if node.type == "assignment_expression":
+                    op = text(node.child_by_field_name("operator")) or "="
+                fn = self.function_of(node)
+                name = target_name(caps["asg.l"][0])
+                if name:
+                    self.asgs.append(_Asg(name, op, caps["asg.r"][0], node, fn))
+            elif "fi" in caps:
+                self.inits.append((text(caps["fi.name"][0]), caps["fi.args"][0]))
+            elif "def.name" in caps:
+                self.defines.append((text(caps["def.name"][0]), text(caps["def.val"][0]).strip()))
+            elif "str" in caps:
+                self.strings.append(caps["str"][0])
+            elif "inc" in caps:
+                self.includes.append(caps["inc"][0])
+            elif "type" in caps:
+                self.types.append(caps["type"][0])
+            elif "ns" in caps:
+                self.namespaces.append(caps["ns"][0])
+            elif "cls" in caps:
+                self.classes.append((caps["cls.name"][0], caps["cls.bases"][0]))
+            elif "fn" in caps:
+                self.functions.append(caps["fn"][0])
+        # assignments per function, in source order, for local data flow
+        self.local: dict[int, dict[str, list[_Asg]]] = {}
+        for a in self.asgs:
+            key = a.fn.id if a.fn is not None else 0
+            self.local.setdefault(key, {}).setdefault(a.target, []).append(a)
+
+    def function_of(self, n: Any) -> Any:
+        """The innermost function definition holding ``n`` (an ancestor: it holds its bytes)."""
+        start, end = n.start_byte, n.end_byte
+        i = bisect.bisect_right(self._fn_starts, start) - 1
+        while i >= 0:
+            f = self._fns[i]
+            if f.end_byte >= end and f.id != n.id:
+                return f
+            i -= 1
+        return None
+
+    def function_name_of(self, n: Any) -> str:
+        """``App::OnNewMail`` for the function holding ``n``, or ``""``."""
+        fn = self.function_of(n)
+        if fn is None:
+            return ""
+        name = self._fn_names.get(fn.id)
+        if name is None:
+            name = self._fn_names[fn.id] = function_name(fn)
+        return name
+
+
+def collect_tables(files: list[ParsedFile]) -> FolderTables:
+    t = FolderTables()
+    for pf in files:
+        for name, define in pf.defines:
+            m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
+            if m:
+                t.defines[name] = m.group(1)
+        declared: dict[tuple, bool] = {}  # (function, target) -> a local of it
+        for a in pf.asgs:
+            # members, globals and constants; locals are followed per function
+            if a.fn is not None:
+                key = (a.fn.id, a.target)
+                local = declared.get(key)
+                if local is None:
+                    local = declared[key] = _declared_in(pf, a)
+                if local:
+                    continue
+            val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
+            if val is None and a.fn is not None:
+                ckey = _config_branch_key(pf, a)
+                if ckey is not None:  # the configuration may change it: the default stands
+                    t.config_keys.setdefault(a.target, ckey)
+                    continue
+            t.assigns.setdefault(a.target, []).append(val)
+        for name, entries in _name_tables(pf):
+            t.name_tables.setdefault(name, entries)
+        for name, args in pf.inits:
+            vals = args.named_children
+            val = string_value(vals[0]) if len(vals) == 1 else None
+            t.assigns.setdefault(name, []).append(val)
+        for _call, fn, args in pf.calls:
+            argv = args.named_children
+            if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
+                ckey = string_value(strip_parens(argv[-2]))
+                member = target_name(argv[-1])
+                if ckey is not None and member:
+                    t.config_keys.setdefault(member, ckey.lower())
+    return t
+
+
+_TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
+
+
+def _name_tables(pf: ParsedFile) -> Iterator[tuple[str, list[str]]]:
+    """Arrays initialised with string literals only (the file is walked only when it has one)."""
+    if not _TABLE_HINT.search(pf.data):
+        return
+    stack = [pf.tree.root_node]
+    while stack:
+        x = stack.pop()
+        if x.type != "init_declarator":
+            stack.extend(x.named_children)
+            continue
+        decl = x.child_by_field_name("declarator")
+        value = x.child_by_field_name("value")
+        while decl is not None and decl.type in ("pointer_declarator", "reference_declarator"):
+            decl = decl.child_by_field_name("declarator")
+        if decl is None or decl.type != "array_declarator" or value is None:
+            continue
+        if value.type != "initializer_list":
+            continue
+        items = [c for c in value.named_children if c.type != "comment"]
+        lits = [string_value(c) for c in items]
+        if items and all(v is not None for v in lits):
+            yield text(decl.child_by_field_name("declarator")), [v for v in lits if v]
+
+
+def _config_branch_key(pf: ParsedFile, a: _Asg) -> str | None:
+    """The configuration key whose branch sets ``a`` (``if (param == "PREFIX") m_prefix = value;``)
+    in a start-up or configuration function, else None."""
+    fname = short(pf.function_name_of(a.node)).lower()
+    if not (fname == "onstartup" or re.search(r"config|param|startup|setparam", fname)):
+        return None
+    p, child = a.node.parent, a.node
+    while p is not None and p.type != "function_definition":
+        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
+            lit = key_literal(p.child_by_field_name("condition"))
+            if lit is not None:
+                return lit.lower()
+        p, child = p.parent, p
+    return None
+
+
+def _declared_in(pf: ParsedFile, a: _Asg) -> bool:
+    """Whether ``a``'s target is a local of its function (declared there)."""
+    cands = pf.local.get(a.fn.id, {}).get(a.target, []) if a.fn is not None else []
+    return any(c.node.type == "init_declarator" for c in cands)
+
+
+class Extractor:
+    """Turns one parsed file into a :class:`CppFile`, given the folder's tables."""
+
+    def __init__(self, pf: ParsedFile, tables: FolderTables, evaluator: Any = None):
+        self.pf = pf
+        self.tables = tables
+        self.out = CppFile(path=pf.path)
+        self.evaluator = evaluator
+
+    # -- names --------------------------------------------------------------
+    def name(self, n: Any, depth: int = 0) -> Name:
+        src = text(n)
+        val, prefix = self._resolve(n, depth)
+        name = Name(source=src, text=val, prefix=prefix if val is None else val)
+        if val is None:
+            name.suffix = self._suffix(strip_parens(n))
+        name.config_key = self._config_key(strip_parens(n))
+        return name
+
+    def _suffix(self, n: Any) -> str:
+        """The known end of a name built at run time (see :attr:`Name.suffix`)."""
+        if n is None:
+            return ""
+        if n.type == "binary_expression" and text(n.child_by_field_name("operator")) == "+":
+            right = strip_parens(n.child_by_field_name("right"))
+            val, _ = self._resolve(right, 1)
+            return val if val is not None else self._suffix(right)
+        if n.type == "call_expression":
+            fn = n.child_by_field_name("function")
+            args = n.child_by_field_name("arguments").named_children
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str") and not args:
+                return self._suffix(strip_parens(fn.child_by_field_name("argument")))
+            # a helper that builds a name from a literal: ``varName("NAV_YAW")``
+            lits = [string_value(strip_parens(a)) for a in args]
+            if len(args) == 1 and lits[0] is not None:
+                return lits[0]
+            return ""
+        if n.type == "subscript_expression":
+            # a table of names indexed by an enumerator: ``m_names[Pitch]``
+            idx = n.child_by_field_name("indices") or n.child_by_field_name("index")
+            inner = [c for c in (idx.named_children if idx is not None else ())]
+            key = strip_parens(inner[0]) if inner else None
+            table = text(n.child_by_field_name("argument"))
+            if (
+                key is not None
+                and key.type in ("identifier", "qualified_identifier")
+                and re.search(r"name|var", table, re.I)
+            ):
+                enum = text(key).split("::")[-1]
+                return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", enum).upper()
+        return ""
+
+    def _table_names(self, n: Any) -> list[Name]:
+        """``names[i]`` (or ``names[i].c_str()``) of a table of literal names: each name the
+        table holds, or the one a literal index picks."""
+        n = strip_parens(n)
+        if n is not None and n.type == "call_expression":
+            fn = n.child_by_field_name("function")
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str"):
+                n = strip_parens(fn.child_by_field_name("argument"))
+        if n is None or n.type != "subscript_expression":
+            return []
+        entries = self.tables.name_tables.get(target_name(n.child_by_field_name("argument")))
+        if not entries:
+            return []
+        idx = n.child_by_field_name("indices") or n.child_by_field_name("index")
+        inner = [c for c in idx.named_children] if idx is not None else []
+        if len(inner) == 1 and inner[0].type == "number_literal":
+            try:
+                entries = [entries[int(text(inner[0]), 0)]]
+            except (ValueError, IndexError):
+                return []
+        src = text(n)
+        return [Name(source=src, text=e, prefix=e) for e in dict.fromkeys(entries)]
+
+    def _config_key(self, n: Any) -> str | None:
+        """The configuration key that sets the member a name is built from."""
+        while n is not None and n.type == "binary_expression":
+            n = strip_parens(n.child_by_field_name("left"))
+        if n is None or n.type not in ("identifier", "field_expression"):
+            return None
+        return self.tables.config_keys.get(target_name(n))
+
+    def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
+        n = strip_parens(n)
+        if n is None or depth > 6:
+            return None, ""
+        lit = string_value(n)
+        if lit is not None:
+            return lit, lit
+        t = n.type
+        if t == "binary_expression" and text(n.child_by_field_name("operator")) == "+":
+            lv, lp = self._resolve(n.child_by_field_name("left"), depth + 1)
+            if lv is None:
+                return None, lp
+            rv, rp = self._resolve(n.child_by_field_name("right"), depth + 1)
+            return (lv + rv if rv is not None else None), lv + rp
+        if t == "call_expression":
+            fn = n.child_by_field_name("function")
+            args = n.child_by_field_name("arguments").named_children
+            if fn.type == "field_expression" and callee(fn) in ("c_str", "str") and not args:
+                return self._resolve(fn.child_by_field_name("argument"), depth + 1)
+            if text(fn) in ("string", "std::string") and len(args) == 1:
+                return self._resolve(args[0], depth + 1)
+            return None, ""
+        if t in ("identifier", "field_expression", "qualified_identifier"):
+            key = target_name(n)
+            if not key:
+                return None, ""
+            local = self._local_before(n, key)
+            if local is not None:
+                if local.op != "=":
+                    return None, ""
+                return self._resolve(local.rhs, depth + 1)
+            if key in self.tables.defines:
+                v = self.tables.defines[key]
+                return v, v
+            vals = self.tables.assigns.get(key)
+            if vals and len(set(vals)) == 1 and vals[0] is not None:
+                return vals[0], vals[0]
+        return None, ""
+
+    def _local_before(self, n: Any, key: str) -> _Asg | None:
+        """The last assignment to ``key`` before ``n`` in n's function (locals only)."""
+        fn = self.pf.function_of(n)
+        if fn is None:
+            return None
+        cands = self.pf.local.get(fn.id, {}).get(key, [])
+        if not any(a.node.type == "init_declarator" for a in cands) and not key.isidentifier():
+            return None
+        if not any(a.node.type == "init_declarator" for a in cands) and self._is_param(fn, key):
+            return None
+        best = None
+        for a in cands:
+            if a.node.start_byte < n.start_byte and not _inside(n, a.node):
+                best = a
+        declared = any(a.node.type == "init_declarator" for a in cands)
+        # an assignment to a member or a parameter: only trust it in straight-line code
+        if best is not None and not declared and enclosing(best.node, ("for_statement",)):
+            return None
+        return best
+
+    def _is_param(self, fn: Any, key: str) -> bool:
+        decl = fn.child_by_field_name("declarator")
+        while decl is not None and decl.type != "function_declarator":
+            decl = decl.child_by_field_name("declarator")
+        if decl is None:
+            return False
+        params = decl.child_by_field_name("parameters")
+        return any(
+            target_name(p.child_by_field_name("declarator")) == key
+            for p in (params.named_children if params else ())
+        )
+
+    # -- values -------------------------------------------------------------
+    def value(self, n: Any) -> Value:
+        raw = text(n)
+        try:
+            expanded = self._expand(n, 0)
+        except RecursionError:  # an expression nested thousands deep: keep it as written
+            expanded = raw
+        number = None
+        s = strip_parens(n)
+        if s is not None and s.type == "number_literal" and _NUMBER.match(text(s)):
+            number = float(re.sub(r"[fFlL]$", "", text(s)))
+        elif (
+            s is not None
+            and s.type == "unary_expression"
+            and _NUMBER.match(text(s).replace(" ", ""))
+        ):
+            number = float(re.sub(r"[fFlL]$", "", text(s).replace(" ", "")))
+        return Value(text=raw, expanded=expanded, span=self.pf.spans.of(n), number=number)
+
+    def _expand(self, n: Any, depth: int, level: int = 0) -> str:
+        """The expression's text with local variables replaced by what they were assigned."""
+        if n is None:
+            return ""
+        if depth > 5 or level > 100:  # deep or huge expressions stay as written
+            return text(n)
+        if n.type == "identifier":
+            key = text(n)
+            a = self._local_before(n, key)
+            if a is None:
+                return key
+            return self._expand_asg(a, depth)
+        if n.type == "field_expression" and text(n.child_by_field_name("argument")) == "this":
+            return text(n.child_by_field_name("field"))
+        if n.child_count == 0:
+            return text(n)
+        parts: list[str] = []
+        prev_end = None
+        for c in n.children:
+            if prev_end is not None and c.start_byte > prev_end:
+                parts.append(" ")
+            if c.type in ("call_expression",) or c.named_child_count or c.type == "identifier":
+                parts.append(self._expand(c, depth, level + 1))
+            else:
+                parts.append(text(c))
+            prev_end = c.end_byte
+        return "".join(parts)
+
+    def _expand_asg(self, a: _Asg, depth: int) -> str:
+        rhs = self._expand(a.rhs, depth + 1)
+        if a.op == "=":
+            inner = rhs if strip_parens(a.rhs).type in _ATOMS else f"({rhs})"
+        else:
+            prev = self._local_before(a.node, a.target)
+            before = self._expand_asg(prev, depth + 1) if prev is not None else a.target
+            inner = f"({before} {a.op[:-1]} {rhs})"
+        wrap = self._loop_wrap(a)
+        if wrap:
+            prev = self._local_before(_top_of(a.node, wrap[1]), a.target)
+            before = self._expand_asg(prev, depth + 1) if prev is not None else a.target
+            return f"{wrap[0]}({before})"
+        return inner
+
+    def _loop_wrap(self, a: _Asg) -> tuple[str, Any] | None:
+        """A ``while (x > M_PI) x -= 2*M_PI;`` style normalisation: the wrap it makes."""
+        if a.op not in ("-=", "+=") or not _TWO_PI.search(text(a.rhs)):
+            return None
+        stmt = enclosing(a.node, ("while_statement", "if_statement", "for_statement"))
+        if stmt is None or a.fn is None:
+            return None
+        # a normalisation sequence: the loops/ifs on this variable side by side
+        block = stmt.parent
+        conds = []
+        for sib in block.named_children if block is not None else ():
+            if sib.type in ("while_statement", "if_statement"):
+                cond = text(sib.child_by_field_name("condition"))
+                if re.search(r"\b" + re.escape(a.target) + r"\b", cond):
+                    conds.append((sib, cond))
+        if not conds:
+            return None
+        last = max(s.end_byte for s, _ in conds)
+        first = min(s.start_byte for s, _ in conds)
+        if not (first <= a.node.start_byte <= last):
+            return None
+        all_cond = " ".join(c for _, c in conds)
+        if _ZERO_BOUND.search(all_cond) and not _HALF_PI_BOUND.search(all_cond):
+            return "__wrap_2pi", first
+        return "__wrap_pi", first
+
+    # -- the facts ----------------------------------------------------------
+    def run(self) -> CppFile:
+        pf, out = self.pf, self.out
+        out.parse_errors = pf.tree.root_node.has_error
+        for name_node, bases in pf.classes:
+            names = []
+            for c in bases.named_children:
+                if c.type in ("type_identifier", "qualified_identifier", "template_type"):
+                    names.append(re.sub(r"<.*", "", text(c)).split("::")[-1])
+            out.classes.append(CppClass(text(name_node), names, pf.spans.of(name_node)))
+        for fn in pf.functions:
+            fname = function_name(fn)
+            if fname == "main":
+                out.has_main = True
+            if short(fname) == "OnNewMail" and "::" in fname:
+                out.has_on_new_mail = True
+            if re.search(r"mail", short(fname), re.I):
+                self._mail_handling(fn)
+        for call, fn, args in pf.calls:
+            self._call(call, fn, args)
+        for cmp, left, right in pf.cmps:
+            self._comparison(cmp, left, right)
+        for a in pf.asgs:
+            if (
+                a.op in ("=", "+=", "-=", "*=", "/=")
+                and a.fn is not None
+                and _ANGLE_TARGET.search(a.target)
+            ):
+                out.assignments.append(
+                    Assignment(
+                        a.target,
+                        self.value(a.rhs),
+                        pf.spans.of(a.node),
+                        function_name(a.fn),
+                    )
+                )
+        for s in pf.strings:  # the literals that mention /dev/
+            v = string_value(s)
+            if v is not None and DEVICE_STRING.match(v):
+                out.io.append(IOUse("device", v, pf.spans.of(s)))
+        for inc in pf.includes:
+            path = text(inc).strip('<>"')
+            kind = _include_io(path)
+            if kind:
+                out.io.append(IOUse(kind, path, pf.spans.of(inc)))
+        for t in pf.types:
+            name = text(t)
+            if IO_TYPES.match(name):
+                out.io.append(IOUse("serial", name, pf.spans.of(t)))
+            elif MOOS_CLIENT_TYPES.match(name):
+                out.io.append(IOUse("moos", name, pf.spans.of(t)))
+            elif name in ("termios",):
+                out.io.append(IOUse("termios", name, pf.spans.of(t)))
+            elif SOCKET_TYPES.search(name):
+                out.io.append(IOUse("socket", name, pf.spans.of(t)))
+        for ns in pf.namespaces:
+            parent = ns.parent
+            full = text(parent) if parent is not None else text(ns)
+            if "serial_port" in full or text(ns) == "serial":
+                out.io.append(IOUse("serial", full, pf.spans.of(ns)))
+            elif "asio" in full:
+                out.io.append(IOUse("network", full, pf.spans.of(ns)))
+        return out
+
+    def _fn_of(self, n: Any) -> str:
+        return self.pf.function_name_of(n)
+
+    def _call(self, call: Any, fn: Any, args: Any) -> None:
+        name = callee(fn)
+        if name in PUBLISH | SUBSCRIBE and in_if0(call):
+            return
+        argv = args.named_children
+        spans = self.pf.spans
+        out = self.out
+        if name in PUBLISH and argv and _is_moos_call(fn):
+            pub_name = self.name(argv[0])
+            names = [pub_name] if pub_name.text is not None else self._table_names(argv[0])
+            names = names or [pub_name]
+            value = self.value(argv[1]) if len(argv) > 1 else None
+            valued = any(valued_name(n.last) for n in names)
+            if value is not None and self.evaluator is not None and valued:
+                value.abstract = self.evaluator.of(self.pf, argv[1])
+            for each in names:
+                out.publications.append(
+                    Publication(
+                        name=each,
+                        value=value,
+                        span=spans.of(call),
+                        name_span=spans.of(argv[0]),
+                        function=self._fn_of(call),
+                    )
+                )
+        elif name in VARIABLE_SET and argv and fn.type == "field_expression":
+            self._variable_set(call, fn, argv)
+        elif name in FROM_DEGREES and argv:
+            var = mail_key_of(call)
+            if var is not None and _reads_mail(argv[0]):
+                out.consumed_degrees.append((var, spans.of(call), name))
+        elif name in SUBSCRIBE and argv and _is_moos_call(fn):
+            out.subscriptions.append(
+                Subscription(
+                    self.name(argv[0]), spans.of(call), spans.of(argv[0]), self._fn_of(call)
+                )
+            )
+        elif name == "Run" and fn.type == "field_expression" and argv:
+            # CMOOSApp::Run(name, mission[, argc, argv]); not CMOOSCommClient::Run(host, port, ...)
+            second = strip_parens(argv[1]) if len(argv) > 1 else None
+            app_run = len(argv) in (2, 4) and second is not None and second.type != "number_literal"
+            if self._fn_of(call) == "main" and app_run:
+                lit = string_value(strip_parens(argv[0]))
+                if lit is not None:
+                    out.run_names.append((lit, spans.of(argv[0])))
+        elif name in CONFIG_CALLS:
+            for a in argv:
+                lit = string_value(strip_parens(a))
+                if lit is not None:
+                    out.config_params.append(ConfigParam(lit.lower(), spans.of(a)))
+                    break
+        elif name in BAUD_CALLS:
+            out.io.append(IOUse("serial", name, spans.of(call)))
+        elif name in SOCKET_CALLS and fn.type == "identifier":
+            out.io.append(IOUse("socket", name, spans.of(call)))
+        elif name in STRCMP and len(argv) >= 2:
+            lit = string_value(strip_parens(argv[1]))
+            if lit is not None:
+                self._compared(
+                    call,
+                    argv[0],
+                    lit,
+                    argv[1],
+                    prefix=name == "strBegins",
+                    suffix=name == "strEnds",
+                )
+
+    def _variable_set(self, call: Any, fn: Any, argv: list[Any]) -> None:
+        """``m_PublishedVars[NAV_YAW]->Set(v, t)`` (or through a local pointer to it): a
+        published ``CMOOSVariable`` named, as far as we know, by its table index."""
+        obj = strip_parens(fn.child_by_field_name("argument"))
+        if obj is not None and obj.type == "identifier":
+            local = self._local_before(call, text(obj))
+            obj = strip_parens(local.rhs) if local is not None and local.op == "=" else None
+        if obj is None or obj.type != "subscript_expression":
+            return
+        if not re.search(r"publish", text(obj.child_by_field_name("argument")), re.I):
+            return
+        suffix = self._suffix(obj)
+        if not suffix or not valued_name(suffix):
+            return
+        value = self.value(argv[0])
+        if self.evaluator is not None:
+            value.abstract = self.evaluator.of(self.pf, argv[0])
+        self.out.publications.append(
+            Publication(
+                name=Name(source=text(obj), suffix=suffix),
+                value=value,
+                span=self.pf.spans.of(call),
+                name_span=self.pf.spans.of(obj),
+                function=self._fn_of(call),
+            )
+        )
+
+    def _comparison(self, cmp: Any, left: Any, right: Any) -> None:
+        lit = string_value(right)
+        if lit is None:
+            return
+        self._compared(cmp, left, lit, right, prefix=False)
+
+    def _compared(
+        self, node: Any, subject: Any, lit: str, lit_node: Any, prefix: bool, suffix: bool = False
+    ) -> None:
+        fname = short(self._fn_of(node))
+        subject_text = text(subject)
+        span = self.pf.spans.of(lit_node)
+        low = fname.lower()
+        if fname == "OnNewMail" or re.search(r"mail", low):
+            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix))
+        elif fname == "OnStartUp" or re.search(r"config|startup|param", low):
+            if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
+                self.out.config_params.append(ConfigParam(lit.lower(), span))
+        elif re.search(r"\bkey\b|GetKey|GetName", subject_text):
+            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix))
+
+    def _mail_handling(self, fn: Any) -> None:
+        """Prefix matches on the key, and whether messages go to code we cannot follow."""
+        body = fn.child_by_field_name("body")
+        if body is None:
+            return
+        stack = [body]
+        while stack:
+            n = stack.pop()
+            if n.type == "call_expression":
+                f = n.child_by_field_name("function")
+                args = n.child_by_field_name("arguments").named_children
+                name = callee(f)
+                if name in PREFIX_CALLS and args:
+                    lit = string_value(strip_parens(args[0]))
+                    if name == "strBegins" and len(args) > 1:
+                        lit = string_value(strip_parens(args[1]))
+                    if lit is not None:
+                        self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n), prefix=True))
+                if (
+                    name not in _TESTS
+                    and name not in _NOT_HANDLERS
+                    and not _in_condition(n)
+                    and not _under_literal_branch(n)
+                    and any(_GENERIC_ARG.match(text(strip_parens(a))) for a in args)
+                ):
+                    self.out.mail_generic = True
+                if name == "IsName" and args:
+                    lit = string_value(strip_parens(args[0]))
+                    if lit is not None:
+                        self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n)))
+            stack.extend(n.named_children)
+
+
+_ATOMS = (
+    "identifier",
+    "field_expression",
+    "call_expression",
+    "number_literal",
+    "qualified_identifier",
+    "subscript_expression",
+)
+_GENERIC_ARG = re.compile(r"^(?:\*?p|\w*[Mm]sg|\w*[Kk]ey|\w*[Mm]ail\w*|message|e|rMsg)$")
+
+
+#: calls in a mail handler that read a message or report, and do not handle it
+_NOT_HANDLERS = {
+    "OnNewMail",
+    "GetKey",
+    "GetString",
+    "GetDouble",
+    "IsDouble",
+    "IsString",
+    "GetTime",
+    "GetSource",
+    "GetCommunity",
+    "GetSourceAux",
+    "IsName",
+    "begin",
+    "end",
+    "push_back",
+    "handleMailAppCastRequest",
+    "reportRunWarning",
+    "reportEvent",
+    "c_str",
+}
+_TESTS = STRCMP | PREFIX_CALLS | {"strEnds", "strContains", "tolower", "toupper", "MOOSToUpper"}
+
+
+def _in_condition(n: Any) -> bool:
+    """Part of an ``if``/``while`` condition (a test of the key, not handling)."""
+    p = n.parent
+    while p is not None and p.type not in ("expression_statement", "compound_statement"):
+        if p.type == "condition_clause":
+            return True
+        p = p.parent
+    return False
+
+
+def in_if0(n: Any) -> bool:
+    """Inside the live branch of ``#if 0`` (code the compiler never sees)."""
+    p, child = n.parent, n
+    while p is not None:
+        if p.type == "preproc_if":
+            cond = p.child_by_field_name("condition")
+            alt = p.child_by_field_name("alternative")
+            if cond is not None and text(cond).strip() == "0" and child != alt:
+                return True
+        p, child = p.parent, p
+    return False
+
+
+def _under_literal_branch(n: Any) -> bool:
+    """Inside an ``if`` whose condition compares with a string literal."""
+    p, child = n.parent, n
+    while p is not None and p.type != "function_definition":
+        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
+            cond = p.child_by_field_name("condition")
+            if cond is not None and '"' in text(cond):
+                return True
+        p, child = p.parent, p
+    return False
+
+
+def _inside(n: Any, outer: Any) -> bool:
+    return outer.start_byte <= n.start_byte and n.end_byte <= outer.end_byte
+
+
+def _top_of(n: Any, start_byte: int) -> Any:
+    """A node at ``start_byte`` to look up what came before a normalisation sequence."""
+    p = n
+    while p.parent is not None and p.parent.start_byte >= start_byte:
+        p = p.parent
+    return p
+
+
+def _reads_mail(arg: Any) -> bool:
+    """The argument is what a message carries (``msg.GetDouble()``, ``dval``)."""
+    t = text(arg)
+    return bool(re.search(r"GetDouble|GetString|dval|dfVal|dValue|atof|stod", t))
+
+
+def _is_moos_call(fn: Any) -> bool:
+    """``Notify(...)``, ``m_Comms.Notify(...)``, ``CMOOSApp::Notify(...)``; not ``cv.notify``."""
+    return fn.type in ("identifier", "field_expression", "qualified_identifier")
+
+
+def _include_io(path: str) -> str:
+    low = path.lower()
+    if low in ("termios.h", "sys/termios.h"):
+        return "termios"
+    if low.startswith("linux/can") or "socketcan" in low:
+        return "can"
+    if "libusb" in low or "hidapi" in low or low.startswith("linux/usb"):
+        return "usb"
+    if "serialport" in low.replace("_", "") or low.endswith("serial.h"):
+        return "serial"
+    if low in ("sys/socket.h", "netinet/in.h", "arpa/inet.h", "winsock2.h"):
+        return "socket"
+    return ""

@@ -1,0 +1,96 @@
+"""What MOOS and MOOS-IvP's own functions and variables mean for units, sense and range.
+
+One table per kind of fact, each entry with its evidence in the MOOS sources, so
+that the value analysis (:mod:`moos_lint.frontends.cpp.values`) and every rule built on it
+read the same facts.
+"""
+
+from __future__ import annotations
+
+import math
+
+#: Conversion helpers: name -> (unit in, unit out, output range in the output unit, sense).
+#: ``None`` for "as the argument" / "unknown". Evidence:
+#: - ``MOOSDeg2Rad`` returns ``dfDeg*PI/180.0``; ``MOOSRad2Deg`` ``dfRad*180.0/PI``
+#:   (core-moos Core/libMOOS/Utils/MOOSUtilityFunctions.cpp).
+#: - ``MOOS_ANGLE_WRAP`` shifts by π, ``fmod(·, 2*PI)`` and shifts back: ±π (same file).
+#: - ``degToRadians`` returns ``(degval/180.0) * M_PI``; ``radToDegrees``
+#:   ``(radval / M_PI) * 180``; ``radAngleWrap`` one shift by 2π into ±π;
+#:   ``angle180`` into (-180, 180]; ``angle360`` into [0, 360);
+#:   ``headingToRadians`` is ``radAngleWrap((90.0-degval)*M_PI/180.0)`` (the math
+#:   frame: counter-clockwise from east); ``radToHeading`` is
+#:   ``angle360(90.0-(radval / M_PI) * 180)``; ``relAng`` a compass bearing in
+#:   [0, 360) (moos-ivp ivp/src/lib_geometry/AngleUtils.cpp).
+HELPERS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str | None]] = {
+    "MOOSDeg2Rad": ("deg", "rad", None, None),
+    "degToRadians": ("deg", "rad", None, None),
+    "MOOSRad2Deg": ("rad", "deg", None, None),
+    "radToDegrees": ("rad", "deg", None, None),
+    "MOOS_ANGLE_WRAP": ("rad", "rad", (-math.pi, math.pi), None),
+    "radAngleWrap": ("rad", "rad", (-math.pi, math.pi), None),
+    "angle180": ("deg", "deg", (-180.0, 180.0), None),
+    "angle360": ("deg", "deg", (0.0, 360.0), None),
+    "headingToRadians": ("deg", "rad", (-math.pi, math.pi), "math"),
+    "radToHeading": ("rad", "deg", (0.0, 360.0), "heading"),
+    "relAng": (None, "deg", (0.0, 360.0), "heading"),
+}
+
+#: Inverse trigonometric functions of <cmath>: radians, in these ranges.
+INVERSE_TRIG: dict[str, tuple[float, float]] = {
+    "atan2": (-math.pi, math.pi),
+    "atan": (-math.pi / 2, math.pi / 2),
+    "asin": (-math.pi / 2, math.pi / 2),
+    "acos": (0.0, math.pi),
+}
+
+#: Units of the MOOS-IvP variables an app reads by mail: name -> (unit, sense, range, sign).
+#: uSimMarine publishes ``NAV_HEADING`` through ``angle360`` and ``NAV_YAW`` as
+#: ``-degToRadians(angle180(heading))``, ``NAV_Z`` as ``-depth``
+#: (moos-ivp ivp/src/dep_uSimMarine/SimEngine.cpp, uSimMarineV23/USM_MOOSApp.cpp); positions are
+#: decimal degrees (lib_geodesy).
+MAIL_UNITS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str | None]] = {
+    "NAV_HEADING": ("deg", "heading", (0.0, 360.0), None),
+    "DESIRED_HEADING": ("deg", "heading", (0.0, 360.0), None),
+    "NAV_YAW": ("rad", "yaw", (-math.pi, math.pi), None),
+    "NAV_PITCH": ("rad", None, (-math.pi, math.pi), None),
+    "NAV_ROLL": ("rad", None, (-math.pi, math.pi), None),
+    "NAV_DEPTH": (None, None, None, "down"),
+    "DESIRED_DEPTH": (None, None, None, "down"),
+    "NAV_Z": (None, None, None, "up"),
+    "NAV_LAT": ("deg", None, None, None),
+    "NAV_LONG": ("deg", None, None, None),
+}
+
+#: NMEA 0183 sentences whose fields an app parses with atof/stod: their angles
+#: (HDT/HDG/HDM headings, RMC/VTG courses, PASHR/PRDID attitude) are degrees by the
+#: standard. A literal naming one marks a file as an NMEA parser.
+NMEA_SENTENCES = (
+    "HDT",
+    "HDG",
+    "HDM",
+    "RMC",
+    "VTG",
+    "GGA",
+    "GLL",
+    "PASHR",
+    "PRDID",
+    "PTNTHPR",
+    "XDR",
+    "ROT",
+    "THS",
+)
+
+#: Calls that turn text into a number.
+TEXT_TO_NUMBER = {"atof", "stod", "strtod", "stof", "strtof", "stold", "strtold"}
+
+#: Degrees to radians and back as plain numbers.
+DEG2RAD = math.pi / 180.0
+RAD2DEG = 180.0 / math.pi
+
+#: Names of π and 2π in C/C++ code (<cmath>, MOOS's ``PI`` and ``TWO_PI``).
+PI_NAMES = {"M_PI": math.pi, "PI": math.pi, "pi": math.pi, "TWO_PI": 2 * math.pi}
+
+#: Any other conversion function named for what it does (``deg2rad``, ``XsMath_rad2deg``,
+#: ``radToDeg``): the name is the evidence.
+DEG2RAD_NAME = r"(?i)^(?:\w*_)?deg(?:rees?)?_?(?:2|to)_?rad(?:ians?)?$"
+RAD2DEG_NAME = r"(?i)^(?:\w*_)?rad(?:ians?)?_?(?:2|to)_?deg(?:rees?)?$"

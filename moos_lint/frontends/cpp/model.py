@@ -1,0 +1,196 @@
+"""The app interface model: what one MOOS app publishes, subscribes to, handles and reads.
+
+An app is the C++ files of one folder. Everything carries a :class:`Span` so
+that rules, and a later join with missions, can point at the code.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from moos_lint.files.diagnostics import Span
+
+#: The MOOS base classes an app derives from.
+APP_BASES = ("CMOOSApp", "AppCastingMOOSApp", "CMOOSInstrument", "AppCastingMOOSInstrument")
+
+
+@dataclass(slots=True)
+class Name:
+    """A MOOS variable name as the code writes it.
+
+    ``text`` is the whole name when it is known statically; otherwise the name
+    is dynamic and ``prefix`` holds what is known of its beginning.
+    """
+
+    source: str  # the expression as written
+    text: str | None = None
+    prefix: str = ""
+    #: what is known of the name's end when the whole is not (``m_prefix + "_PITCH"``,
+    #: ``varName("NAV_YAW")``, a table indexed by ``Yaw``): enough for its last word
+    suffix: str = ""
+    #: the app's configuration key that may change the name (``prefix`` for ``m_prefix``)
+    config_key: str | None = None
+
+    @property
+    def last(self) -> str:
+        """The name as far as rules keyed on its last word need it."""
+        return self.text if self.text is not None else self.suffix
+
+    @property
+    def dynamic(self) -> bool:
+        return self.text is None
+
+    @property
+    def wildcard(self) -> bool:
+        return self.text is not None and ("*" in self.text or "?" in self.text)
+
+
+@dataclass(slots=True)
+class Value:
+    """A value expression: as written, and with the function's local assignments substituted.
+
+    ``expanded`` marks angle wraps found between an assignment and the use as
+    ``__wrap_pi(...)`` (to ±π) or ``__wrap_2pi(...)`` (to [0, 2π)).
+    """
+
+    text: str
+    expanded: str
+    span: Span
+    number: float | None = None  # a numeric constant, when the value is one
+    type: str | None = None  # "double" | "string" | ... (libclang deep mode)
+    #: unit, sense, range and sign (:mod:`moos_lint.frontends.cpp.values`), for published angles,
+    #: headings, positions and depths
+    abstract: Any = None
+
+
+@dataclass(slots=True)
+class Publication:
+    name: Name
+    value: Value | None
+    span: Span  # the call
+    name_span: Span
+    function: str  # the enclosing function, e.g. ``Sim::OnNewMail``
+    active: bool = True  # False when libclang sees the call compiled out
+
+
+@dataclass(slots=True)
+class Subscription:
+    name: Name
+    span: Span
+    name_span: Span
+    function: str
+    active: bool = True
+
+
+@dataclass(slots=True)
+class Assignment:
+    """``target = value`` (also declarations with an initialiser)."""
+
+    target: str
+    value: Value
+    span: Span
+    function: str
+
+
+@dataclass(slots=True)
+class MailKey:
+    """A mail key OnNewMail (or a function it calls) compares against."""
+
+    text: str
+    span: Span
+    prefix: bool = False  # matched as a prefix (``strBegins(key, "X_")``, ``key.find("X_")``)
+    suffix: bool = False  # matched as a suffix (``strEnds(key, "_X")``)
+
+
+@dataclass(slots=True)
+class ConfigParam:
+    text: str
+    span: Span
+
+
+@dataclass(slots=True)
+class IOUse:
+    """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network
+    (``moos``: a client of another MOOS community, the I/O of a bridge)."""
+
+    kind: str
+    detail: str
+    span: Span
+
+    @property
+    def device(self) -> bool:
+        return self.kind in ("serial", "device", "can", "usb")
+
+
+@dataclass(slots=True)
+class CppClass:
+    name: str
+    bases: list[str]
+    span: Span
+
+
+@dataclass(slots=True)
+class CppFile:
+    path: str
+    classes: list[CppClass] = field(default_factory=list)
+    publications: list[Publication] = field(default_factory=list)
+    subscriptions: list[Subscription] = field(default_factory=list)
+    assignments: list[Assignment] = field(default_factory=list)
+    mail_keys: list[MailKey] = field(default_factory=list)
+    config_params: list[ConfigParam] = field(default_factory=list)
+    io: list[IOUse] = field(default_factory=list)
+    #: MOOS variables this file converts from degrees on arrival: (name, span, helper)
+    consumed_degrees: list[tuple[str, Span, str]] = field(default_factory=list)
+    run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
+    has_main: bool = False
+    has_on_new_mail: bool = False
+    #: OnNewMail passes whole messages to code we cannot follow (generic handling)
+    mail_generic: bool = False
+    parse_errors: bool = False
+
+
+@dataclass(slots=True)
+class AppModel:
+    """One folder of C++: a MOOS app when one of its classes derives from a MOOS app base."""
+
+    folder: str
+    files: list[CppFile] = field(default_factory=list)
+    app_class: CppClass | None = None
+    base_chain: list[str] = field(default_factory=list)  # app class first, MOOS base last
+    process_name: str | None = None
+    process_name_source: str = ""  # "run" | "cmake" | "folder"
+    process_name_span: Span | None = None
+    backend: str = "tree-sitter"
+
+    @property
+    def is_app(self) -> bool:
+        return self.app_class is not None
+
+    @property
+    def is_instrument(self) -> bool:
+        return any(b in ("CMOOSInstrument", "AppCastingMOOSInstrument") for b in self.base_chain)
+
+    @property
+    def publications(self) -> list[Publication]:
+        return [p for f in self.files for p in f.publications if p.active]
+
+    @property
+    def subscriptions(self) -> list[Subscription]:
+        return [s for f in self.files for s in f.subscriptions if s.active]
+
+    @property
+    def assignments(self) -> list[Assignment]:
+        return [a for f in self.files for a in f.assignments]
+
+    @property
+    def mail_keys(self) -> list[MailKey]:
+        return [k for f in self.files for k in f.mail_keys]
+
+    @property
+    def config_params(self) -> list[ConfigParam]:
+        return [c for f in self.files for c in f.config_params]
+
+    @property
+    def io(self) -> list[IOUse]:
+        return [u for f in self.files for u in f.io]

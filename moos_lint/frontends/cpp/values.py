@@ -1,0 +1,1481 @@
+"""The value analysis: what unit, sense, range and sign a C++ expression carries.
+
+Each expression of interest (what an app publishes) gets an :class:`AbstractValue`,
+computed over the tree-sitter tree: the conversion helpers of MOOS and MOOS-IvP
+(:mod:`moos_lint.frontends.cpp.facts`), π/180 arithmetic, inverse trigonometry, negation,
+wraps (helpers, ``fmod``, wrap loops and one-sided wrap ``if``s), the units of the
+variables read by mail, NMEA fields, and hints in names and same-line comments.
+Values flow through locals, through the members assigned in any method of the
+folder's classes and through the returns of the folder's functions. A call the
+folder does not define stays *pending* under its name, with what was applied to
+it, and is resolved across the repository when the apps are linked
+(:func:`resolve_pending`). What cannot be known stays unknown: rules report only
+known facts.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+from typing import Any
+
+from moos_lint.frontends.cpp import facts
+from moos_lint.frontends.cpp.names import callee_name, mail_key_of, node_text, strip
+
+Range = tuple[float, float]
+_EPS = 1e-3
+
+
+@dataclass(frozen=True, slots=True)
+class AbstractValue:
+    """What is known of a value. ``None`` fields are unknown."""
+
+    unit: str | None = None  # "deg" | "rad" | "deg/s" | "rad/s"
+    sense: str | None = None  # "heading" (clockwise from north) | "yaw" | "math"
+    range: Range | None = None  # in the value's own unit
+    sign: str | None = None  # "down" (a depth) | "up" (a Z)
+    const: float | None = None
+    scale: float = 1.0  # a numeric factor not yet settled (``x * 180`` before ``/ M_PI``)
+    why: tuple[str, ...] = ()  # the chain of reasons, source first
+    pending: str | None = None  # the function whose return this is, to resolve later
+    ops: tuple[tuple[str, Any], ...] = ()  # applied to the pending value, in order
+    hint: bool = False  # the unit comes from a name or a comment only
+    #: the array an element was read from (``data[0]``), to judge its siblings alike
+    origin: str | None = None
+    #: for a variable passed to a function defined elsewhere (``pending`` is ``name#index``):
+    #: its value before the call, kept when that function turns out not to set it
+    fallback: Any = None
+
+    @property
+    def known(self) -> bool:
+        return self.unit is not None or self.sign is not None or self.sense is not None
+
+    def because(self, step: str) -> AbstractValue:
+        return replace(self, why=(*self.why, step)) if step not in self.why else self
+
+    @property
+    def explanation(self) -> str:
+        """The reasons, source first; of several steps at one place, the last says it all."""
+        steps = [w for w in self.why if w]
+        places = [_place_of(w) for w in steps]
+        steps = [  # "`x` set at L" says less than another step at L (a mail read, a getter)
+            w
+            for w, p in zip(steps, places, strict=True)
+            if not (" set at " in w and places.count(p) > 1)
+        ]
+        kept = [
+            w
+            for i, w in enumerate(steps)
+            if not (_place_of(w) and any(_place_of(x) == _place_of(w) for x in steps[i + 1 :]))
+        ]
+        return "; ".join(kept[-3:])
+
+
+UNKNOWN = AbstractValue()
+_AT = re.compile(r" at (\S+:\d+)\b")
+
+
+def _place_of(step: str) -> str | None:
+    m = _AT.search(step)
+    return m.group(1) if m else None
+
+
+def constant(c: float, why: str = "") -> AbstractValue:
+    return AbstractValue(const=c, range=(c, c), why=(why,) if why else ())
+
+
+def settle(v: AbstractValue, why: str = "") -> AbstractValue:
+    """Apply a pending numeric factor: a degree/radian conversion or a loss of the unit."""
+    s = v.scale
+    if s == 1.0 or v.const is not None:
+        return v
+    v = replace(v, scale=1.0)
+    if s < 0:
+        return neg(settle(replace(v, scale=-s), why))
+    if abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG:
+        return to_deg(v, why)
+    if abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD:
+        return to_rad(v, why)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("scale", s)))
+    rng = (v.range[0] * s, v.range[1] * s) if v.range else None
+    return replace(v, unit=None, range=rng, sense=None, hint=False, why=())
+
+
+def neg(v: AbstractValue) -> AbstractValue:
+    v = settle(v)
+    if v.const is not None:
+        return constant(-v.const)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("neg", None)))
+    flip = {"heading": "yaw", "yaw": "heading"}
+    rng = (-v.range[1], -v.range[0]) if v.range else None
+    sign = {"down": "up", "up": "down"}.get(v.sign) if v.sign else None
+    return replace(v, range=rng, sense=flip.get(v.sense) if v.sense else None, sign=sign)
+
+
+def to_rad(v: AbstractValue, why: str) -> AbstractValue:
+    v = settle(v)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("rad", why)))
+    unit: str | None = "rad/s" if v.unit in ("deg/s", "rad/s") else "rad"
+    if v.unit in ("rad", "rad/s"):
+        unit = None  # converting radians again: nothing certain
+    rng = (v.range[0] * facts.DEG2RAD, v.range[1] * facts.DEG2RAD) if v.range else None
+    out = replace(v, unit=unit, range=rng, const=None, hint=False)
+    return out.because(why) if why else out
+
+
+def to_deg(v: AbstractValue, why: str) -> AbstractValue:
+    v = settle(v)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("deg", why)))
+    unit: str | None = "deg/s" if v.unit in ("rad/s", "deg/s") else "deg"
+    if v.unit in ("deg", "deg/s"):
+        unit = None
+    rng = (v.range[0] * facts.RAD2DEG, v.range[1] * facts.RAD2DEG) if v.range else None
+    out = replace(v, unit=unit, range=rng, const=None, hint=False)
+    return out.because(why) if why else out
+
+
+def wrapped(v: AbstractValue, rng: Range, unit: str | None, why: str) -> AbstractValue:
+    v = settle(v)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("wrap", (rng, unit, why))))
+    out = replace(v, range=rng, const=None, unit=unit or v.unit)
+    return out.because(why) if why else out
+
+
+def shift(v: AbstractValue, c: float) -> AbstractValue:
+    """``v + c`` for a constant ``c``."""
+    v = settle(v)
+    if v.const is not None:
+        return constant(v.const + c)
+    if c == 0:
+        return v
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("shift", c)))
+    rng = (v.range[0] + c, v.range[1] + c) if v.range else None
+    turn = 360.0 if v.unit in ("deg",) else 2 * math.pi
+    sense = v.sense if abs(math.remainder(c, turn)) < _EPS else None
+    return replace(v, range=rng, sense=sense)
+
+
+def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
+    """Either value (branches, several assignments): what both agree on."""
+    if a.const is not None and b.const is None:
+        a, b = b, a
+    if b.const is not None and a.const is None:  # a constant (an initial 0) takes any unit
+        rng = (min(a.range[0], b.const), max(a.range[1], b.const)) if a.range else None
+        return replace(a, range=rng)
+    origin = a.origin if a.origin == b.origin else None
+    if a.pending is not None or b.pending is not None:
+        return a if a == b else replace(UNKNOWN, origin=origin)
+    if a.const is not None and b.const is not None:
+        return (
+            constant(a.const)
+            if a.const == b.const
+            else AbstractValue(range=(min(a.const, b.const), max(a.const, b.const)))
+        )
+    rng = None
+    if a.range and b.range:
+        rng = (min(a.range[0], b.range[0]), max(a.range[1], b.range[1]))
+    return AbstractValue(
+        unit=a.unit if a.unit == b.unit else None,
+        sense=a.sense if a.sense == b.sense else None,
+        range=rng,
+        sign=a.sign if a.sign == b.sign else None,
+        why=a.why if a.unit == b.unit else (),
+        hint=a.hint and b.hint,
+        origin=origin,
+    )
+
+
+def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
+    a, b = settle(a), settle(b)
+    if b.const is not None:
+        return shift(a, -b.const if minus else b.const)
+    if a.const is not None:
+        return shift(neg(b) if minus else b, a.const)
+    if a.pending is not None or b.pending is not None:
+        return UNKNOWN
+    b2 = neg(b) if minus else b
+    if a.unit is None or a.unit != b2.unit:
+        return UNKNOWN
+    rng = (a.range[0] + b2.range[0], a.range[1] + b2.range[1]) if a.range and b2.range else None
+    return AbstractValue(
+        unit=a.unit,
+        sense=a.sense if a.sense == b2.sense else None,
+        range=rng,
+        why=a.why,
+        hint=a.hint or b2.hint,
+    )
+
+
+def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> AbstractValue:
+    """A resolved pending value with what the caller applied to it."""
+    v = base
+    for op, arg in ops:
+        if op == "neg":
+            v = neg(v)
+        elif op == "rad":
+            v = to_rad(v, arg)
+        elif op == "deg":
+            v = to_deg(v, arg)
+        elif op == "wrap":
+            v = wrapped(v, arg[0], arg[1], arg[2])
+        elif op == "shift":
+            v = shift(v, arg)
+        elif op == "scale":
+            v = settle(replace(v, scale=arg))
+    return settle(v)
+
+
+# -- describing values --------------------------------------------------------
+
+
+def range_text(rng: Range | None, unit: str | None) -> str:
+    if rng is None:
+        return "?"
+    lo, hi = rng
+    if unit in ("rad", "rad/s"):
+
+        def f(x: float) -> str:
+            if not math.isfinite(x):
+                return "∞" if x > 0 else "-∞"
+            k = x / math.pi
+            if abs(k) < _EPS:
+                return "0"
+            if abs(k - round(k)) < _EPS:
+                n = round(k)
+                return {1: "π", -1: "-π"}.get(n, f"{n}π")
+            return f"{x:.3g}"
+
+        if abs(lo + hi) < _EPS and abs(hi - math.pi) < _EPS:
+            return "±π"
+        return f"[{f(lo)}, {f(hi)}]"
+    return f"[{lo:g}, {hi:g}]"
+
+
+def within_pi(rng: Range | None) -> bool | None:
+    if rng is None or not all(map(math.isfinite, rng)):
+        return None if rng is None else False
+    return rng[0] >= -math.pi - _EPS and rng[1] <= math.pi + _EPS
+
+
+def place(path: str, line: int) -> str:
+    """``folder/File.cpp:12``: short enough for a message, long enough to find."""
+    parts = path.replace("\\", "/").split("/")
+    return f"{'/'.join(parts[-2:])}:{line}"
+
+
+# -- hints in names and comments -------------------------------------------------
+
+_RAD_NAME = re.compile(r"(?:^|_)rads?(?:_|$)|[a-z0-9]Rads?(?:[A-Z_]|$)|radian", re.I)
+_RATE_DEG_NAME = re.compile(r"dps|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec", re.I)
+_DEG_NAME = re.compile(r"(?:^|_)deg(?:ree)?s?(?:_|$)|[a-z0-9]Deg(?:ree)?s?(?:[A-Z_]|$)|degree")
+_HEADING_NAME = re.compile(r"heading|hdg|compass", re.I)
+_DEPTH_NAME = re.compile(r"depth", re.I)
+_SIGN_NAME = re.compile(r"polarity|(?:^|_)sign(?:_|$)|Sign$|(?:^|_)dir(?:ection)?(?:_|$)", re.I)
+_COMMENT_UNIT = re.compile(
+    r"//.*?\b(deg(?:rees?)?\s*/\s*s(?:ec)?|rad(?:ians?)?\s*/\s*s(?:ec)?|"
+    r"deg(?:rees?)?|rad(?:ians?)?)\b|//.*?(°)",
+    re.I,
+)
+
+
+def name_hint(name: str) -> AbstractValue:
+    """What an identifier's name says of its unit (``m_heading``, ``pitch_rad``)."""
+    base = name.rsplit(".", 1)[-1].rsplit(">", 1)[-1]
+    base = re.sub(r"^m_?(?=[A-Za-z])", "", base) if base.startswith("m_") else base
+    why = f"`{name}` says so by its name"
+    if _RAD_NAME.search(base):
+        return AbstractValue(unit="rad", hint=True, why=(why,))
+    if _RATE_DEG_NAME.search(base):
+        return AbstractValue(unit="deg/s", hint=True, why=(why,))
+    if _HEADING_NAME.search(base) and not re.search(r"yaw", base, re.I):
+        return AbstractValue(unit="deg", sense="heading", hint=True, why=(why,))
+    if _DEG_NAME.search(base):
+        return AbstractValue(unit="deg", hint=True, why=(why,))
+    if re.search(r"ned|down", name, re.I) and re.search(
+        r"(?:^|[._>])(?:m_)?(?:pos_?)?(?:z|down|d)$", name, re.I
+    ):
+        return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z, positive down",))
+    if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
+        return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
+    return UNKNOWN
+
+
+def comment_hint(line: str) -> AbstractValue:
+    m = _COMMENT_UNIT.search(line)
+    if not m:
+        return UNKNOWN
+    word = (m.group(1) or "deg").lower().replace(" ", "")
+    unit = "deg" if word.startswith("deg") or word == "°" else "rad"
+    if "/" in word:
+        unit += "/s"
+    return AbstractValue(
+        unit=unit, hint=True, why=(f"the comment says `{m.group(0)[2:].strip()}`",)
+    )
+
+
+#: calls whose first string argument formats the ones after it
+_FORMAT_CALLS = {
+    "printf",
+    "fprintf",
+    "sprintf",
+    "snprintf",
+    "MOOSTrace",
+    "MOOSFormat",
+    "reportEvent",
+    "reportRunWarning",
+    "format",
+}
+_CONVERSION = re.compile(r"%[-+ #0]*(?:\d+|\*)?(?:\.(?:\d+|\*))?(?:hh|h|ll|l|L|z|j|t)?([a-zA-Z%])")
+_UNIT_WORD = r"(deg(?:rees?)?(?:\s*/\s*s(?:ec)?)?|rad(?:ians?)?(?:\s*/\s*s(?:ec)?)?|°)"
+#: a label before the value: ``Yaw (deg):``, ``pitch [rad] =``, ``roll in degrees:``
+_UNIT_BEFORE = re.compile(
+    rf"(?:[(\[]\s*{_UNIT_WORD}\s*[)\]]|\bin\s+{_UNIT_WORD})\s*[:=]?\s*$", re.I
+)
+#: a unit right after the value: ``%f deg``, ``<< " rad"``
+_UNIT_AFTER = re.compile(rf"^\s*{_UNIT_WORD}(?![A-Za-z])", re.I)
+_SEPARATORS = re.compile(r"[,;|\t\n]|\\n|\\t")
+
+
+def unit_label(unit: str) -> str:
+    return {
+        "deg": "degrees",
+        "rad": "radians",
+        "deg/s": "degrees per second",
+        "rad/s": "radians per second",
+    }.get(unit, unit)
+
+
+def _label_unit(before: str, after: str) -> str | None:
+    """The unit that the text around a printed value names."""
+    before = _SEPARATORS.split(before)[-1]
+    after = _SEPARATORS.split(after)[0]
+    m = _UNIT_BEFORE.search(before) or _UNIT_AFTER.search(after)
+    if not m:
+        return None
+    word = next(g for g in m.groups() if g).lower().replace(" ", "")
+    unit = "deg" if word.startswith("deg") or word == "°" else "rad"
+    return unit + "/s" if "/" in word else unit
+
+
+def _string_text(n: Any) -> str | None:
+    if n is None:
+        return None
+    if n.type == "concatenated_string":
+        parts = [_string_text(c) for c in n.named_children]
+        return None if any(p is None for p in parts) else "".join(p for p in parts if p)
+    if n.type != "string_literal":
+        return None
+    return "".join(
+        text(c) for c in n.named_children if c.type in ("string_content", "escape_sequence")
+    )
+
+
+def _print_labels(root: Any) -> Iterator[tuple[str, str, Any]]:
+    """(variable, unit, node) for each variable printed next to a unit label."""
+    stack = [root]
+    while stack:
+        x = stack.pop()
+        stack.extend(x.named_children)
+        if x.type == "call_expression":
+            if callee_name(x.child_by_field_name("function")) not in _FORMAT_CALLS:
+                continue
+            args = x.child_by_field_name("arguments")
+            argv = [a for a in args.named_children if a.type != "comment"] if args else []
+            fmt_at = next((i for i, a in enumerate(argv) if _string_text(a) is not None), None)
+            if fmt_at is None:
+                continue
+            fmt = _string_text(argv[fmt_at]) or ""
+            convs = [m for m in _CONVERSION.finditer(fmt) if m.group(1) != "%"]
+            values = argv[fmt_at + 1 :]
+            for k, m in enumerate(convs):
+                if k >= len(values) or m.group(1) not in "fFeEgG":
+                    continue
+                var = strip(values[k])
+                if var is None or var.type not in ("identifier", "field_expression"):
+                    continue
+                start = convs[k - 1].end() if k else 0
+                end = convs[k + 1].start() if k + 1 < len(convs) else len(fmt)
+                unit = _label_unit(fmt[start : m.start()], fmt[m.end() : end])
+                if unit:
+                    yield _target(var), unit, x
+        elif x.type == "binary_expression" and text(x.child_by_field_name("operator")) == "<<":
+            parent = x.parent
+            if (
+                parent is not None
+                and parent.type == "binary_expression"
+                and text(parent.child_by_field_name("operator")) == "<<"
+            ):
+                continue  # the chain is read from its top
+            chain: list[Any] = []
+            y = x
+            while y.type == "binary_expression" and text(y.child_by_field_name("operator")) == "<<":
+                chain.append(strip(y.child_by_field_name("right")))
+                y = strip(y.child_by_field_name("left"))
+            chain.append(y)
+            chain.reverse()
+            for k, var in enumerate(chain):
+                if var is None or var.type not in ("identifier", "field_expression") or k == 0:
+                    continue
+                before = _string_text(chain[k - 1])
+                after = _string_text(chain[k + 1]) if k + 1 < len(chain) else None
+                unit = _label_unit(before or "", after or "")
+                if unit:
+                    yield _target(var), unit, x
+
+
+# -- the evaluator ------------------------------------------------------------
+
+
+text = node_text
+
+
+_NMEA = re.compile(rb'"\$?(?:[A-Z]{2})?(?:' + "|".join(facts.NMEA_SENTENCES).encode() + rb')[",]')
+_PASS_THROUGH = {
+    "round",
+    "floor",
+    "ceil",
+    "static_cast",
+    "double",
+    "float",
+    "lround",
+    "trunc",
+    "fabs",
+    "abs",
+}
+MAX_DEPTH = 12
+
+
+class Folder:
+    """What evaluation may look up across the files of one folder (or one library file)."""
+
+    def __init__(self, files: list[Any]):
+        self.files = files
+        self.members: dict[str, list[tuple[Any, Any]]] = {}
+        self.functions: dict[str, list[tuple[Any, Any]]] = {}
+        self.defines: dict[str, str] = {}
+        self.nmea: set[str] = set()
+        for pf in files:
+            if _NMEA.search(pf.data):
+                self.nmea.add(pf.path)
+            for name, val in pf.defines:
+                self.defines[name] = val
+            for a in pf.asgs:
+                if a.fn is None or not _declared_local(pf, a):
+                    self.members.setdefault(a.target, []).append((pf, a))
+            for fn in pf.functions:
+                name = _function_short_name(fn)
+                if name:
+                    self.functions.setdefault(name, []).append((pf, fn))
+        self.memo: dict[tuple, Any] = {}  # AbstractValue, or None where a flow is unknown
+        self._calls: dict[str, list[tuple[Any, Any]]] | None = None
+        self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None
+        #: function id -> variable -> the calls passing it (:func:`_calls_passing`)
+        self.passing: dict[int, dict[str, list[tuple[Any, str, int]]]] = {}
+
+    def printed(self) -> dict[tuple[int | None, str], list[tuple[str, str]]]:
+        """(function id for a local or None, variable) -> the units its print labels name."""
+        if self._printed is None:
+            self._printed = {}
+            for pf in self.files:
+                for var, unit, node in _print_labels(pf.tree.root_node):
+                    at = place(pf.path, node.start_point[0] + 1)
+                    why = f"printed as {unit_label(unit)} at {at}"
+                    fn = pf.function_of(node)
+                    local = fn is not None and (
+                        var in pf.local.get(fn.id, {}) or _is_param(fn, var)
+                    )
+                    where = fn.id if local else None
+                    self._printed.setdefault((where, var), []).append((unit, why))
+        return self._printed
+
+    def calls(self, name: str) -> list[tuple[Any, Any]]:
+        """The calls of function ``name`` in the folder (indexed on first use)."""
+        if self._calls is None:
+            self._calls = {}
+            for pf in self.files:
+                stack = [pf.tree.root_node]
+                while stack:
+                    n = stack.pop()
+                    if n.type == "call_expression":
+                        fn = n.child_by_field_name("function")
+                        self._calls.setdefault(callee_name(fn), []).append((pf, n))
+                    stack.extend(n.named_children)
+        return self._calls.get(name, [])
+
+
+def _declared_local(pf: Any, a: Any) -> bool:
+    cands = pf.local.get(a.fn.id, {}).get(a.target, []) if a.fn is not None else []
+    if any(c.node.type == "init_declarator" for c in cands):
+        return True
+    return _is_param(a.fn, a.target)
+
+
+def _function_declarator(fn: Any) -> Any:
+    decl = fn.child_by_field_name("declarator")
+    while decl is not None and decl.type != "function_declarator":
+        decl = decl.child_by_field_name("declarator")
+    return decl
+
+
+def _function_short_name(fn: Any) -> str:
+    decl = _function_declarator(fn)
+    if decl is None:
+        return ""
+    return re.split(r"::", re.sub(r"\s+", "", text(decl.child_by_field_name("declarator"))))[-1]
+
+
+def _is_param(fn: Any, key: str) -> bool:
+    if fn is None:
+        return False
+    decl = _function_declarator(fn)
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    for p in params.named_children if params is not None else ():
+        d = p.child_by_field_name("declarator")
+        while d is not None and d.type not in ("identifier",):
+            nxt = d.child_by_field_name("declarator")
+            if nxt is None:
+                nxt = next((c for c in d.named_children if c.type == "identifier"), None)
+            d = nxt
+        if d is not None and text(d) == key:
+            return True
+    return False
+
+
+def _param_index(fn: Any, key: str) -> int | None:
+    decl = _function_declarator(fn)
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    plist = [
+        p for p in (params.named_children if params is not None else ()) if p.type != "comment"
+    ]
+    for i, p in enumerate(plist):
+        d = p.child_by_field_name("declarator")
+        while d is not None and d.type != "identifier":
+            nxt = d.child_by_field_name("declarator")
+            if nxt is None:
+                nxt = next((c for c in d.named_children if c.type == "identifier"), None)
+            d = nxt
+        if d is not None and text(d) == key:
+            return i
+    return None
+
+
+def _inside(n: Any, outer: Any) -> bool:
+    return outer.start_byte <= n.start_byte and n.end_byte <= outer.end_byte
+
+
+class Evaluator:
+    """Abstract values of expressions of one folder."""
+
+    def __init__(self, folder: Folder):
+        self.folder = folder
+        self._stack: set[tuple] = set()
+
+    def of(self, pf: Any, node: Any, depth: int = 0) -> AbstractValue:
+        try:
+            v = settle(self._eval(pf, node, depth))
+        except RecursionError:
+            return UNKNOWN
+        if v.unit is None and v.const is None and v.pending is None and node is not None:
+            row = node.start_point[0]
+            if row < len(pf.spans.lines):
+                line = pf.spans.lines[row].decode("utf-8", "replace")
+                h = comment_hint(line)
+                if h.known:
+                    return replace(h, range=v.range, sign=v.sign or h.sign)
+            printed = self._printed(pf, strip(node))
+            if printed is not None:
+                return replace(printed, range=v.range, sign=v.sign)
+        return v
+
+    def _printed(self, pf: Any, n: Any) -> AbstractValue | None:
+        """The unit a format string or a stream label gives the variable ``n`` where the app
+        prints it (``printf("Yaw (deg): %f", yaw)``, ``ss << yaw << " deg"``): a hint, used
+        only when nothing else is known of the value."""
+        if n is None or n.type not in ("identifier", "field_expression"):
+            return None
+        key = _target(n)
+        fnode = pf.function_of(n)
+        local = fnode is not None and (key in pf.local.get(fnode.id, {}) or _is_param(fnode, key))
+        labels = self.folder.printed().get((fnode.id if local else None, key))
+        if not labels:
+            return None
+        units = {u for u, _w in labels}
+        if len(units) != 1:
+            return None  # printed with different units: no hint
+        unit, why = labels[0]
+        return AbstractValue(unit=unit, hint=True, why=(why,))
+
+    # -- expressions
+    def _eval(self, pf: Any, n: Any, depth: int) -> AbstractValue:
+        n = strip(n)
+        if n is None or depth > MAX_DEPTH:
+            return UNKNOWN
+        t = n.type
+        if t == "number_literal":
+            try:
+                return constant(float(re.sub(r"[fFlLuU]+$", "", text(n))))
+            except ValueError:
+                return UNKNOWN
+        if t in ("identifier", "field_expression", "qualified_identifier"):
+            return self._name(pf, n, depth)
+        if t == "unary_expression":
+            op = text(n.child_by_field_name("operator"))
+            arg = self._eval(pf, n.child_by_field_name("argument"), depth + 1)
+            if op == "-":
+                return neg(arg)
+            return arg if op == "+" else UNKNOWN
+        if t == "binary_expression":
+            return self._binary(pf, n, depth)
+        if t == "conditional_expression":
+            return join(
+                settle(self._eval(pf, n.child_by_field_name("consequence"), depth + 1)),
+                settle(self._eval(pf, n.child_by_field_name("alternative"), depth + 1)),
+            )
+        if t == "cast_expression":
+            return self._eval(pf, n.child_by_field_name("value"), depth + 1)
+        if t == "call_expression":
+            return self._call(pf, n, depth)
+        if t == "subscript_expression":
+            arr = strip(n.child_by_field_name("argument"))
+            v = self._eval(pf, arr, depth + 1)
+            idx = n.child_by_field_name("indices")
+            key = _target(arr) if arr is not None else ""
+            if (
+                key
+                and idx is not None
+                and all(c.type == "number_literal" for c in idx.named_children)
+            ):
+                fnode = pf.function_of(n)
+                v = replace(v, origin=f"{pf.path}#{fnode.id if fnode else 0}#{key}")
+            return v
+        return UNKNOWN
+
+    def _binary(self, pf: Any, n: Any, depth: int) -> AbstractValue:
+        v = self._arith(pf, n, depth)
+        s = v.scale
+        if v.const is None and (
+            abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG
+            or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
+        ):
+            v = settle(v, f"{_clip(text(n))} at {_at(pf, n)}")
+        return v
+
+    def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
+        op = text(n.child_by_field_name("operator"))
+        left = self._eval(pf, n.child_by_field_name("left"), depth + 1)
+        rnode = strip(n.child_by_field_name("right"))
+        right = self._eval(pf, rnode, depth + 1)
+        if op in ("*", "/") and left.unit is None and rnode is not None:
+            # a raw reading scaled by a factor named in degrees per second (``raw / LSB_PER_DPS``)
+            rname = _target(rnode) if rnode.type != "number_literal" else ""
+            if rname and _RATE_DEG_NAME.search(rname):
+                return AbstractValue(
+                    unit="deg/s",
+                    hint=True,
+                    why=(f"scaled by `{rname}` (degrees per second) at {_at(pf, n)}",),
+                )
+        if op in ("+", "-"):
+            return add(left, right, op == "-")
+        if op == "*":
+            # a sign factor (``m_RollPolarity * roll``) keeps the unit, not the sense
+            lnode = strip(n.child_by_field_name("left"))
+            for factor, other in ((lnode, right), (rnode, left)):
+                fname = _target(factor) if factor is not None else ""
+                if fname and _SIGN_NAME.search(fname) and other.const is None:
+                    o = settle(other)
+                    rng = None
+                    if o.range:
+                        m = max(abs(o.range[0]), abs(o.range[1]))
+                        rng = (-m, m)
+                    return replace(o, sense=None, sign=None, range=rng)
+            if right.const is not None:
+                return _scaled(left, right.const)
+            if left.const is not None:
+                return _scaled(right, left.const)
+            return UNKNOWN  # a product of two quantities: no unit we can name
+        if op == "/":
+            if right.const is not None and right.const != 0:
+                return _scaled(left, 1.0 / right.const)
+            if left.const is not None and right.const is not None:
+                return UNKNOWN
+            return UNKNOWN
+        return UNKNOWN
+
+    def _call(self, pf: Any, n: Any, depth: int) -> AbstractValue:
+        fn = n.child_by_field_name("function")
+        args = [a for a in n.child_by_field_name("arguments").named_children if a.type != "comment"]
+        name = callee_name(fn)
+        bare = re.sub(r"^std::", "", name)
+        at = place(pf.path, n.start_point[0] + 1)
+        if name in facts.HELPERS and args:
+            unit_in, unit_out, rng, sense = facts.HELPERS[name]
+            arg = self._eval(pf, args[0], depth + 1)
+            why = f"{name}() at {at}"
+            if unit_in == "deg" and unit_out == "rad":
+                v = to_rad(arg, why)
+            elif unit_in == "rad" and unit_out == "deg":
+                v = to_deg(arg, why)
+            else:
+                v = settle(arg) if unit_in is not None else AbstractValue()
+                if v.pending is None:
+                    v = replace(v, unit=unit_out, const=None, hint=False).because(why)
+            if rng is not None:
+                v = wrapped(v, rng, unit_out, "")
+            if sense is not None and v.pending is None:
+                v = replace(v, sense=sense if sense != "math" else "math")
+            return v
+        if args and (re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name)):
+            arg = self._eval(pf, args[0], depth + 1)
+            why = f"{name}() at {at}"
+            return to_rad(arg, why) if re.match(facts.DEG2RAD_NAME, name) else to_deg(arg, why)
+        trig = bare[:-1] if bare.endswith("f") and bare[:-1] in facts.INVERSE_TRIG else bare
+        if trig in facts.INVERSE_TRIG:
+            return AbstractValue(
+                unit="rad", range=facts.INVERSE_TRIG[trig], why=(f"{trig}() at {at}",)
+            )
+        if bare in ("fmod", "fmodf", "remainder") and len(args) == 2:
+            x = settle(self._eval(pf, args[0], depth + 1))
+            c = settle(self._eval(pf, args[1], depth + 1)).const
+            if c is None or c <= 0:
+                return replace(x, range=None)
+            rng = (-c / 2, c / 2) if bare == "remainder" else (0.0, c)
+            k = c / math.pi
+            shown = f"{round(k)}π" if abs(k - round(k)) < _EPS and round(k) > 1 else f"{c:g}"
+            return wrapped(x, rng, None, f"{bare}(·, {shown}) at {at}")
+        if name in _PASS_THROUGH and args:
+            return self._eval(pf, args[0], depth + 1)
+        if name in facts.TEXT_TO_NUMBER:
+            if pf.path in self.folder.nmea:
+                return AbstractValue(
+                    unit="deg",
+                    hint=True,
+                    why=(
+                        f"an NMEA field read with {name}() at {at}; NMEA 0183 angles are degrees",
+                    ),
+                )
+            return UNKNOWN
+        if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
+            return self._mail(pf, n)
+        if not name or name in ("c_str", "size", "length", "GetTime", "MOOSTime"):
+            return UNKNOWN
+        own = self.folder.functions.get(name)
+        if own:
+            return self._returns(name, own, depth)
+        return AbstractValue(pending=name, why=(f"{text(n)[:40]} at {at}",))
+
+    def _returns(self, name: str, defs: list[tuple[Any, Any]], depth: int) -> AbstractValue:
+        key = ("fn", name)
+        if key in self.folder.memo:
+            return self.folder.memo[key]
+        if key in self._stack:
+            return UNKNOWN
+        self._stack.add(key)
+        out: AbstractValue | None = None
+        try:
+            for pf, fn in defs:
+                for r in _returns_of(fn):
+                    expr = r.named_children[0] if r.named_children else None
+                    if expr is None:
+                        continue
+                    v = settle(self._eval(pf, expr, depth + 1))
+                    if v.known and v.pending is None:
+                        v = v.because(f"{name}() returns {_clip(text(expr))} at {_at(pf, r)}")
+                    out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(key)
+        out = out or UNKNOWN
+        self.folder.memo[key] = out
+        return out
+
+    def _mail(self, pf: Any, n: Any) -> AbstractValue:
+        var = mail_key_of(n)
+        if var is None:
+            return UNKNOWN
+        fact = facts.MAIL_UNITS.get(var)
+        if fact is None:
+            return UNKNOWN
+        unit, sense, rng, sign = fact
+        return AbstractValue(
+            unit=unit,
+            sense=sense,
+            range=rng,
+            sign=sign,
+            why=(f"{var} read by mail at {place(pf.path, n.start_point[0] + 1)}",),
+        )
+
+    # -- names
+    def _name(self, pf: Any, n: Any, depth: int) -> AbstractValue:
+        key = _target(n)
+        if not key:
+            return UNKNOWN
+        if key in facts.PI_NAMES:
+            return constant(facts.PI_NAMES[key])
+        fnode = pf.function_of(n)
+        if fnode is not None:
+            local = self._local(pf, fnode, n, key, depth)
+            if local is not None:
+                return local
+        v = self._member(key, depth)
+        if not v.known and v.const is None and v.pending is None:
+            d = self.folder.defines.get(key)
+            if d is not None:
+                c = _define_const(d, self.folder.defines)
+                if c is not None:
+                    return constant(c)
+            return name_hint(key)
+        return v
+
+    def _local(self, pf: Any, fnode: Any, use: Any, key: str, depth: int) -> AbstractValue | None:
+        cands = pf.local.get(fnode.id, {}).get(key, [])
+        declared = any(a.node.type == "init_declarator" for a in cands)
+        before = [
+            a for a in cands if a.node.start_byte < use.start_byte and not _inside(use, a.node)
+        ]
+        out = self._out_call(pf, fnode, use, key, before, declared, depth)
+        if out is not None:
+            return out
+        return self._assigned(pf, fnode, use, key, before, declared, depth)
+
+    def _assigned(
+        self, pf: Any, fnode: Any, use: Any, key: str, before: list, declared: bool, depth: int
+    ) -> AbstractValue | None:
+        if not before:
+            if declared:
+                return UNKNOWN
+            if _is_param(fnode, key):
+                return self._param(fnode, key, depth)
+            return None  # a member or a global
+        state: AbstractValue | None = None
+        for a in before:
+            cond = _guard(a.node, fnode)
+            if a.op == "=":
+                v = settle(self._eval(pf, a.rhs, depth + 1))
+                if v.pending is not None and name_hint(key).known:
+                    v = name_hint(key)  # an opaque getter kept in a variable that names its unit
+                if cond is not None and state is not None and not _inside(use, cond):
+                    state = join(state, v)
+                else:
+                    state = v
+                continue
+            base = (
+                state if state is not None else (UNKNOWN if declared else self._member(key, depth))
+            )
+            state = self._compound(pf, a, base, cond, key, depth)
+        return state
+
+    def _out_call(
+        self, pf: Any, fnode: Any, use: Any, key: str, before: list, declared: bool, depth: int
+    ) -> AbstractValue | None:
+        """The value a call sets local ``key`` to through a reference or pointer argument
+        (``getAttitude(roll, pitch, yaw)``, ``read(&yaw)``), when the last such call comes
+        after the last assignment before ``use``; None when no call sets it."""
+        after = before[-1].node.end_byte if before else 0
+        for call, name, index in reversed(_calls_passing(fnode, key, self.folder.passing)):
+            if not (after <= call.start_byte and call.end_byte <= use.start_byte):
+                continue
+            own = self.folder.functions.get(name)
+            at = _at(pf, call)
+            if own:
+                v = self.out_param(name, own, index, depth)
+                if v is None:
+                    continue  # the function does not set this argument
+                v = v.because(f"{name}() sets `{key}` at {at}")
+            elif name in _NOT_SETTERS or not name:
+                continue
+            else:
+                prior = self._assigned(pf, fnode, call, key, before, declared, depth)
+                v = AbstractValue(
+                    pending=f"{name}#{index}",
+                    why=(f"{_clip(text(call))} at {at}",),
+                    fallback=prior if prior is not None else UNKNOWN,
+                )
+            cond = _guard(call, fnode)
+            if cond is not None and not _inside(use, cond) and v.pending is None:
+                prior = self._assigned(pf, fnode, call, key, before, declared, depth)
+                if prior is not None and (prior.known or prior.const is not None):
+                    v = join(prior, v)
+            return v
+        return None
+
+    def _member_set_by_calls(self, key: str, depth: int) -> AbstractValue:
+        """A member never assigned but passed to functions of the folder that set it
+        (``getAttitude(m_roll, m_pitch, m_yaw)`` in one method, published in another)."""
+        mkey = ("member-out", key)
+        if mkey in self.folder.memo:
+            return self.folder.memo[mkey]
+        if mkey in self._stack:
+            return UNKNOWN
+        self._stack.add(mkey)
+        out: AbstractValue | None = None
+        try:
+            for pf in self.folder.files:
+                for fnode in pf.functions:
+                    if key in pf.local.get(fnode.id, {}) or _is_param(fnode, key):
+                        continue  # a local of that name
+                    for call, name, index in _calls_passing(fnode, key, self.folder.passing):
+                        own = self.folder.functions.get(name)
+                        if not own:
+                            continue  # a function we cannot see may or may not set it
+                        v = self.out_param(name, own, index, depth + 1)
+                        if v is None:
+                            continue
+                        v = v.because(f"{name}() sets `{key}` at {_at(pf, call)}")
+                        out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(mkey)
+        out = out or UNKNOWN
+        self.folder.memo[mkey] = out
+        return out
+
+    def out_param(self, name: str, defs: list[tuple[Any, Any]], index: int, depth: int):
+        """What function ``name`` sets its ``index``-th argument to (a non-const reference or
+        pointer parameter), or None when no definition sets it."""
+        key = ("out", name, index)
+        if key in self.folder.memo:
+            return self.folder.memo[key]
+        if key in self._stack:
+            return None
+        self._stack.add(key)
+        out: AbstractValue | None = None
+        try:
+            for pf, fn in defs:
+                found = _out_param(fn, index)
+                if found is None:
+                    continue
+                pname, pointer = found
+                if pointer:
+                    values = [
+                        settle(self._eval(pf, rhs, depth + 1)).because(
+                            f"{name}() sets `*{pname}` to {_clip(text(rhs))} at {_at(pf, rhs)}"
+                        )
+                        for rhs in _pointer_writes(fn, pname)
+                    ]
+                else:
+                    writes = [a for a in pf.local.get(fn.id, {}).get(pname, []) if a.op]
+                    body = fn.child_by_field_name("body")
+                    if not writes or body is None or not body.children:
+                        continue
+                    end = body.children[-1]
+                    v = self._assigned(pf, fn, end, pname, writes, False, depth + 1)
+                    last = writes[-1]
+                    step = f"{name}() sets `{pname}`: {_clip(text(last.node))}"
+                    values = (
+                        [] if v is None else [settle(v).because(f"{step} at {_at(pf, last.node)}")]
+                    )
+                for v in values:
+                    out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(key)
+        self.folder.memo[key] = out
+        return out
+
+    def _param(self, fnode: Any, key: str, depth: int) -> AbstractValue:
+        """A parameter: what the folder's calls of the function pass for it."""
+        name = _function_short_name(fnode)
+        index = _param_index(fnode, key)
+        pkey = ("param", name, index)
+        if index is None or pkey in self._stack or depth > MAX_DEPTH // 2:
+            return name_hint(key)
+        self._stack.add(pkey)
+        out: AbstractValue | None = None
+        try:
+            for cpf, call in self.folder.calls(name):
+                args = [
+                    a
+                    for a in call.child_by_field_name("arguments").named_children
+                    if a.type != "comment"
+                ]
+                if index < len(args):
+                    v = settle(self._eval(cpf, args[index], depth + 1))
+                    if not v.known:
+                        continue  # a call we cannot read says nothing against the others
+                    v = v.because(f"passed to {name}() at {_at(cpf, call)}")
+                    out = v if out is None else join(out, v)
+        finally:
+            self._stack.discard(pkey)
+        if out is None or not (out.known or out.pending or out.const is not None):
+            return name_hint(key)
+        return out
+
+    def _compound(
+        self, pf: Any, a: Any, base: AbstractValue, cond: Any, key: str, depth: int
+    ) -> AbstractValue:
+        rhs = settle(self._eval(pf, a.rhs, depth + 1))
+        op = a.op[:-1]
+        if op in ("+", "-") and rhs.const is not None and cond is not None:
+            step = rhs.const if op == "+" else -rhs.const
+            w = _wrap_step(base, cond, key, step, self, pf, depth)
+            if w is not None:
+                return w
+        if op in ("+", "-"):
+            return add(base, rhs, op == "-")
+        if op in ("*", "/") and rhs.const is not None and rhs.const != 0:
+            return settle(_scaled(base, rhs.const if op == "*" else 1 / rhs.const))
+        return UNKNOWN
+
+    def _member(self, key: str, depth: int) -> AbstractValue:
+        asgs = self.folder.members.get(key)
+        if not asgs:
+            return self._member_set_by_calls(key, depth)
+        mkey = ("member", key)
+        if mkey in self.folder.memo:
+            return self.folder.memo[mkey]
+        if mkey in self._stack:
+            return UNKNOWN
+        self._stack.add(mkey)
+        out: AbstractValue | None = None
+        try:
+            plain = [(pf, a) for pf, a in asgs if a.op == "="]
+            for pf, a in plain:
+                v = settle(self._eval(pf, a.rhs, depth + 1))
+                if v.known and v.pending is None and a.fn is not None:
+                    v = v.because(f"`{key}` set at {place(pf.path, a.node.start_point[0] + 1)}")
+                out = v if out is None else join(out, v)
+            for pf, a in asgs:
+                if a.op == "=" or out is None:
+                    continue
+                cond = _guard(a.node, a.fn) if a.fn is not None else None
+                out = self._compound(pf, a, out, cond, key, depth)
+        finally:
+            self._stack.discard(mkey)
+        out = out or UNKNOWN
+        self.folder.memo[mkey] = out
+        return out
+
+
+def _at(pf: Any, n: Any) -> str:
+    return place(pf.path, n.start_point[0] + 1)
+
+
+def _clip(s: str, n: int = 48) -> str:
+    """An expression for a message: call arguments elided, one line, at most ``n`` characters."""
+    s = " ".join(s.split())
+    for _ in range(8):
+        brief = re.sub(r"(\w)\((?!\.\.\.\))[^()]+\)", r"\1(...)", s)
+        if brief == s:
+            break
+        s = brief
+    return s if len(s) <= n else s[: n - 1] + "…"
+
+
+def _scaled(v: AbstractValue, c: float) -> AbstractValue:
+    if v.const is not None:
+        return constant(v.const * c)
+    return replace(v, scale=v.scale * c)
+
+
+def _target(n: Any) -> str:
+    if n.type in ("identifier",):
+        return text(n)
+    if n.type == "field_expression":
+        obj = n.child_by_field_name("argument")
+        if obj is not None and text(obj) == "this":
+            return text(n.child_by_field_name("field"))
+        return text(n)
+    if n.type == "qualified_identifier":
+        name = n.child_by_field_name("name")
+        return text(name) if name is not None else ""
+    return ""
+
+
+#: calls that read their arguments and never set them
+_NOT_SETTERS = {
+    "Notify",
+    "printf",
+    "fprintf",
+    "sprintf",
+    "snprintf",
+    "MOOSTrace",
+    "reportEvent",
+    "reportRunWarning",
+    "reportConfigWarning",
+    "doubleToString",
+    "doubleToStringX",
+    "intToString",
+    "to_string",
+    "push_back",
+    "emplace_back",
+    "insert",
+    "fabs",
+    "abs",
+    "sqrt",
+    "pow",
+    "sin",
+    "cos",
+    "tan",
+    "isnan",
+    "isfinite",
+    "min",
+    "max",
+}
+
+
+def _calls_passing(fnode: Any, key: str, memo: dict) -> list[tuple[Any, str, int]]:
+    """The calls in ``fnode`` that pass ``key`` (or ``&key``) as an argument, in order:
+    (call, callee, argument index). ``memo`` keeps each function's calls by variable."""
+    calls = memo.get(fnode.id)
+    if calls is None:
+        calls = memo[fnode.id] = _calls_by_argument(fnode)
+    return calls.get(key, [])
+
+
+def _calls_by_argument(fnode: Any) -> dict[str, list[tuple[Any, str, int]]]:
+    found: dict[str, list[tuple[Any, str, int]]] = {}
+    body = fnode.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        if x.type == "call_expression":
+            args = x.child_by_field_name("arguments")
+            argv = [a for a in args.named_children if a.type != "comment"] if args else []
+            for i, a in enumerate(argv):
+                a = strip(a)
+                if a is None:
+                    continue
+                if a.type == "pointer_expression" and text(a).startswith("&"):
+                    a = strip(a.child_by_field_name("argument"))
+                if a is not None and a.type == "identifier":
+                    name = callee_name(x.child_by_field_name("function"))
+                    found.setdefault(text(a), []).append((x, name, i))
+        stack.extend(x.named_children)
+    for calls in found.values():
+        calls.sort(key=lambda c: c[0].start_byte)
+    return found
+
+
+def _out_param(fn: Any, index: int) -> tuple[str, bool] | None:
+    """The ``index``-th parameter of ``fn`` when the function may set it: its name, and
+    whether it is a pointer (else a non-const reference)."""
+    decl = _function_declarator(fn)
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    plist = [
+        p for p in (params.named_children if params is not None else ()) if p.type != "comment"
+    ]
+    if index >= len(plist):
+        return None
+    p = plist[index]
+    d = p.child_by_field_name("declarator")
+    if d is None or d.type not in ("reference_declarator", "pointer_declarator"):
+        return None
+    if any(c.type == "type_qualifier" and text(c) == "const" for c in p.children):
+        return None
+    pointer = d.type == "pointer_declarator"
+    while d is not None and d.type != "identifier":
+        nxt = d.child_by_field_name("declarator")
+        if nxt is None:
+            nxt = next((c for c in d.named_children if c.type == "identifier"), None)
+        d = nxt
+    return (text(d), pointer) if d is not None else None
+
+
+def _pointer_writes(fn: Any, pname: str) -> list[Any]:
+    """Right sides of ``*p = x`` and ``p[0] = x`` in ``fn``."""
+    out = []
+    body = fn.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        if x.type == "assignment_expression" and text(x.child_by_field_name("operator")) == "=":
+            left = strip(x.child_by_field_name("left"))
+            target = None
+            if (
+                left is not None
+                and left.type == "pointer_expression"
+                and text(left).startswith("*")
+            ):
+                target = strip(left.child_by_field_name("argument"))
+            elif left is not None and left.type == "subscript_expression":
+                idx = left.child_by_field_name("indices") or left.child_by_field_name("index")
+                if idx is not None and text(idx).strip("[] ") == "0":
+                    target = strip(left.child_by_field_name("argument"))
+            if target is not None and target.type == "identifier" and text(target) == pname:
+                out.append(x.child_by_field_name("right"))
+        stack.extend(x.named_children)
+    out.sort(key=lambda r: r.start_byte)
+    return out
+
+
+def _returns_of(fn: Any) -> list[Any]:
+    body = fn.child_by_field_name("body")
+    out = []
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type == "return_statement":
+            out.append(x)
+            continue
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        stack.extend(x.named_children)
+    return out
+
+
+def _guard(n: Any, fnode: Any) -> Any:
+    """The ``if``/``while`` statement ``n`` is conditional on (within its function)."""
+    p = n.parent
+    while p is not None and p != fnode:
+        if p.type in ("if_statement", "while_statement", "for_statement", "do_statement"):
+            return p
+        p = p.parent
+    return None
+
+
+def _wrap_step(
+    base: AbstractValue,
+    stmt: Any,
+    key: str,
+    step: float,
+    ev: Evaluator,
+    pf: Any,
+    depth: int,
+) -> AbstractValue | None:
+    """``if (x < b) x += c`` / ``while (x > b) x -= c``: the range after it."""
+    cond = stmt.child_by_field_name("condition")
+    if cond is None:
+        return None
+    c = strip(cond.named_children[0] if cond.type == "condition_clause" else cond)
+    while c is not None and c.type == "parenthesized_expression":
+        c = strip(c)
+    if c is None or c.type != "binary_expression":
+        return None
+    op = text(c.child_by_field_name("operator"))
+    left, right = strip(c.child_by_field_name("left")), strip(c.child_by_field_name("right"))
+    if _target(left) == key:
+        bound = settle(ev._eval(pf, right, depth + 1)).const
+    elif _target(right) == key:
+        bound = settle(ev._eval(pf, left, depth + 1)).const
+        op = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}.get(op, op)
+    else:
+        return None
+    if bound is None or op not in ("<", "<=", ">", ">="):
+        return None
+    loop = stmt.type in ("while_statement", "for_statement", "do_statement")
+    lo, hi = base.range if base.range else (-math.inf, math.inf)
+    if op in ("<", "<=") and step > 0:
+        if lo >= bound:
+            return base
+        new = (
+            (bound, max(hi, bound + step))
+            if loop
+            else (min(lo + step, bound), max(hi, bound + step))
+        )
+        if not loop and not math.isfinite(lo):
+            new = (-math.inf, max(hi, bound + step))
+    elif op in (">", ">=") and step < 0:
+        if hi <= bound:
+            return base
+        new = (
+            (min(lo, bound + step), bound)
+            if loop
+            else (min(lo, bound + step), max(hi + step, bound))
+        )
+        if not loop and not math.isfinite(hi):
+            new = (min(lo, bound + step), math.inf)
+    else:
+        return None
+    why = f"wrapped by `{_clip(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
+    return (
+        replace(base, range=new, const=None).because(why)
+        if base.known
+        else replace(base, range=new, const=None)
+    )
+
+
+def _define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | None:
+    """The number a ``#define`` stands for: a literal, π, or π/180 and 180/π forms."""
+    v = val.strip()
+    while v.startswith("(") and v.endswith(")"):
+        v = v[1:-1].strip()
+    try:
+        return float(re.sub(r"[fFlL]$", "", v))
+    except ValueError:
+        pass
+    if v in facts.PI_NAMES:
+        return facts.PI_NAMES[v]
+    if v in defines and depth < 4:
+        return _define_const(defines[v], defines, depth + 1)
+    m = re.fullmatch(r"\(?\s*([\w.]+)\s*\)?\s*([*/])\s*\(?\s*([\w.]+)\s*\)?", v)
+    if m:
+        a = _define_const(m.group(1), defines, depth + 1)
+        b = _define_const(m.group(3), defines, depth + 1)
+        if a is not None and b is not None:
+            return a * b if m.group(2) == "*" else (a / b if b else None)
+    return None
+
+
+# -- the repository: pending calls and consumers ---------------------------------
+
+
+def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
+    """A pending value with its function's return resolved across the repository."""
+    if v.pending is None:
+        return v
+    base = resolver(v.pending)
+    if "#" in v.pending and (base is None or not base.known):
+        # an argument the function does not set (or one we cannot see): as before the call
+        before = v.fallback if v.fallback is not None else UNKNOWN
+        return apply_ops(resolve_pending(before, resolver), v.ops)
+    if base is None or not base.known:
+        base = name_hint(v.pending)  # a getter defined nowhere in the repository
+    out = apply_ops(base, v.ops)
+    if not out.known:
+        return UNKNOWN
+    steps = v.why[1:] if base.known else tuple(s for _op, s in v.ops if isinstance(s, str) and s)
+    return replace(out, why=(*base.why, *steps))
+
+
+_DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{"
+
+
+class RepositoryResolver:
+    """Resolves a function's return value by its name across the repository's C++ files.
+
+    A file is read and parsed only when a pending value names a function it may define.
+    """
+
+    def __init__(self, paths: list[str], read: Any):
+        self.paths = paths
+        self.read = read
+        self.cache: dict[str, AbstractValue | None] = {}
+        self.data: dict[str, bytes] = {}
+        self.parsed: dict[str, Any] = {}
+
+    def __call__(self, name: str) -> AbstractValue | None:
+        if name in self.cache:
+            return self.cache[name]
+        self.cache[name] = None  # recursion guard
+        fname, _, index = name.partition(
+            "#"
+        )  # ``getAttitude#2``: what it sets its third argument to
+        name = fname
+        pattern = re.compile(_DEF_TEMPLATE % re.escape(name.encode()))
+        out: AbstractValue | None = None
+        for path in self.paths:
+            data = self.data.get(path)
+            if data is None:
+                raw = self.read(path)
+                data = raw if isinstance(raw, bytes) else b""
+                self.data[path] = data
+            if name.encode() not in data or not pattern.search(data):
+                continue
+            pf = self._parse(path, data)
+            if pf is None:
+                continue
+            folder = Folder([pf])
+            defs = folder.functions.get(name)
+            if not defs:
+                continue
+            if index:
+                w = Evaluator(folder).out_param(name, defs, int(index), 0)
+                if w is None:
+                    continue
+                v = w
+            else:
+                v = Evaluator(folder)._returns(name, defs, 0)
+            if v.pending is not None and v.pending != name:
+                v = resolve_pending(v, self)
+            if v.known:
+                out = v if out is None else join(out, v)
+        self.cache[f"{name}#{index}" if index else name] = out
+        return out
+
+    def _parse(self, path: str, data: bytes) -> Any:
+        if path in self.parsed:
+            return self.parsed[path]
+        from moos_lint.frontends.cpp.extract import ParsedFile
+        from moos_lint.frontends.cpp.parse import backend
+
+        be = backend()
+        try:
+            text_ = data.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
+            blob = text_.encode("utf-8")
+            tree = be.parse(blob)
+            pf = ParsedFile(path, blob, tree, be.matches(tree))
+        except Exception:
+            pf = None
+        self.parsed[path] = pf
+        return pf
+
+
+def link_values(apps: list[Any], paths: list[str]) -> None:
+    """Finish the values the apps publish with what only the repository knows.
+
+    Calls to functions defined outside an app's folder are resolved by name across
+    ``paths`` (a file is parsed only when it may define one), and a variable that
+    another app converts from degrees on arrival (``MOOSDeg2Rad(msg.GetDouble())``)
+    is taken to be published in degrees when its producer's value is unknown.
+    """
+    from moos_lint.files.source import read_bytes
+
+    consumers: dict[str, tuple[str, Any, str]] = {}
+    for app in apps:
+        for f in app.files:
+            for var, span, helper in f.consumed_degrees:
+                consumers.setdefault(var, (app.folder, span, helper))
+    resolver: RepositoryResolver | None = None
+    for app in apps:
+        for pub in app.publications:
+            v = pub.value.abstract if pub.value is not None else None
+            if v is None:
+                continue
+            if v.pending is not None:
+                if resolver is None:
+                    resolver = RepositoryResolver(sorted(paths), read_bytes)
+                v = resolve_pending(v, resolver)
+            if v.unit is None and v.const is None and pub.name.text in consumers:
+                folder, span, helper = consumers[pub.name.text]
+                if folder != app.folder:
+                    v = replace(
+                        v,
+                        unit="deg",
+                        why=(
+                            f"{place(span.path, span.line)} converts it with {helper}() on arrival",
+                        ),
+                    )
+            pub.value.abstract = v
+    _siblings(apps)
+
+
+def _siblings(apps: list[Any]) -> None:
+    """Angles read from the same array as one proved in degrees are degrees too.
+
+    A device reports its Euler angles in one unit: when one of ``data[0]``,
+    ``data[1]``, ``data[2]`` is shown to be degrees (a consumer converts it), so are
+    the others published from that array.
+    """
+    from moos_lint.frontends.cpp.angle_exprs import is_heading_var, is_other_angle_var, is_yaw_var
+
+    def angle(name: str) -> bool:
+        return is_yaw_var(name) or is_other_angle_var(name)
+
+    proved: dict[str, tuple[str, AbstractValue]] = {}
+    pubs = [p for a in apps for p in a.publications if p.value is not None and p.value.abstract]
+    for p in pubs:
+        v = p.value.abstract
+        name = p.name.last
+        if v.origin and v.unit == "deg" and not v.hint and (angle(name) or is_heading_var(name)):
+            proved.setdefault(v.origin, (name, v))
+    for p in pubs:
+        v = p.value.abstract
+        if v.origin in proved and v.unit is None and v.const is None and angle(p.name.last):
+            other, ov = proved[v.origin]
+            if other == p.name.last:
+                continue
+            array = v.origin.rsplit("#", 1)[-1]
+            p.value.abstract = replace(
+                v,
+                unit="deg",
+                why=(f"read from the same `{array}[]` as `{other}`", *ov.why[-1:]),
+            )

@@ -1,0 +1,1 @@
+"""The .moos and .bhv readers and the nodes they build."""

@@ -1,0 +1,358 @@
+"""The model the rules look at: mission files, their blocks and launches, behavior files.
+
+Parsers build these objects from preprocessed lines; rules only read them.
+Every node keeps the :class:`~moos_lint.frontends.nsplug.Line` it came from, so any
+finding maps back to the file and line the user edits.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from moos_lint.files.diagnostics import Span
+from moos_lint.frontends.nsplug import Expansion, Line
+
+#: Keys every MOOS app reads from the top of a mission file (CMOOSApp, MOOSDB, pAntler).
+#: the keys MOOS, pAntler and the MOOS apps read at the top of a mission file
+MOOS_GLOBALS = [
+    "ServerHost",
+    "ServerPort",
+    "Community",
+    "MOOSTimeWarp",
+    "LatOrigin",
+    "LongOrigin",
+    "UseMOOSComms",
+    "NoNetwork",
+    "WebServerPort",
+    "ClientTimeout",
+    "WarningLatency",
+    "tcpnodelay",
+    "TERM_REPORTING",
+    "GlobalLogPath",
+    "CircuitName",
+    "MagneticOffset",
+    "ProcessConfig",
+]
+
+GLOBAL_KEYS = {
+    "serverhost": "ServerHost",
+    "serverport": "ServerPort",
+    "community": "Community",
+    "moostimewarp": "MOOSTimeWarp",
+    "latorigin": "LatOrigin",
+    "longorigin": "LongOrigin",
+}
+
+
+def has_macro(text: str) -> bool:
+    """True when ``text`` still holds an unexpanded nsplug macro."""
+    return "$(" in text or "%(" in text
+
+
+@dataclass(slots=True)
+class Param:
+    """A ``key = value`` line. Positions are indices into ``line.text``."""
+
+    key: str
+    value: str
+    line: Line
+    key_start: int
+    value_start: int
+    value_end: int
+    block: Block | None = None
+    _lkey: str | None = field(default=None, init=False, repr=False, compare=False)
+
+    @property
+    def lkey(self) -> str:
+        """The key as MOOS compares it: spaces removed, case folded."""
+        if self._lkey is None:
+            self._lkey = "".join(self.key.split()).lower()
+        return self._lkey
+
+    @property
+    def key_span(self) -> Span:
+        return self.line.span(self.key_start, self.key_start + len(self.key))
+
+    @property
+    def value_span(self) -> Span:
+        return self.line.span(self.value_start, self.value_end)
+
+    @property
+    def span(self) -> Span:
+        return self.line.span(self.key_start, self.value_end)
+
+
+@dataclass(slots=True)
+class TextField:
+    """A field of a block written in protobuf text format (``name: value`` or ``name { }``)."""
+
+    name: str
+    line: Line
+    start: int
+    end: int
+    value: str | None  # the scalar value as written; None for a nested message
+    children: list[TextField] | None  # the nested message's fields
+    extension: bool = False  # ``[package.name]``
+
+    @property
+    def name_span(self) -> Span:
+        width = len(self.name) + (2 if self.extension else 0)
+        return self.line.span(self.start, self.start + width)
+
+
+@dataclass(slots=True)
+class Block:
+    """``ProcessConfig = NAME`` followed by ``{ ... }``."""
+
+    name: str
+    header: Line | None  # None for an orphan ``{ ... }``
+    name_start: int = 0
+    open: Line | None = None
+    close: Line | None = None
+    params: list[Param] = field(default_factory=list)
+    brace_on_header: bool = False
+    #: the block is read with protobuf's text format (goby's MOOS apps): its
+    #: fields are in ``text_fields``, its syntax errors in ``text_errors``
+    text_format: bool = False
+    text_fields: list[TextField] = field(default_factory=list)
+    text_errors: list[tuple[Line, int, int, str]] = field(default_factory=list)
+    _lname: str | None = field(default=None, init=False, repr=False, compare=False)
+    #: what readers work out from the block once (it never changes after parsing)
+    memo: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+
+    @property
+    def lname(self) -> str:
+        if self._lname is None:
+            self._lname = self.name.lower()
+        return self._lname
+
+    @property
+    def name_span(self) -> Span:
+        line = self.header or self.open
+        assert line is not None
+        if self.header is None:
+            return line.span()
+        return line.span(self.name_start, self.name_start + len(self.name))
+
+    def get(self, key: str) -> list[Param]:
+        k = key.lower()
+        return [p for p in self.params if p.lkey == k]
+
+
+@dataclass(slots=True)
+class RunLine:
+    """An Antler ``Run = BINARY @ OPTIONS ~ ALIAS`` line."""
+
+    param: Param
+    binary: str
+    has_at: bool
+    options: dict[str, str]
+    alias: str | None
+    alias_from_params: str | None = None  # ``--alias=`` given through ExtraProcessParams
+
+    @property
+    def name(self) -> str:
+        """The MOOS name the process connects as, and the block it reads."""
+        if self.alias_from_params:
+            return self.alias_from_params
+        if self.alias:
+            return self.alias
+        return self.binary.replace("\\", "/").rsplit("/", 1)[-1]
+
+    def _find(self, text: str, after: int = 0) -> Span:
+        line = self.param.line
+        idx = line.text.find(text, self.param.value_start + after) if text else -1
+        if idx < 0:
+            return self.param.value_span
+        return line.span(idx, idx + len(text))
+
+    @property
+    def binary_span(self) -> Span:
+        return self._find(self.binary.strip())
+
+    @property
+    def name_span(self) -> Span:
+        if self.alias and not self.alias_from_params:
+            tilde = self.param.line.text.find("~", self.param.value_start)
+            return self._find(self.alias, max(0, tilde - self.param.value_start))
+        return self.binary_span
+
+
+@dataclass(slots=True)
+class MoosFile:
+    """A ``.moos`` file (or fragment) after nsplug, as MOOS would read it."""
+
+    path: str
+    expansion: Expansion
+    lines: list[Line] = field(default_factory=list)
+    globals: list[Param] = field(default_factory=list)
+    blocks: list[Block] = field(default_factory=list)
+    orphan_blocks: list[Block] = field(default_factory=list)
+    unclosed_blocks: list[Block] = field(default_factory=list)
+    headers_without_block: list[Line] = field(default_factory=list)
+    stray_closers: list[Line] = field(default_factory=list)
+    malformed: list[Line] = field(default_factory=list)
+    # built on first use, again whenever blocks or Antler lines were added since
+    _by_name: tuple[int, dict[str, list[Block]]] | None = field(
+        default=None, init=False, repr=False, compare=False
+    )
+    _runs: tuple[tuple[int, ...], list[RunLine]] | None = field(
+        default=None, init=False, repr=False, compare=False
+    )
+
+    def blocks_named(self, name: str) -> list[Block]:
+        if self._by_name is None or self._by_name[0] != len(self.blocks):
+            index: dict[str, list[Block]] = {}
+            for b in self.blocks:
+                index.setdefault(b.lname, []).append(b)
+            self._by_name = (len(self.blocks), index)
+        return list(self._by_name[1].get(name.lower(), ()))
+
+    @property
+    def antler_blocks(self) -> list[Block]:
+        return self.blocks_named("ANTLER")
+
+    @property
+    def is_mission(self) -> bool:
+        """A mission launches processes: it has an ANTLER block."""
+        return bool(self.antler_blocks)
+
+    @property
+    def runs(self) -> list[RunLine]:
+        blocks = self.antler_blocks
+        key = (len(self.blocks), *(len(b.params) for b in blocks))
+        if self._runs is None or self._runs[0] != key:
+            self._runs = (key, [run for block in blocks for run in antler_runs(block)])
+        return list(self._runs[1])
+
+    def global_values(self, key: str) -> list[Param]:
+        k = key.lower()
+        return [p for p in self.globals if p.lkey == k]
+
+    @property
+    def all_params(self) -> list[Param]:
+        out = list(self.globals)
+        for b in self.blocks:
+            out.extend(b.params)
+        return out
+
+
+# ------------------------------------------------------------------ Antler
+# How pAntler reads its Run lines: the parsed file derives them on first use.
+def _squeeze(text: str) -> str:
+    return "".join(text.split())
+
+
+def parse_run(param: Param, block: Block) -> RunLine:
+    """Read a Run line the way pAntler's CreateMOOSProcess does."""
+    value = param.value
+    if "@" in value:
+        binary, _, rest = value.partition("@")
+        has_at = True
+    else:
+        binary, rest, has_at = value, "", False
+    opts_text, _, alias_text = rest.partition("~")
+    options: dict[str, str] = {}
+    for item in opts_text.split(","):
+        k, _, v = item.partition("=")
+        if k.strip():
+            options[_squeeze(k).lower()] = _squeeze(v)
+    alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
+    binary = _squeeze(binary)  # pAntler reads lines with every space removed
+    run = RunLine(param, binary, has_at, options, alias)
+    extra = options.get("extraprocessparams")
+    if extra:
+        for p in block.params:
+            if _squeeze(p.key).lower() == extra.lower():
+                for token in p.value.split(","):
+                    token = _squeeze(token)
+                    if token.startswith("--alias="):
+                        run.alias_from_params = token[len("--alias=") :] or None
+    return run
+
+
+def antler_runs(block: Block) -> list[RunLine]:
+    return [parse_run(p, block) for p in block.params if p.lkey == "run"]
+
+
+# --------------------------------------------------------------------- behaviors
+@dataclass(slots=True)
+class BhvParam:
+    key: str
+    value: str
+    line: Line
+    key_start: int
+    value_start: int
+    value_end: int
+
+    @property
+    def lkey(self) -> str:
+        """As the helm compares it: lower case, a leading ``_`` ignored."""
+        return self.key.lower().lstrip("_")
+
+    @property
+    def key_span(self) -> Span:
+        return self.line.span(self.key_start, self.key_start + len(self.key))
+
+    @property
+    def value_span(self) -> Span:
+        return self.line.span(self.value_start, self.value_end)
+
+
+@dataclass(slots=True)
+class Behavior:
+    kind: str
+    header: Line
+    kind_start: int
+    params: list[BhvParam] = field(default_factory=list)
+    closed: bool = False
+
+    @property
+    def kind_span(self) -> Span:
+        return self.header.span(self.kind_start, self.kind_start + len(self.kind))
+
+    def get(self, key: str) -> list[BhvParam]:
+        k = key.lower()
+        return [p for p in self.params if p.lkey == k]
+
+    @property
+    def name(self) -> BhvParam | None:
+        for p in self.params:
+            if p.lkey in ("name", "descriptor"):
+                return p
+        return None
+
+
+@dataclass(slots=True)
+class Initialize:
+    var: str
+    value: str
+    line: Line
+    deferred: bool
+    var_start: int
+
+    @property
+    def var_span(self) -> Span:
+        return self.line.span(self.var_start, self.var_start + len(self.var))
+
+
+@dataclass(slots=True)
+class SetBlock:
+    mode_var: str
+    value: str
+    header: Line
+    conditions: list[tuple[str, Line]] = field(default_factory=list)
+    else_value: str | None = None
+
+
+@dataclass(slots=True)
+class BehaviorFile:
+    path: str
+    expansion: Expansion
+    lines: list[Line] = field(default_factory=list)
+    behaviors: list[Behavior] = field(default_factory=list)
+    initializes: list[Initialize] = field(default_factory=list)
+    sets: list[SetBlock] = field(default_factory=list)
+    #: lines the helm rejects (the whole behavior set then fails), with the reason
+    invalid: list[tuple[Line, str]] = field(default_factory=list)
+    unclosed: list[Line] = field(default_factory=list)

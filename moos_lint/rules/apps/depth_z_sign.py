@@ -1,0 +1,56 @@
+"""A Z variable published from a depth without negation.
+
+## What it does
+Reports `Notify` of a variable whose last word is `Z` (`NAV_Z`, `GPS_Z`) when
+the value is positive down without a minus sign: a depth (`m_depth`,
+`record.getDepth()`, `NAV_DEPTH` read by mail) or the z of a NED frame
+(`m_ned.z`); and of a variable whose last word is `DEPTH` published from
+`NAV_Z` as is. A frame used inside the process is free: only what is
+published counts.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
+
+## Why is this bad?
+In the MOOS frame Z points up: a vehicle 10 m below the surface has
+`NAV_Z = -10` and `NAV_DEPTH = 10`. uSimMarine publishes `NAV_Z` as
+`-depth`; an app publishing the depth as Z puts the vehicle above the water
+for every consumer of NAV_Z.
+
+## Example
+```cpp
+Notify("NAV_Z", m_depth);
+```
+
+## How to fix
+```cpp
+Notify("NAV_Z", -m_depth);
+```
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+
+@rule(
+    code="C005",
+    name="depth-z-sign",
+    severity=Severity.WARNING,
+    scope=Scope.CPP,
+    kinds=(Kind.CPP,),
+)
+def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import depth_z_sign
+
+    yield from cpp_findings(ctx, depth_z_sign)

@@ -1,0 +1,54 @@
+"""Latitude or longitude published from a radian value.
+
+## What it does
+Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
+`LATITUDE` or `LONGITUDE` with a value in radians: converted to radians
+(`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, or a variable
+named `*_rad`, with no conversion back to degrees.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
+
+## Why is this bad?
+MOOS and MOOS-IvP carry positions as decimal degrees (`NAV_LAT`, `NAV_LONG`,
+`LatOrigin`, `LongOrigin`): the geodesy, pMarineViewer and the log tools read
+them that way. A latitude of 0.76 (radians) puts the vehicle off the coast of
+Africa instead of at 43.8° N.
+
+## Example
+```cpp
+Notify("NAV_LAT", MOOSDeg2Rad(lat));
+```
+
+## How to fix
+```cpp
+Notify("NAV_LAT", lat);
+```
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+
+@rule(
+    code="C006",
+    name="latlong-in-radians",
+    severity=Severity.WARNING,
+    scope=Scope.CPP,
+    kinds=(Kind.CPP,),
+)
+def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import latlong_in_radians
+
+    yield from cpp_findings(ctx, latlong_in_radians)

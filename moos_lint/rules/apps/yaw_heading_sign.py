@@ -1,0 +1,63 @@
+"""Yaw computed from heading as `+heading·π/180`, without the minus sign.
+
+## What it does
+Reports a yaw published (`Notify("NAV_YAW", ...)`) from a heading in degrees
+turned into radians as `heading*M_PI/180`, `degToRadians(heading)` or
+`MOOSDeg2Rad(hdg)` with no minus sign, also when the conversion is steps away
+(a member set in one method and published in another). A heading is a value
+read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
+heading.
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
+
+## Why is this bad?
+Heading is measured in degrees clockwise from north; yaw in radians
+counter-clockwise (the MOOS conventions, and what uSimMarine publishes:
+`NAV_YAW = -degToRadians(angle180(heading))`). Without the minus sign a vehicle
+turning right reports yaw turning right too: controllers and loggers reading
+NAV_YAW see the mirror image of the motion.
+
+Headings converted in the math convention (`(90 - heading)·π/180`,
+`headingToRadians`) are not reported: that is a different frame, used on
+purpose (the NODE_REPORT `YAW`).
+
+## Example
+```cpp
+double yaw = heading * M_PI / 180.0;
+Notify("NAV_YAW", yaw);
+```
+
+## How to fix
+```cpp
+double yaw = MOOS_ANGLE_WRAP(-heading * M_PI / 180.0);
+Notify("NAV_YAW", yaw);
+```
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+
+@rule(
+    code="C003",
+    name="yaw-heading-sign",
+    severity=Severity.WARNING,
+    scope=Scope.CPP,
+    kinds=(Kind.CPP,),
+)
+def check(ctx):
+    # the C++ model is loaded only by runs that lint C++
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import yaw_heading_sign
+
+    yield from cpp_findings(ctx, yaw_heading_sign)

@@ -1,0 +1,90 @@
+"""Helpers shared by the configuration-hygiene rules (H001-H005).
+
+- :func:`exclusive`: two lines that never both survive nsplug, either because they
+  sit in different branches of one ``#ifdef`` or because their ``#ifdef``
+  conditions test one macro for different values (``#ifdef ROLE SIDE`` and a
+  later ``#ifdef ROLE MIDDLE``).
+- :func:`names_match`: a process or block name compared the way MOOS compares
+  it (without regard to case), where an unexpanded ``$(X)`` matches anything.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from moos_lint.frontends.nsplug import Expansion, Line
+from moos_lint.frontends.parsers.nodes import has_macro
+
+_MACRO = re.compile(r"[$%]\([^()]*\)")
+
+
+def _ifdef_values(cond: str | None) -> tuple[str, frozenset[str]] | None:
+    """``ifdef A v1 || A v2`` -> ``("A", {"v1", "v2"})``; None for any other form."""
+    if not cond or not cond.startswith("ifdef "):
+        return None
+    rest = cond[len("ifdef ") :]
+    if "&&" in rest:
+        return None
+    name = None
+    values: set[str] = set()
+    for term in rest.split("||"):
+        macro, _, value = term.strip().partition(" ")
+        value = value.strip()
+        if not macro or not value or (name is not None and macro != name):
+            return None
+        name = macro
+        values.add(value)
+    return (name, frozenset(values)) if name else None
+
+
+def _ifndef_names(cond: str | None) -> frozenset[str]:
+    if not cond or not cond.startswith("ifndef "):
+        return frozenset()
+    return frozenset(cond.split()[1:])
+
+
+def _disjoint(c1: str | None, c2: str | None) -> bool:
+    """True when two branch conditions can never both hold."""
+    t1, t2 = _ifdef_values(c1), _ifdef_values(c2)
+    if t1 and t2:
+        return t1[0] == t2[0] and not (t1[1] & t2[1])
+    # `#ifdef A v` needs A set to v; `#ifndef A` needs A unset or empty.
+    if t1 and t1[0] in _ifndef_names(c2):
+        return True
+    return bool(t2 and t2[0] in _ifndef_names(c1))
+
+
+def exclusive(a: Line, b: Line, expansion: Expansion) -> bool:
+    """True when nsplug never keeps both lines, whatever the macros are."""
+    if a.excludes(b):
+        return True
+    conds = expansion.conditions
+    for ga, ba in a.branches:
+        for gb, bb in b.branches:
+            if ga != gb and _disjoint(conds.get((ga, ba)), conds.get((gb, bb))):
+                return True
+    return False
+
+
+def _pattern(text: str) -> re.Pattern:
+    parts = _MACRO.split(text)
+    return re.compile(".*".join(re.escape(p) for p in parts), re.IGNORECASE | re.DOTALL)
+
+
+def names_match(a: str, b: str) -> bool:
+    """Equal without regard to case; an unexpanded macro in either name matches anything."""
+    if a.lower() == b.lower():
+        return True
+    if has_macro(a) and _pattern(a).fullmatch(b):
+        return True
+    return bool(has_macro(b) and _pattern(b).fullmatch(a))
+
+
+def app_of(binary: str) -> str:
+    """The program a Run line starts, without its folder."""
+    return binary.replace("\\", "/").rsplit("/", 1)[-1]
+
+
+def where(line: Line) -> str:
+    return f"{os.path.basename(line.path)}:{line.lineno}"

@@ -1,0 +1,120 @@
+"""A file named in a launched app's block (the helm's `behaviors`) that does not exist.
+
+## What it does
+In a mission (a `.moos` file with an ANTLER block, after nsplug expansion),
+looks at the blocks of launched processes and reports a file parameter whose
+file does not exist. By default these are pHelmIvP's `behaviors = FILE` and
+uFldObstacleSim's `obstacle_file = FILE`. A relative name is looked up in
+the folder of the mission file: the launch scripts start pAntler there, and
+both apps open the name relative to their working folder.
+
+## Why is this bad?
+pHelmIvP reports "Could not find File: FILE" as a configuration warning,
+posts `IVPHELM_STATE = MALCONFIG` and never takes control of the vehicle. uFldObstacleSim
+reports "Error reading: FILE" and simulates no obstacles.
+
+## Example
+```moos
+ProcessConfig = pHelmIvP
+{
+  behaviors = alhpa.bhv    // the file is alpha.bhv
+}
+```
+
+## How to fix
+Correct the file name, or add the file next to the mission.
+
+## Options
+- `file-params` (list of strings, default
+  `["pHelmIvP:behaviors", "uFldObstacleSim:obstacle_file"]`): the parameters
+  to check, as `PROGRAM:parameter`. The program is the one the Run line starts
+  (an alias such as `pHelmIvP ~ pHelmIvP_Standby` is followed to its block).
+
+A relative name is looked up from every folder the mission may be launched
+from: the mission's own folder and its parents up to the project root
+(launch scripts run `pAntler targs/targ_abe.moos` from the mission folder,
+and the helm then opens `targs/targ_abe.bhv` from there).
+
+MOOS-IvP caveats, deliberately not reported:
+- a name holding an unexpanded `$(X)` macro (`targ_$(VNAME).bhv`: the launch
+  script sets VNAME), or a `~` or `${X}`;
+- a name `targ_*.EXT` that does not exist when a `meta_*.EXT` file with the
+  same extension sits in the same folder: MOOS-IvP launch scripts generate
+  the `targ_` files from the `meta_` templates with nsplug
+  (`nsplug meta_vehicle.bhv targ_$VNAME.bhv`), so the file appears at launch;
+- pMarineViewer's `tiff_file`: the viewer looks for it in the MOOS-IvP data
+  folder and in IVP_IMAGE_DIRS, not only next to the mission.
+"""
+
+import glob
+import os
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.files.launch import find_relative, launch_folders, project_folder
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.hygiene._shared import app_of, exclusive, names_match
+from moos_lint.rules.kit.declare import Scope, rule
+
+FILE_PARAMS = ["pHelmIvP:behaviors", "uFldObstacleSim:obstacle_file"]
+
+
+def _params(option) -> dict[str, set[str]]:
+    out: dict[str, set[str]] = {}
+    for item in option:
+        app, sep, key = str(item).partition(":")
+        if sep and app.strip() and key.strip():
+            out.setdefault(app.strip().lower(), set()).add(key.strip().lower())
+    return out
+
+
+def _generated(folder: str, name: str) -> bool:
+    """``targ_X.ext`` made by the launch script from a ``meta_*.ext`` template beside it."""
+    base = os.path.basename(name)
+    if not base.startswith("targ_"):
+        return False
+    ext = os.path.splitext(base)[1]
+    where = os.path.join(folder, os.path.dirname(name))
+    return bool(glob.glob(os.path.join(glob.escape(where), "meta_*" + ext)))
+
+
+@rule(
+    code="H003",
+    name="missing-behavior-file",
+    severity=Severity.ERROR,
+    scope=Scope.MISSION,
+    options={"file-params": FILE_PARAMS},
+)
+def check(ctx):
+    wanted = _params(ctx.options.get("file-params", FILE_PARAMS))
+    folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
+    seen: set[int] = set()
+    for run in ctx.moos.runs:
+        keys = wanted.get(app_of(run.binary).lower())
+        if not keys or not run.name or has_macro(run.name):
+            continue
+        for block in ctx.moos.blocks:
+            if block.header is None or id(block) in seen or not names_match(block.name, run.name):
+                continue
+            if exclusive(block.header, run.param.line, ctx.expansion):
+                continue
+            seen.add(id(block))
+            for p in block.params:
+                if p.lkey not in keys:
+                    continue
+                name = "".join(p.value.split())  # MOOS drops every blank of a config line
+                if len(name) >= 2 and name[0] == name[-1] == '"':
+                    name = name[1:-1]
+                if not name or has_macro(name) or "~" in name or "${" in name:
+                    continue
+                if find_relative(name, folders) or any(_generated(f, name) for f in folders):
+                    continue
+                where = "next to the mission"
+                if len(folders) > 1:
+                    where += (
+                        f" nor in the {len(folders) - 1} folder(s) above it up to the project root"
+                    )
+                yield ctx.report(
+                    p.value_span,
+                    f"`{p.key} = {name}`: no such file {where} ({os.path.basename(ctx.unit.path)})",
+                    line=p.line,
+                )

@@ -1,0 +1,116 @@
+"""A process launched by Antler with no ProcessConfig block.
+
+## What it does
+In a mission (a `.moos` file with an ANTLER block, after nsplug expansion, its
+includes included), reports a `Run` line whose process has no
+`ProcessConfig = NAME` block. `NAME` is the Run line's `~ alias` when there is
+one (or `--alias=` passed through `ExtraProcessParams`), otherwise the program
+name; MOOS compares it with block names without regard to case.
+
+## Why is this bad?
+The process starts on its built-in defaults. MOOS-IvP apps built on
+AppCastingMOOSApp then post the configuration warning "No mission config block
+found for NAME"; core MOOS apps (pLogger, pShare) say nothing and silently log
+or share nothing. The usual causes are a forgotten `#include plug_X.moos`, an
+`#include plugs.moos <tag>` naming a section the plug file lacks, or an alias
+(`~ pShare_B`) whose block was never written.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB  @ NewConsole = false
+  Run = pLogger @ NewConsole = false
+}
+// no "ProcessConfig = pLogger" anywhere
+```
+
+## How to fix
+Add the block (or the `#include` that brings it in), or fix the alias so that
+it names the existing block.
+
+## Options
+- `needs-no-config` (list of strings): when given, the programs that run
+  correctly without a block, instead of what the app catalogue says. They are
+  compared with the program of the Run line (not its alias). By default the
+  catalogue decides, from the sources: the IvP apps that declare
+  `must_have_moosblock=false` at start-up (pRealm, pMissionHash, iSay,
+  uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS), those that read their
+  block only when there is one (uMAC, uPokeDB), MOOSDB and the uMS scope
+  (top-of-file settings only) and pAntler (it reads the ANTLER block); an app
+  linted in the same run needs its block unless its C++ declares it optional;
+  a user catalogue says `needs_process_config = false`. A program the
+  catalogue does not know is expected to have a block. In MOOS-IvP's own
+  missions none of the 109 MOOSDB Run lines and 45 of the 49 pRealm Run lines
+  have a block, by design.
+
+MOOS-IvP caveats, deliberately not reported:
+- a mission with an `#include` that could not be followed (a macro in its path
+  or a missing file): the block may be in that file;
+- a Run name or block name holding an unexpanded `$(X)` macro (may be any name);
+- a Run line with `InhibitMOOSParams = true`: pAntler does not pass the
+  mission file, so the process reads no block at all;
+- a process whose only block has `{` on its header line: MOOS never finds that
+  block, and brace-on-header (R003) reports it.
+A Run line and a block in mutually exclusive `#ifdef` branches do not count as
+a match: in the branch that launches the process, the block is missing.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.hygiene._shared import app_of, exclusive, names_match
+from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.semantics.catalogue import catalogue_for
+
+
+@rule(
+    code="H002",
+    name="missing-process-config",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    options={"needs-no-config": None},
+)
+def check(ctx):
+    moos = ctx.moos
+    if ctx.expansion.incomplete:
+        return
+    given = ctx.options.get("needs-no-config")
+    if isinstance(given, str):
+        given = [given]
+    exempt = None if given is None else {str(a).lower() for a in given}
+    cat = catalogue_for(ctx.run)
+    # the blocks by name (a name with a macro may match any run): each Run line looks at
+    # the blocks that may configure it, not at every block
+    by_name: dict[str, list] = {}
+    any_name: list = []
+    for b in moos.blocks:
+        if b.header is not None and b.name:
+            if has_macro(b.name):
+                any_name.append(b)
+            else:
+                by_name.setdefault(b.name.lower(), []).append(b)
+    for run in moos.runs:
+        name = run.name
+        if not name or has_macro(name) or has_macro(run.binary):
+            continue
+        if not run.has_at and "~" in run.param.value:
+            continue  # not a program pAntler can start: run-alias-without-at
+        program = app_of(run.binary)
+        if exempt is not None:
+            if program.lower() in exempt:
+                continue
+        elif cat.needs_process_config(program) is False:
+            continue
+        if run.options.get("inhibitmoosparams", "").lower() == "true":
+            continue
+        if any(
+            names_match(b.name, name) and not exclusive(b.header, run.param.line, ctx.expansion)
+            for b in (*by_name.get(name.lower(), ()), *any_name)
+        ):
+            continue
+        yield ctx.report(
+            run.name_span,
+            f"`{name}` is launched but has no `ProcessConfig = {name}` block: "
+            "it runs on its defaults",
+            line=run.param.line,
+        )

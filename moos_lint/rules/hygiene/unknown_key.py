@@ -1,0 +1,254 @@
+"""A top-of-file or ANTLER-block key that MOOS does not read (`CommsTic`, `MSBetweenLaunch`).
+
+## What it does
+Reports a key outside every ProcessConfig block (a "global") that no MOOS or
+MOOS-IvP program reads, and a key in the ANTLER block that pAntler does not
+read. When the key is a misspelling of a known one it says which (`did you
+mean ...?`, compared without regard to case), and when exactly one known key is
+close it offers a fix that respells the key.
+
+Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
+`LatOrigin`, `LongOrigin` (every app, the MOOSDB, pAntler); `UseMOOSComms`
+(CMOOSApp); `NoNetwork`, `WebServerPort`, `ClientTimeout`, `WarningLatency`,
+`tcpnodelay` (MOOSDB); `TERM_REPORTING` (every AppCasting app);
+`GlobalLogPath` (pLogger); `CircuitName`, `MagneticOffset` (CMOOSInstrument).
+
+Known ANTLER keys: `Run`, `MSBetweenLaunches`, `ExecutablePath`,
+`GentleKill`, `EnableDistributed`, `KillOnDBDisconnect`, and the named lists
+that a Run line refers to with `ExtraProcessParams=NAME`, `XConfig=NAME` or
+`Win32Config=NAME`, and numbered console configurations (`4 = -geometry,...`,
+which old missions keep for `XConfig=4` lines, some of them commented out).
+The app-level keys every MOOS app reads from its own
+block (`AppTick`, `CommsTick`, `MaxAppTick`, `IterateMode`, `SortMailByTime`,
+`CatchCommandMessages`, the `moos_*` flags, and AppCasting's `COMMS_POLICY`,
+`APP_LOGGING`, `TERM_REPORT_INTERVAL`, `MAX_APPCAST_EVENTS`,
+`MAX_APPCAST_RUN_WARNINGS`, `DEPRECATED_OK`) are accepted in the ANTLER block.
+
+## Why is this bad?
+MOOS never complains about a key it does not read: `MSBetweenLaunch = 500`
+silently leaves pAntler at its default, and `MOOSTimewarp` is fine (keys
+ignore case) but `MOOSTimeWrap = 10` silently runs the mission in real time.
+
+## Example
+```moos
+ServerHost   = localhost
+ServerPort   = 9000
+MOOSTimeWrap = 10          // MOOSTimeWarp
+
+ProcessConfig = ANTLER
+{
+  MSBetweenLaunch = 200    // MSBetweenLaunches
+  Run = MOOSDB @ NewConsole = false
+}
+```
+
+## How to fix
+Respell the key (`moos-lint check --fix` applies the suggestion when there is
+only one), or delete the line.
+
+## Options
+- `extra-globals` (list of strings, default `[]`): more top-of-file keys that
+  your own apps read with `m_MissionReader.GetValue(...)`.
+
+MOOS-IvP caveats, deliberately not reported:
+- keys inside ProcessConfig blocks other than ANTLER: each app has its own
+  keys, and IvP apps report unknown ones at run time ("Unhandled config line");
+- a fragment that other linted files include: its top-level keys are judged
+  where they land (inside a block, they are block keys), in the including
+  mission; a `.moos` file that has no ProcessConfig block at all and is not a
+  mission may be a fragment written for inclusion inside a block, so its keys
+  are not judged either;
+- keys holding an unexpanded `$(X)` macro, `define:` lines and `[section]`
+  keys;
+- a key starting with `#` or a single `/` while the not-a-comment rule (R007)
+  is enabled: that rule reports the line already (`#Run = pX`).
+
+A top-of-file key that an app of the linted repository reads with
+`m_MissionReader.GetValue("KEY", value)` is known.
+
+In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
+top-of-file keys those apps read into their configuration (`log`, `log_path`,
+`modem_id`, `modem_id_lookup_path`, ...; the `moos_global` fields of goby's
+`.proto` files) are known too.
+
+Old MOOS missions set `Simulator = true`: no MOOS or MOOS-IvP program reads it
+today (CMOOSApp's simulate mode is never set from the file), so it is reported.
+"""
+
+import difflib
+import re
+from collections.abc import Sequence
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.semantics.catalogue import text_format_app, text_format_schema
+
+ANTLER_KEYS = [
+    "Run",
+    "MSBetweenLaunches",
+    "ExecutablePath",
+    "GentleKill",
+    "EnableDistributed",
+    "KillOnDBDisconnect",
+]
+APP_KEYS = [
+    "AppTick",
+    "CommsTick",
+    "MaxAppTick",
+    "IterateMode",
+    "SortMailByTime",
+    "CatchCommandMessages",
+    "COMMS_POLICY",
+    "APP_LOGGING",
+    "TERM_REPORT_INTERVAL",
+    "MAX_APPCAST_EVENTS",
+    "MAX_APPCAST_RUN_WARNINGS",
+    "DEPRECATED_OK",
+    "moos_app_tick",
+    "moos_max_app_tick",
+    "moos_iterate_mode",
+    "moos_iterate_no_comms",
+    "moos_no_comms",
+    "moos_no_sort_mail",
+    "moos_quiet",
+    "moos_quit_on_iterate_fail",
+    "moos_filter_command",
+    "moos_suicide_channel",
+    "moos_suicide_port",
+    "moos_suicide_phrase",
+    "moos_suicide_print",
+    "moos_suicide_disable",
+    "moos_time_warp",
+    "moos_tw_delay_factor",
+]
+_LIST_OPTIONS = ("extraprocessparams", "xconfig", "win32config")
+
+
+_GET_VALUE = re.compile(rb"\bGetValue\s*\(\s*\"([A-Za-z0-9_]+)\"")
+
+
+def _repo_globals(run) -> frozenset[str]:
+    """Top-of-file keys the run's own C++ apps read (``m_MissionReader.GetValue("KEY", s)``)."""
+    found = run.memos.repo_globals
+    if found is not None:
+        return found
+    keys: set[str] = set()
+    for unit in run.units:
+        app = getattr(unit, "cpp", None)
+        for f in getattr(app, "files", None) or []:
+            try:
+                with open(f.path, "rb") as fh:
+                    data = fh.read(512 * 1024)
+            except OSError:
+                continue
+            keys.update(m.group(1).decode("ascii") for m in _GET_VALUE.finditer(data))
+    run.memos.repo_globals = found = frozenset(keys)
+    return found
+
+
+def _skip_key(key: str) -> bool:
+    return not key or has_macro(key) or "define:" in key or "[" in key or "]" in key
+
+
+def _norm(key: str) -> str:
+    return "".join(key.split()).lower()
+
+
+@rule(
+    code="H005",
+    name="unknown-key",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    options={"extra-globals": []},
+    fixable=True,
+)
+def check(ctx):
+    moos = ctx.moos
+    r007 = any(r.code == "R007" for r in ctx.run.rules)
+    globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
+    globals_known += sorted(_repo_globals(ctx.run))
+    if any(b.text_format for b in moos.blocks) or any(
+        text_format_app(r.binary.replace("\\", "/").rsplit("/", 1)[-1]) for r in moos.runs
+    ):
+        # goby's apps also read some top-of-file keys (`log_path`, `modem_id`)
+        globals_known += list(text_format_schema().moos_globals)
+    fragment = ctx.unit.path in ctx.run.included_elsewhere
+    if not fragment and (moos.is_mission or moos.blocks):
+        for p in moos.globals:
+            yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS)
+    for block in moos.antler_blocks:
+        known = [*ANTLER_KEYS, *APP_KEYS]
+        for run in (r for r in moos.runs if r.param.block is block):
+            for opt in _LIST_OPTIONS:
+                if run.options.get(opt):
+                    known.append(run.options[opt])
+        for p in block.params:
+            if _norm(p.key).isdigit():
+                continue  # a numbered console configuration (`4 = -geometry,...`, XConfig=4)
+            yield from _judge(ctx, p, known, "ANTLER-block", r007)
+
+
+def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequence[str] = ()):
+    key = p.key
+    if _skip_key(key):
+        return
+    lkey = _norm(key)
+    by_lower = {k.lower(): k for k in known}
+    if lkey in by_lower:
+        return
+    in_block = {k.lower(): k for k in block_keys}
+    if lkey in in_block:
+        yield ctx.report(
+            p.key_span,
+            f"`{key}` at the top of the file is ignored: every app reads "
+            f"`{in_block[lkey]}` from its own ProcessConfig block",
+            line=p.line,
+        )
+        return
+    first = key.split()[0] if key.split() else ""
+    if first != key.strip() and first.lower() in by_lower:
+        # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing
+        yield ctx.report(
+            p.key_span,
+            f"`{key.strip()}`: the `=` after `{first}` is missing, so MOOS reads the key "
+            f"`{key.strip()}` and ignores the line (write `{first} = {key.split(None, 1)[1]}"
+            f" = {p.value}`)",
+            line=p.line,
+        )
+        return
+    commented = key.startswith("#") or (key.startswith("/") and not key.startswith("//"))
+    if commented and r007:
+        return  # not-a-comment reports this line
+    if commented:
+        yield ctx.report(
+            p.key_span,
+            f"`{key}` is not a comment: MOOS reads it as the key `{key}`, which it ignores "
+            "(comment lines out with `//`)",
+            line=p.line,
+        )
+        return
+    close = difflib.get_close_matches(lkey, list(by_lower), n=3, cutoff=0.75)
+    names = [by_lower[c] for c in close]
+    if not names:  # a misspelt block key at the top of the file
+        names = [in_block[c] for c in difflib.get_close_matches(lkey, list(in_block), 3, 0.75)]
+    who = "no MOOS app reads it" if where == "top-of-file" else "pAntler does not read it"
+    if not names:
+        yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
+        return
+    hint = " or ".join(
+        f"`{n}`" + (" (a block key)" if n.lower() not in by_lower else "") for n in names
+    )
+    fix = None
+    if len(names) == 1 and names[0].lower() in by_lower:
+        span = p.key_span
+        raw = p.line.raw
+        if span.line == p.line.lineno and raw[span.col - 1 : span.end_col - 1] == key:
+            fix = Fix(f"respell as `{names[0]}`", (Edit(span, names[0]),))
+    yield ctx.report(
+        p.key_span,
+        f"unknown {where} key `{key}`: {who}; did you mean {hint}?",
+        line=p.line,
+        fix=fix,
+    )

@@ -1,0 +1,144 @@
+"""A ProcessConfig block for a process that no Run line launches.
+
+## What it does
+In a mission (a `.moos` file with an ANTLER block, after nsplug expansion, its
+includes included), reports a `ProcessConfig = NAME` block when no `Run` line
+of the ANTLER block starts a process called `NAME`. The process name is the
+`~ alias` of the Run line when there is one (or `--alias=` passed through
+`ExtraProcessParams`), otherwise the program name. Names compare without
+regard to case, as MOOS looks blocks up. A plug fragment is judged in the
+missions that include it; the finding points at the block in the fragment,
+with the include chain.
+
+## Why is this bad?
+No process ever reads the block. Typically its Run line was commented out
+(`//Run = uTimerScript @ NewConsole = false`) and the block was left to rot:
+edits to it have no effect, and readers of the mission believe the process
+runs.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB   @ NewConsole = false
+  //Run = uTimerScript @ NewConsole = false
+}
+
+ProcessConfig = uTimerScript
+{
+  event = var=DEPLOY, val=true, time=10
+}
+```
+
+## How to fix
+Launch the process (restore its Run line), or delete the block. To keep a
+block around for a process started by hand, declare the app
+`launched_manually = true` in a catalogue file, list it in `manual-apps`, or
+suppress the finding on the header line.
+
+## Options
+- `manual-apps` (list of strings): when given, the tools that users start by
+  hand with the mission file (`uXMS targ_shoreside.moos`), instead of what the
+  app catalogue says; their block is read although no Run line starts them.
+  By default the catalogue decides: uXMS, uMAC, uMACView, uPokeDB, uQueryDB,
+  uMayFinish, uTermCommand and uHelmScope (each documents
+  `Usage: APP file.moos`), the uMS scope, and the apps a user catalogue
+  declares `launched_manually = true`. A block whose name *starts with* one of
+  these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
+
+MOOS-IvP caveats, deliberately not reported:
+- the ANTLER block itself;
+- a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
+  be any name, so it launches (or is launched by) anything it could match;
+- a block and a Run line in mutually exclusive `#ifdef` branches do not launch
+  each other (`#ifdef XMODE SIM` / `#elseifdef XMODE M300`, or two `#ifdef`s
+  testing one macro for different values), so such a block is reported;
+- a mission with an `#include` that could not be followed (a macro in its
+  path, a missing file): a Run line may be in it, so nothing is reported;
+- a block with `{` on its header line: MOOS never finds it whatever launches
+  it, and brace-on-header (R003) reports that line.
+"""
+
+import re
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.hygiene._shared import exclusive, names_match, where
+from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.semantics.catalogue import catalogue_for
+
+_COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s*([^\s,]+))?", re.I)
+
+
+@rule(
+    code="H001",
+    name="unlaunched-process-config",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    options={"manual-apps": None},
+)
+def check(ctx):
+    moos = ctx.moos
+    if ctx.expansion.incomplete:
+        return
+    given = ctx.options.get("manual-apps")
+    if isinstance(given, str):
+        given = [given]
+    if given is None:
+        manual = catalogue_for(ctx.run).started_by_hand()
+    else:
+        manual = [str(a).lower() for a in given]
+    # the Run lines by name (a name with a macro may match any block): each block looks
+    # at the lines that may launch it, not at every Run line
+    by_name: dict[str, list] = {}
+    any_name: list = []
+    for run in moos.runs:
+        if has_macro(run.name):
+            any_name.append(run)
+        else:
+            by_name.setdefault(run.name.lower(), []).append(run)
+    commented: dict[str, str] | None = None
+    for block in moos.blocks:
+        if block.header is None or not block.name or block.lname == "antler":
+            continue
+        if block.brace_on_header:
+            continue  # MOOS never finds it: brace-on-header (R003) reports the line
+        if has_macro(block.name) or any(block.lname.startswith(m) for m in manual if m):
+            continue
+        if any(
+            names_match(run.name, block.name)
+            and not exclusive(run.param.line, block.header, ctx.expansion)
+            for run in (*by_name.get(block.name.lower(), ()), *any_name)
+        ):
+            continue
+        if commented is None:
+            commented = _commented_runs(moos)
+        hint = commented.get(block.name.lower())
+        why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
+        yield ctx.report(
+            block.name_span,
+            f"no process reads block `{block.name}`: {why} (launch it or delete the block)",
+            line=block.header,
+        )
+
+
+def _commented_runs(moos) -> dict[str, str]:
+    """Where a ``//Run = NAME`` line sits in an ANTLER block, by lower-case NAME (the first)."""
+    found: dict[str, str] = {}
+    for antler in moos.antler_blocks:
+        if antler.open is None:
+            continue
+        inside = False
+        for line in moos.lines:
+            if line is antler.open:
+                inside = True
+                continue
+            if line is antler.close:
+                break
+            if not inside:
+                continue
+            m = _COMMENTED_RUN.match(line.text)
+            if m:
+                launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
+                found.setdefault(launched.lower(), where(line))
+    return found

@@ -1,0 +1,92 @@
+"""Helpers for the behavior-catalogue rules: known behavior kinds, the repo's own classes."""
+
+from __future__ import annotations
+
+import os
+import re
+from typing import TYPE_CHECKING
+
+from moos_lint.files.suffixes import is_cpp
+from moos_lint.semantics.catalogue import BehaviorInfo, catalogue_for
+
+if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
+    from moos_lint.core.engine import Context
+
+_SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
+
+
+def repo_classes(ctx: Context) -> frozenset[str]:
+    """Lower-case names of the C++ files under the project root (``BHV_Pulse.cpp`` -> bhv_pulse).
+
+    MOOS-IvP behaviors live in a file named after their class, so a kind with
+    such a file is the repo's own behavior. Cached on the run.
+    """
+    run = ctx.run
+    cached = run.memos.repo_cpp_stems
+    if cached is not None:
+        return cached
+    stems: set[str] = set()
+    for unit in run.units:
+        app = unit.cpp
+        for f in app.files if app is not None else ():
+            for c in f.classes:
+                stems.add(c.name.lower())
+    root = _root(ctx)
+    for count, (dirpath, dirs, files) in enumerate(os.walk(root)):
+        dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
+        for name in files:
+            if is_cpp(name):
+                stems.add(os.path.splitext(name)[0].lower())
+            if name == "CMakeLists.txt":
+                # the helm loads a behavior by its library's name (libBHV_X.so)
+                stems.update(_library_behaviors(os.path.join(dirpath, name)))
+            if name.endswith((".h", ".hpp")) and not name.lower().startswith("bhv_"):
+                # a behavior class in a file named otherwise (TrailiSBL_PingFormation.h
+                # declares BHV_TrailiSBL_PingFormation): read the declarations
+                stems.update(_declared_behaviors(os.path.join(dirpath, name)))
+        if count > 20000:  # a huge tree: stop looking
+            break
+    run.memos.repo_cpp_stems = found = frozenset(stems)
+    return found
+
+
+_CLASS = re.compile(rb"\bclass\s+(BHV_\w+)\s*(?::|\{)")
+
+
+def _declared_behaviors(path: str) -> set[str]:
+    """Lower-case names of the ``BHV_*`` classes a header declares."""
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(256 * 1024)
+    except OSError:
+        return set()
+    if b"BHV_" not in data:
+        return set()
+    return {m.group(1).decode("ascii", "replace").lower() for m in _CLASS.finditer(data)}
+
+
+_LIBRARY = re.compile(rb"add_library\s*\(\s*(BHV_\w+)", re.IGNORECASE)
+
+
+def _library_behaviors(path: str) -> set[str]:
+    """Lower-case ``BHV_*`` library targets a CMakeLists.txt builds."""
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(256 * 1024)
+    except OSError:
+        return set()
+    return {m.group(1).decode("ascii", "replace").lower() for m in _LIBRARY.finditer(data)}
+
+
+def _root(ctx: Context) -> str:
+    """The project root (:mod:`moos_lint.files.project`), which the settings carry: the
+    config's folder, else the version-control top, else the working folder."""
+    return os.path.abspath(ctx.settings.root)
+
+
+def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:
+    """(catalogue entry or None, known at all)."""
+    info = catalogue_for(ctx.run).behavior(kind)
+    if info is not None:
+        return info, True
+    return None, kind.lower() in repo_classes(ctx)

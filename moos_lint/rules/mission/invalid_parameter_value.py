@@ -1,0 +1,244 @@
+"""A parameter value the app or behavior rejects or misreads (`verbose = 1`, `AppTick = .5`).
+
+## What it does
+Checks the values of parameters whose form the app's own parser enforces,
+as recorded in the catalogue with the source line that enforces it:
+
+- in a block an app reads as protobuf text (goby's pAcommsHandler,
+  iFrontSeat, ...), a field of an enum type must hold one of the enum's
+  values (`driver_type: DRIVER_UPD`), as goby's `.proto` files declare them;
+
+- a boolean read with MOOS-IvP's `setBooleanOnString` accepts only `true`,
+  `false`, `on`, `off`, `yes`, `no` and `toggle` (any case): `verbose = 1`
+  is rejected;
+- a number read with `setDoubleOnString` and friends must pass MOOS-IvP's
+  `isNumber`: digits, at most one `.`, a `-` only in front (no exponent, no
+  units: `speed = 2m/s` is rejected); `setNonNegDoubleOnString` and
+  `setUIntOnString` also reject negative values, `setPosDoubleOnString`
+  rejects zero, `setPosUIntOnString` values below 1;
+- a parameter the parser compares with a fixed set of words (any case),
+  rejecting any other: `comms_policy` (every AppCasting app: `open`, `lean`,
+  `dire`), `app_logging` (`true`, `log`, `file`, `off`), `deprecated_ok`
+  (`true`, `false`); the Waypoint behavior's `capture_line` (`true`,
+  `false`, `absolute`) and `efficiency_measure` (`all`, `off`); the Loiter
+  behavior's `clockwise` (`best` or a boolean);
+- more fixed sets: the HeadingBias behavior's `bias` (`right`, `left`);
+  uSimMarineV22/V23's `thrust_mode_diff` (`differential`, `normal`, `true`,
+  `false`), `thrust_mode_reverse` (`reverse`, `normal`, `true`, `false`) and
+  `thrust_reflect` (`true`, `false`); uFldBeaconRangeSensor's `report_vars`
+  (`both`, `short`, `long`) and `ping_payments` (`upon_response`,
+  `upon_request`, `upon_accept`);
+- a polygon, point list or point, judged by a port of MOOS-IvP's own
+  `string2Poly`, `string2SegList` and `string2Point`, where the parser
+  rejects what they cannot read: the `polygon` of the Loiter, OpRegion and
+  OpRegionRecover behaviors and pObstacleMgr's `given_obstacle` must be a
+  convex polygon of at least 3 vertices (`60,-40 : 60` has no y, two
+  vertices are not a polygon); the Waypoint behavior's `points` and
+  `polygon` must hold at least one vertex (or be `empty` / `start`); points
+  (`point` of the Waypoint, StationKeep and AbortToPoint behaviors,
+  `station_pt`, `bearing_point`, the LegRun behavior's `p1` / `p2`) must read
+  as `x,y`, `x:y` or `x=..,y=..`;
+- a route such as uFldNodeBroker's and uFldShoreBroker's
+  `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
+  rejected and nothing is bridged;
+- `AppTick` and `MaxAppTick` (every MOOS app) are read with
+  `GetConfigurationParam(double)`, which ignores a value that does not start
+  with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
+
+The message names the parser's source line in moos-ivp.
+
+## Why is this bad?
+An IvP app reports the line as "Unhandled config line" and keeps its default;
+a behavior's `setParam` fails, and the helm rejects the whole behavior set
+(`IVPHELM_STATE = MALCONFIG`). `AppTick = .5` is ignored without a word, and
+the app runs at 4 Hz instead of 0.5 Hz.
+
+## Example
+```moos
+ProcessConfig = pMarinePIDV22
+{
+  AppTick        = .5       // 0.5
+  ignore_nav_yaw = 1        // true
+}
+```
+
+```
+Behavior = BHV_Loiter
+{
+  polygon = 60,-40 : 60,-160 : 150    // the last vertex has no y
+}
+```
+
+## How to fix
+Write the value in the form the parser reads: `0.5`, `true`,
+`60,-40 : 60,-160 : 150,-160`.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- values holding an nsplug macro;
+- parameters whose parser the catalogue does not tie to one of these
+  setters, fixed word sets or geometry parsers (other enums, and polygons
+  read by other code, such as contact filters' regions, are not judged);
+- polygon and point-list forms the port does not follow exactly:
+  `format=radial`, `radial::`, `ellipse:`, `wedge:`, `pylon:`, `oval:`,
+  `zigzag:`, `lawnmower`, edge `tags=`; a polygon of more than 400
+  vertices; a polygon whose convexity rests on floating-point rounding (a
+  vertex all but on an edge's line);
+- apps the catalogue does not know.
+"""
+
+import re
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission.unknown_parameter import block_apps, text_blocks
+from moos_lint.semantics.catalogue import text_format_schema
+from moos_lint.semantics.geometry_forms import INVALID, is_geometry_form, judge
+from moos_lint.semantics.mbutil import is_number
+
+BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
+_MOOS_DOUBLE = re.compile(r"^[0-9-]")
+
+
+def _atof(s: str) -> float:
+    m = re.match(r"^[+-]?(\d+\.?\d*|\.\d+)", s.strip())
+    try:
+        return float(m.group(0)) if m else 0.0
+    except ValueError:
+        return 0.0
+
+
+#: what a value of each geometry form must be, for the message
+_GEOMETRY_WHAT = {
+    "convex_polygon": "is not a convex polygon",
+    "waypoints": "is not a point list or polygon",
+    "point": "is not a point",
+}
+
+
+def problem(form: str, value: str) -> str | None:
+    """Why ``value`` does not have the ``form``, or None."""
+    if is_geometry_form(form):
+        # the app's own parser, ported; only a sure rejection is reported
+        verdict = judge(form, value)
+        if verdict.status != INVALID:
+            return None
+        what = _GEOMETRY_WHAT.get(form.split("|", 1)[0], "is not read")
+        return f"{what} ({verdict.reason})" if verdict.reason else what
+    if form.startswith("fields:"):
+        # `key=value` pairs separated by commas; the listed fields must be there
+        pairs = {}
+        for item in value.split(","):
+            left, eq, right = item.partition("=")
+            if eq:
+                pairs[left.strip().lower()] = right.strip()
+        missing = [f for f in form[len("fields:") :].split("+") if not pairs.get(f)]
+        if missing:
+            return "has no " + " or ".join(f"`{f}=` field" for f in missing)
+        return None
+    if form.startswith("enum:"):
+        # compared lower-cased with a fixed set, as the parser does
+        allowed = form[len("enum:") :].split("|")
+        if value.lower() not in allowed:
+            return "is not one of " + ", ".join(f"`{a}`" for a in allowed)
+        return None
+    if form == "bool":
+        if value.lower() not in BOOLS:
+            return "is not a boolean (true/false, on/off, yes/no)"
+        return None
+    if form == "moos_double":
+        if not _MOOS_DOUBLE.match(value):
+            return "does not start with a digit or `-`"
+        return None
+    if form in ("number", "nonneg", "positive", "uint", "posuint", "int"):
+        if not is_number(value):
+            return "is not a number (digits, one `.`, a leading `-`)"
+        v = _atof(value)
+        if form in ("nonneg", "uint") and v < 0:
+            return "is negative (the parser takes values >= 0)"
+        if form == "positive" and v <= 0:
+            return "is not greater than 0"
+        if form == "posuint" and v < 1:
+            return "is less than 1"
+    return None
+
+
+@rule(
+    code="M002",
+    name="invalid-parameter-value",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    if ctx.moos is not None:
+        for _block, app in block_apps(ctx):
+            for p in _block.params:
+                got = app.forms.get(p.lkey)
+                if got is None:
+                    continue
+                value = "".join(p.value.split())  # MOOS drops every blank of a config line
+                yield from _judge(ctx, p, value, got, app.name)
+        yield from _text_enums(ctx)
+    if ctx.bhv is not None:
+        for bhv in ctx.bhv.behaviors:
+            info, _known = lookup(ctx, bhv.kind.strip())
+            if info is None:
+                continue
+            for p in bhv.params:
+                got = info.forms.get(p.lkey)
+                if got is not None:
+                    yield from _judge(ctx, p, p.value.strip(), got, info.name)
+
+
+def _text_enums(ctx):
+    """Enum fields of protobuf-text blocks (goby's apps) whose value the enum lacks."""
+
+    schema = text_format_schema()
+    for _block, app in text_blocks(ctx):
+        todo = [(_block.text_fields, app.message)]
+        while todo:
+            fields, message = todo.pop()
+            known = schema.messages.get(message, {})
+            for f in fields:
+                kind = None if f.extension else known.get(f.name)
+                if kind is None:
+                    continue
+                if f.children is not None:
+                    if kind in schema.messages:
+                        todo.append((f.children, kind))
+                    continue
+                values = schema.enums.get(kind)
+                value = f.value or ""
+                if not values or not value or has_macro(value) or value in values:
+                    continue
+                if not value.replace("_", "").isalnum() or value[0].isdigit():
+                    continue  # a number: protobuf also reads an enum by its number
+                shown = ", ".join(f"`{v}`" for v in values[:8]) + (
+                    ", ..." if len(values) > 8 else ""
+                )
+                yield ctx.report(
+                    f.line.span(f.end - len(value), f.end),
+                    f"`{f.name}: {value}` is not a value of `{kind}` ({shown}): {app.name} stops "
+                    f"at start-up with a configuration error ({app.provenance}; "
+                    f"{schema.sources.get(message, '')})",
+                    line=f.line,
+                )
+
+
+def _judge(ctx, p, value, got, owner):
+    form, at = got
+    if not value or has_macro(value) or has_macro(p.key):
+        return
+    why = problem(form, value)
+    if why is None:
+        return
+    where = f" ({at})" if at else ""
+    effect = "ignores it and keeps its default" if form == "moos_double" else "rejects it"
+    yield ctx.report(
+        p.value_span, f"`{p.key.strip()} = {value}` {why}: {owner} {effect}{where}", line=p.line
+    )

@@ -1,0 +1,89 @@
+"""A `Behavior = BHV_X` whose kind the helm does not know (`BHV_Waypiont`).
+
+## What it does
+Reports a behavior kind that is neither a stock MOOS-IvP behavior (the
+catalogue lists every `BHV_*` class of moos-ivp: `BHV_Waypoint`,
+`BHV_Loiter`, `BHV_AvdColregsV22`, ...), nor a behavior described in a
+catalogue file (`catalogues = [...]`), nor a class of the linted project (a
+C++ file named after the kind, `BHV_Pulse.cpp`, anywhere under the project:
+the folder of the configuration file, else the version-control root above
+the behavior file, else the behavior file's folder; MOOS-IvP behaviors are
+named after their file). The kind is compared
+without regard to case and a close stock kind is suggested.
+
+## Why is this bad?
+The helm cannot build the behavior: it reports "failed to load dynamic
+behavior ... Check IVP_BEHAVIOR_DIRS", the whole behavior set fails and the
+helm posts `IVPHELM_STATE = MALCONFIG`. The vehicle never leaves the dock.
+
+## Example
+```bhv
+Behavior = BHV_Waypiont     // BHV_Waypoint
+{
+  name   = transit
+  points = 0,0 : 100,0
+}
+```
+
+## How to fix
+Respell the kind. For a behavior of your own that lives in another
+repository, describe it in a catalogue file (`[behaviors.BHV_Mine]`).
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- a kind holding an nsplug macro;
+- a kind with a C++ file of the same name in the project (its own behavior,
+  loaded through `ivp_behavior_dir`), a `BHV_*` class declared in one of the
+  project's headers, or a `BHV_*` library a CMakeLists.txt of the project
+  builds (the helm loads `libBHV_X.so` by the kind's name);
+- a kind that is not a name (`Behavior = ??` in a template).
+"""
+
+import difflib
+import os
+import re
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.mission._behaviors import _root, lookup
+from moos_lint.semantics.catalogue import catalogue_for
+
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def _shown(folder: str) -> str:
+    """The searched folder, relative to the working folder when it lies under it."""
+    rel = os.path.relpath(folder)
+    return "the working folder" if rel == "." else f"`{folder if rel.startswith('..') else rel}`"
+
+
+@rule(
+    code="M003",
+    name="unknown-behavior",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.BHV,),
+    fixable=True,
+)
+def check(ctx):
+    cat = catalogue_for(ctx.run)
+    for bhv in ctx.bhv.behaviors:
+        kind = bhv.kind.strip()
+        if not kind or has_macro(kind) or not _IDENT.fullmatch(kind):
+            continue  # `Behavior = ??` in a template is a placeholder, not a kind
+        _info, known = lookup(ctx, kind)
+        if known:
+            continue
+        names = {b.name.lower(): b.name for b in cat.behaviors.values()}
+        close = [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
+        msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
+        msg += f"no C++ file, class or library of that name under {_shown(_root(ctx))})"
+        fix = None
+        if close:
+            msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
+        if len(close) == 1:
+            fix = Fix(f"respell as `{close[0]}`", (Edit(bhv.kind_span, close[0]),))
+        yield ctx.report(bhv.kind_span, msg, line=bhv.header, fix=fix)

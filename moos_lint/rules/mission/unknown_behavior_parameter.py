@@ -1,0 +1,69 @@
+"""A behavior parameter that the behavior does not read (`capture_raduis`).
+
+## What it does
+For each behavior of a kind the catalogue describes, reports a parameter that
+neither the behavior's `setParam` nor its base classes (`IvPBehavior`'s
+generic keys: `name`, `pwt`, `condition`, `endflag`, `updates`, ...;
+`IvPContactBehavior`'s contact keys) nor the helm's behavior spec
+(`templating`, `max_spawnings`) accept. Keys are compared as the helm compares
+them: in lower case, with a leading `_` ignored. A close known parameter is
+suggested, and when there is exactly one it is offered as a fix.
+
+## Why is this bad?
+The helm is strict: an unknown parameter fails the behavior ("Line N: ..."),
+the behavior set is rejected and the helm posts `IVPHELM_STATE = MALCONFIG`.
+
+## Example
+```bhv
+Behavior = BHV_Waypoint
+{
+  name           = transit
+  points         = 0,0 : 100,0
+  capture_raduis = 5     // capture_radius
+}
+```
+
+## How to fix
+Respell the parameter, or delete it.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- behaviors of kinds the catalogue does not describe (the project's own
+  behaviors, unless a catalogue file lists their parameters);
+- parameters holding an nsplug macro.
+"""
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission.unknown_parameter import suggestions
+
+
+@rule(
+    code="M004",
+    name="unknown-behavior-parameter",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.BHV,),
+    fixable=True,
+)
+def check(ctx):
+    for bhv in ctx.bhv.behaviors:
+        info, _known = lookup(ctx, bhv.kind.strip())
+        if info is None or not info.params:
+            continue
+        for p in bhv.params:
+            key = p.lkey
+            if not key or key in info.params or has_macro(p.key):
+                continue
+            close = suggestions(key, info.params)
+            msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
+            fix = None
+            if close:
+                msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
+            if len(close) == 1:
+                fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
+            yield ctx.report(p.key_span, msg, line=p.line, fix=fix)

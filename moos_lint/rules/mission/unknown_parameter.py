@@ -1,0 +1,186 @@
+"""A ProcessConfig parameter that the app does not read (`yaw_pid_kpp`, `Apptick2`).
+
+## What it does
+Looks up the app that reads each ProcessConfig block (the Run line's program
+for an alias such as `pShare ~ ShareA`, otherwise the block name) in the app
+catalogue, and reports a parameter that the app's configuration parser does
+not handle. It says which known parameter is close (`did you mean ...?`,
+compared without regard to case, as MOOS compares keys), and offers a fix
+that respells the key when exactly one known parameter is close.
+
+The catalogue holds the apps whose C++ is linted in the same run, the
+catalogue files named in `catalogues = [...]`, and the stock MOOS and
+MOOS-IvP apps (generated from their sources; see `moos_lint/semantics/catalogue/`).
+Every app also accepts the keys its base classes read (`AppTick`,
+`CommsTick`, `MaxAppTick`, `IterateMode`, the `moos_*` flags, and
+AppCasting's `comms_policy`, `app_logging`, `term_report_interval`, ...).
+
+## Why is this bad?
+MOOS-IvP apps only print "Unhandled config line" at start-up, in an appcast
+few people read, and then run on the default: `yaw_pid_kpp = 0.5` leaves
+the heading gain at its default, `max_rudder = 30` (the key is `maxrudder`)
+leaves the rudder unlimited.
+
+## Example
+```moos
+ProcessConfig = pMarinePIDV22
+{
+  AppTick    = 20
+  maxrudder  = 100
+  yaw_pid_kpp = 1.2     // yaw_pid_kp
+}
+```
+
+## How to fix
+Respell the key (`moos-lint check --fix` applies the suggestion when there is
+only one), or delete the line. For your own app, lint its C++ in the same run
+or describe it in a catalogue file.
+
+## Options
+None.
+
+Blocks an app reads with protobuf's text format (goby's MOOS apps:
+pAcommsHandler, iFrontSeat, pTranslator) are checked against the app's
+configuration message, nested messages included (`common { verbosity: ... }`),
+as generated from goby's `.proto` files (`moos_lint/frontends/goby.json`).
+Extension fields (`[micromodem.protobuf.Config.reset_nvram]`) the catalogue
+does not know are not judged.
+
+MOOS-IvP caveats, deliberately not reported:
+- apps the catalogue does not know, and apps whose parser does not reject
+  other keys (pMOOSBridge, pScheduler: they read keys one by one and never
+  see the others), so that a key list that may be incomplete never produces
+  a finding. pShare and pLogger are checked: their whole key lists were read
+  from their sources (`Output =` and `Log =` lines are theirs, whatever the
+  value);
+- the ANTLER block (unknown-key, R-series, checks it);
+- a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
+  those from anywhere in the file with `GetValue`;
+- keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
+  or `/` (not-a-comment reports those);
+- parameters handed to a library the app links: the catalogue counts every
+  key the library's configuration functions compare against, so some
+  misspellings that match another app's key go unnoticed;
+- an app of the linted repository whose final `else` hands every other key
+  to code elsewhere (`else handled = m_viewer.setParam(param, value);`, as
+  pMarineViewer does): its own files do not list those keys, so it is not
+  judged. An app of the repository that the stock catalogue also knows (a
+  fork of a MOOS-IvP app, or MOOS-IvP itself) keeps the stock keys too: the
+  keys of the libraries it links (`flip:N` for pEchoVar).
+"""
+
+import difflib
+import functools
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, has_macro
+from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
+
+#: keys apps read with CMOOSFileReader::GetValue, which scans the whole file, blocks
+#: included: `term_reporting = false` inside a block is read by every AppCasting app
+#: (AppCastingMOOSApp.cpp:349). global-key-in-block (R009) judges such lines.
+_FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
+
+
+def block_apps(ctx):
+    """(block, AppInfo) for each ProcessConfig block of an app the catalogue knows."""
+    cat = catalogue_for(ctx.run)
+    aliases: dict[str, str] = {}
+    for run in ctx.moos.runs:
+        if run.name and not has_macro(run.name):
+            aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    for block in ctx.moos.blocks:
+        if block.lname == "antler" or has_macro(block.name):
+            continue
+        app = cat.app(aliases.get(block.lname, block.name).strip())
+        if app is not None:
+            yield block, app
+
+
+def text_blocks(ctx):
+    """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
+    aliases: dict[str, str] = {}
+    for run in ctx.moos.runs:
+        if run.name and not has_macro(run.name):
+            aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    for block in ctx.moos.blocks:
+        if not block.text_format or has_macro(block.name):
+            continue
+        app = text_format_app(aliases.get(block.lname, block.name).strip())
+        if app is not None:
+            yield block, app
+
+
+def _text_unknown(fields, message: str, schema, app):
+    """(field, message, suggestions) for each field its message does not declare."""
+    known = schema.messages.get(message)
+    if known is None:
+        return
+    for f in fields:
+        if f.extension:
+            exts = schema.extensions.get(message, {})
+            name = f.name.lstrip(".")
+            kind = next((t for e, t in exts.items() if e == name or name.endswith("." + e)), None)
+            if kind is None:
+                kind = next((t for e, t in exts.items() if e.endswith("." + name)), None)
+        else:
+            kind = known.get(f.name)
+            if kind is None:
+                yield f, message, suggestions(f.name.lower(), known)
+                continue
+        if kind is not None and f.children is not None and kind in schema.messages:
+            yield from _text_unknown(f.children, kind, schema, app)
+
+
+def suggestions(key: str, known) -> list[str]:
+    # a plug included by many missions asks the same question many times
+    return list(_close_matches(key, tuple(sorted(known))))
+
+
+@functools.lru_cache(maxsize=4096)
+def _close_matches(key: str, known: tuple[str, ...]) -> tuple[str, ...]:
+    return tuple(difflib.get_close_matches(key, known, n=3, cutoff=0.75))
+
+
+@rule(
+    code="M001",
+    name="unknown-parameter",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS,),
+    fixable=True,
+)
+def check(ctx):
+    for block, app in block_apps(ctx):
+        if not app.strict:
+            continue
+        for p in block.params:
+            key = p.lkey
+            if not key or app.reads(key) or has_macro(p.key) or key in _FILE_WIDE:
+                continue
+            if key.startswith(("#", "/", "[")) or "[" in key or "]" in key:
+                continue
+            close = suggestions(key, app.params)
+            msg = f"`{p.key.strip()}`: {app.name} does not read this parameter"
+            fix = None
+            if close:
+                msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
+            if len(close) == 1:
+                fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
+            yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
+    schema = text_format_schema()
+    for block, tapp in text_blocks(ctx):
+        for f, message, close in _text_unknown(block.text_fields, tapp.message, schema, tapp):
+            msg = f"`{f.name}`: {tapp.name} reads this block as protobuf text, and `{message}`"
+            msg += " has no such field"
+            fix = None
+            if close:
+                msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
+            if len(close) == 1:
+                fix = Fix(f"respell as `{close[0]}`", (Edit(f.name_span, close[0]),))
+            src = schema.sources.get(message, "")
+            yield ctx.report(
+                f.name_span, msg + f" ({tapp.provenance}; {src})", line=f.line, fix=fix
+            )

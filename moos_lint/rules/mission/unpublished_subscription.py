@@ -1,0 +1,110 @@
+"""A condition waits for a variable that nothing in the mission publishes.
+
+## What it does
+In a mission (after nsplug expansion, with its behavior files), takes every
+variable that a logic condition waits for: behavior `condition` and
+`lead_condition` lines, the conditions of `set MODE` blocks, and the
+`condition` parameters of launched apps (uTimerScript, pEchoVar, uQueryDB,
+...). It reports a variable that no part of the mission publishes:
+
+- a launched app (the catalogue: stock apps, catalogue files, the linted
+  C++), including dynamic names with a known prefix or suffix;
+- a configuration value that names a published variable (uTimerScript
+  events, pMarineViewer buttons and actions, pEchoVar targets, share and
+  bridge routes, ...);
+- the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
+  `set MODE` variables, the variables behaviors post;
+- a `uPokeDB ... VAR=value` in a shell script beside the mission;
+- when the mission receives variables from another community (pShare,
+  uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
+  in its folder publish.
+
+When the mission launches apps that the catalogue does not know, or names
+behavior files the model cannot find, the finding is an `info` that says the
+check was incomplete, and names what was not known.
+
+## Why is this bad?
+A condition on a variable that is never posted never becomes true: the
+behavior stays idle, the timer script never starts, and nothing says why.
+Most often the name is misspelled (`DEPOLY = true`) or the app that should
+post it is not launched.
+
+## Example
+```bhv
+Behavior = BHV_Waypoint
+{
+  name      = transit
+  condition = DEPOLY = true      // the button posts DEPLOY
+  points    = 0,0 : 100,0
+}
+```
+
+## How to fix
+Correct the name, or launch (or configure) the process that posts it.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported:
+- names with run-time placeholders (`$[OWNSHIP]`, `$(VNAME)` left by
+  nsplug) and wildcards;
+- a mission that receives variables from another community when no other
+  mission in its folder describes that community: anything may arrive;
+- variables that a person pokes by hand (uPokeDB from a terminal,
+  uMAC): give them a publisher in the mission, or suppress the finding.
+"""
+
+from moos_lint.files.diagnostics import Severity, Subject
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.mission_model import mission_model
+from moos_lint.semantics.variables import bare_name
+
+
+def _gaps(model) -> list[str]:
+    out = [
+        f"`{p.name}`"
+        + (f" ({p.binary})" if p.binary != p.name else "")
+        + " is not in the catalogue"
+        for p in model.unknown_apps
+    ]
+    out += [f"behavior file `{b}` was not found" for b in model.unresolved_behaviors]
+    return out
+
+
+@rule(
+    code="M005",
+    name="unpublished-subscription",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    kinds=(Kind.MOOS,),
+)
+def check(ctx):
+    model = mission_model(ctx)
+    if model.inbound and not model.sibling_missions:
+        return  # variables may come from a community the linter cannot see
+    gaps = _gaps(model)
+    seen: set[tuple[str, str, int]] = set()
+    for ref in model.waits:
+        name = bare_name(ref.name)
+        if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
+            continue
+        if model.published_by(name):
+            continue
+        key = (name, ref.line.path, ref.line.lineno)
+        if key in seen:
+            continue
+        seen.add(key)
+        owner = ref.app if ref.app else "the mission"
+        subject = Subject(variable=name, app=ref.app or None, key=ref.param)
+        msg = f"`{name}`: {owner}'s {ref.param} waits for it, "
+        msg += "but nothing in the mission publishes it"
+        if gaps:
+            yield ctx.report(
+                ref.span,
+                msg + "; the check is incomplete: " + "; ".join(gaps[:3]),
+                line=ref.line,
+                severity=Severity.INFO,
+                subject=subject,
+            )
+        else:
+            yield ctx.report(ref.span, msg, line=ref.line, subject=subject)

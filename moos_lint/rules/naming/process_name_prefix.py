@@ -1,0 +1,191 @@
+"""A process name that does not start with `i`, `p` or `u`.
+
+## What it does
+Reports a MOOS process name that does not start with `i`, `p` or `u`
+followed by an upper-case letter (`iGPS`, `pHelmIvP`, `uXMS`). It looks at
+every name a process runs under:
+
+- the program of an Antler `Run` line (`Run = Logger @ ...`);
+- the `~` alias of a `Run` line (`Run = pShare @ NewConsole = false ~ ShareA`);
+- an alias given through `ExtraProcessParams` as `--alias=NAME`;
+- a `ProcessConfig = NAME` header whose name no `Run` line of the same file
+  launches (a name launched in the file is reported once, on its `Run` line).
+
+The MOOS infrastructure is exempt, in any case: `MOOSDB`, `ANTLER` /
+`pAntler`, and the command-line tools MOOS core ships beside the MOOSDB
+(`umm`, `mtm`, `gtm`, `ktm`, `atm`, `mqos`: monitors and timing tools named
+like Unix utilities). Names that hold an nsplug macro (`$(X)`) are skipped.
+
+
+In C++ (a folder of a MOOS app's sources), it checks the app's process name:
+the literal first argument of `App.Run("pName", ...)` in `main`, else the
+CMake `add_executable(pName ...)` of the folder (read as text), else the
+folder name. It reports on the `Run` literal, or on the app class when the
+name comes from CMake or the folder. Only folders with a class derived from
+CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps.
+
+## Why is this bad?
+The MOOS Conventions (section 4.1) name every application by what it does:
+`i` for interface apps that talk to hardware or the outside world, `p` for
+pure apps that only talk to the MOOSDB, `u` for utilities. The prefix is how a
+reader of a mission file, of `uProcessWatch` or of the MOOSDB's client list
+tells one kind from another. MOOS-IvP follows it everywhere: every program
+launched in its missions has a prefix except `MOOSDB`, and its aliases keep
+the program's prefix (`uTimerScript_PING`, `pXRelay_APPLES`,
+`--alias=pHelmIvP_Standby`). The only names without one are the aliases
+`ShareA` / `ShareB` of a pShare test script in MOOS core, and they are
+reported.
+
+MOOS-IvP departs from the 2007 document in *what* the prefixes mean
+(`u` apps such as uSimMarine run during missions, `p` apps such as pLogger and
+pMarineViewer do I/O), so this rule checks only that a prefix is there, not
+that it is the right one.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB  @ NewConsole = false
+  Run = Logger  @ NewConsole = false
+  Run = pShare  @ NewConsole = false ~ ShareA
+}
+```
+
+## How to fix
+Rename the program, or choose an alias that keeps the program's prefix
+(`~ pShare_A`), and rename its `ProcessConfig` block to match.
+
+## Options
+- `exempt` (list of strings, default `["MOOSDB", "ANTLER", "pAntler", "umm", "mtm",
+  "gtm", "ktm", "atm", "mqos"]`):
+  names that need no prefix, compared without regard to case.
+- `check-aliases` (bool, default `true`): also check `~` aliases,
+  `--alias=` names and the `ProcessConfig` blocks of aliases. With `false`,
+  only program names and blocks that are not an alias are checked.
+"""
+
+from __future__ import annotations
+
+import re
+import weakref
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+_PREFIXED = re.compile(r"^[ipu][A-Z]")
+
+
+#: MOOS's own programs: the database, the launcher, and MOOS core's command-line tools
+#: (``MOOSCore/Core/tools``: umm, mtm, gtm, ktm, atm, mqos)
+INFRASTRUCTURE = ("MOOSDB", "ANTLER", "pAntler", "umm", "mtm", "gtm", "ktm", "atm", "mqos")
+
+
+def conforms(name: str, exempt: set[str]) -> bool:
+    return bool(_PREFIXED.match(name)) or name.lower() in exempt
+
+
+@rule(
+    code="N001",
+    name="process-name-prefix",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.CPP),
+    options={"exempt": list(INFRASTRUCTURE), "check-aliases": True},
+)
+def check(ctx):
+    if ctx.unit.kind is Kind.CPP:
+        yield from cpp_check(ctx)
+        return
+    exempt = {str(n).lower() for n in ctx.options.get("exempt", [])}
+    check_aliases = bool(ctx.options.get("check-aliases", True))
+    launched: set[str] = set()
+    aliases: set[str] = set()
+    for run in ctx.moos.runs:
+        program = run.binary.replace("\\", "/").rsplit("/", 1)[-1]
+        launched.add(run.name.lower())
+        if program and not has_macro(program) and not conforms(program, exempt):
+            yield ctx.report(
+                run.binary_span,
+                f"process `{program}` does not start with `i`, `p` or `u` and an upper-case letter",
+                line=run.param.line,
+            )
+        for alias, span, line in _aliases(run):
+            aliases.add(alias.lower())
+            if check_aliases and not has_macro(alias) and not conforms(alias, exempt):
+                yield ctx.report(
+                    span,
+                    f"alias `{alias}` of `{program}` does not start with `i`, `p` or `u` "
+                    "and an upper-case letter",
+                    line=line,
+                )
+    elsewhere_launched, elsewhere_aliases = _launched_in_run(ctx.run)
+    for block in ctx.moos.blocks:
+        name = block.name
+        low = name.lower()
+        if not name or has_macro(name) or low in launched or low in elsewhere_launched:
+            continue  # judged on its Run line
+        if not check_aliases and (low in aliases or low in elsewhere_aliases):
+            continue
+        if not conforms(name, exempt):
+            yield ctx.report(
+                block.name_span,
+                f"ProcessConfig name `{name}` does not start with `i`, `p` or `u` "
+                "and an upper-case letter",
+                line=block.header,
+            )
+
+
+def _aliases(run):
+    """(alias, span, line) for the `~` alias and a `--alias=` given through ExtraProcessParams."""
+    if run.alias:
+        tilde = run.param.line.text.find("~", run.param.value_start)
+        if tilde >= 0:
+            idx = run.param.line.text.find(run.alias, tilde)
+            span = run.param.line.span(idx, idx + len(run.alias)) if idx >= 0 else run.name_span
+        else:
+            span = run.name_span
+        yield run.alias, span, run.param.line
+    if run.alias_from_params:
+        extra = run.options.get("extraprocessparams", "").lower()
+        block = run.param.block
+        for p in block.params if block is not None else ():
+            if "".join(p.key.split()).lower() != extra:
+                continue
+            text = p.line.text
+            idx = text.find("--alias=", p.value_start)
+            if idx >= 0:
+                start = idx + len("--alias=")
+                end = start + len(run.alias_from_params)
+                yield run.alias_from_params, p.line.span(start, end), p.line
+                return
+        yield run.alias_from_params, run.binary_span, run.param.line
+
+
+_LAUNCHED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _launched_in_run(run) -> tuple[set[str], set[str]]:
+    """Names (lower case) launched by any file of this lint run, and those that are aliases."""
+    units = run.units  # the key is cheap: this runs once per unit of the run
+    key = (id(units), len(units), id(units[0]) if units else 0, id(units[-1]) if units else 0)
+    cached = _LAUNCHED.get(run)
+    if cached is None or cached[0] != key:
+        names: set[str] = set()
+        aliases: set[str] = set()
+        for unit in run.units:
+            for r in unit.moos.runs if unit.moos is not None else ():
+                names.add(r.name.lower())
+                aliases.update(a.lower() for a, _, _ in _aliases(r))
+        cached = _LAUNCHED[run] = (key, names, aliases)
+    return cached[1], cached[2]
+
+
+def cpp_check(ctx):
+    """The C++ check, on the app model (see :mod:`moos_lint.semantics.cpp_checks`)."""
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import process_name_prefix
+
+    yield from cpp_findings(
+        ctx, process_name_prefix, exempt=tuple(str(n) for n in ctx.options.get("exempt", []))
+    )

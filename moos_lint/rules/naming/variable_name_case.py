@@ -1,0 +1,125 @@
+"""A MOOS variable name that is not UPPER_SNAKE_CASE.
+
+## What it does
+Reports a MOOS variable name written with anything but upper-case letters,
+digits and `_`, wherever a configuration value names a variable:
+
+- helm `.bhv` files: conditions (`condition = (DEPLOY = true) and (RETURN != true)`),
+  the conditions of `set` blocks, flags (`endflag = RETURN = true`, `runflag`,
+  `activeflag`, `wptflag`, `cycleflag`, ..., also with `@` and `#` tags and
+  `[if]` conditions), `updates`, `duration_status`, `post_mapping`,
+  `initialize` and the `set MODE` variable;
+- stock apps in `.moos` files: pLogger `Log = VAR @ 0`, uTimerScript
+  `event = var=VAR, ...` and `condition`, pShare `output`, pMOOSBridge
+  `SHARE`, uFldNodeBroker / uFldShoreBroker `bridge` and `qbridge`, pEchoVar
+  `echo`, pMarineViewer `button_*`, `action`, `scope`, `cmd` and
+  `left_context[...]`, uXMS `var` and many more (the full list is the table
+  in `moos_lint/semantics/variables.py`).
+
+Wildcards (`*`, `?`) are accepted where the app accepts them (pLogger
+`WildCardPattern` / `WildCardOmitPattern`, pShare `output`). Elsewhere a
+wildcard is reported: uXMS, for example, registers `VAR = IMS_*` literally
+(a plain `Register`), so it shows a variable named `IMS_*` that nobody
+posts; two MOOS-IvP missions (`m9_indigo/hotel.moos`,
+`s9_indigo/indigo.moos`) do this. Run-time placeholders that the app
+expands itself (`$[OWNSHIP]`, `$V`, `$UP_V1`) are left out of the check, and a
+name holding an nsplug macro (`$(X)`, `%(X)`) is skipped. Values of
+parameters moos-lint does not know are not looked at.
+
+MOOS-IvP's own missions follow the convention in all but a handful of the
+more than 5000 variable names they configure. Two kinds of exceptions
+remain, and both are reported:
+- A few missions post the condition `(alpha = one) or (bravo = two)` as a
+  never-true placeholder; `alpha` and `bravo` are still variables the helm
+  subscribes to.
+- `button_seven = REFINE:N # CONTACT_INFO_ALL = name=avdcol # use_refinery=false`
+  (`m2_berta`): pMarineViewer splits button values on `#`, so this button
+  posts a second variable named `use_refinery` instead of one
+  `CONTACT_INFO_ALL` value. That is a real bug (quote the value).
+
+
+In C++, it checks the names an app publishes (`Notify`) and subscribes to
+(`Register`) where they are known statically: literals, `"LIT" + suffix`
+concatenations of known parts, string constants and members assigned one
+literal, and `#define` string macros. Names built at run time are never
+reported.
+
+## Why is this bad?
+MOOS variable names are case-sensitive: `Deploy` and `DEPLOY` are two
+variables, and a subscriber waiting for one never sees the other. The MOOS
+Conventions and every MOOS-IvP app use UPPER_SNAKE_CASE, so a name in another
+case is almost always a typo, or a value that the app reads as a variable
+name by mistake.
+
+## Example
+```moos
+ProcessConfig = pLogger
+{
+  Log = Nav_Speed @ 0
+}
+```
+
+## How to fix
+Write the name in upper case (and fix every publisher and subscriber of the
+old name). If a value was meant to be a value, quote it or fix its separators.
+
+## Options
+- `allow` (list of strings, default `[]`): names (shell-style globs) that may
+  be in any case, for apps outside your control.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import re
+
+from moos_lint.files.diagnostics import Severity, Subject
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.variables import bare_name, unit_variables
+
+_UPPER = re.compile(r"[A-Z0-9_]*")
+_UPPER_WILD = re.compile(r"[A-Z0-9_*?]*")
+
+
+@rule(
+    code="N003",
+    name="variable-name-case",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
+    options={"allow": []},
+)
+def check(ctx):
+    if ctx.unit.kind is Kind.CPP:
+        yield from cpp_check(ctx)
+        return
+    allow = [str(a) for a in ctx.options.get("allow", [])]
+    for ref in unit_variables(ctx.moos, ctx.bhv):
+        bare = bare_name(ref.name)
+        if bare is None:
+            continue
+        pattern = _UPPER_WILD if ref.wildcard else _UPPER
+        if pattern.fullmatch(bare):
+            continue
+        if any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
+            continue
+        where = f"{ref.app} `{ref.param}`"
+        if not ref.wildcard and _UPPER_WILD.fullmatch(bare):
+            message = (
+                f"MOOS variable `{ref.name}` is not UPPER_SNAKE_CASE: {where} takes names "
+                "literally, so the wildcard matches no variable"
+            )
+        else:
+            message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
+        subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
+        yield ctx.report(ref.span, message, line=ref.line, subject=subject)
+
+
+def cpp_check(ctx):
+    """The C++ check, on the app model (see :mod:`moos_lint.semantics.cpp_checks`)."""
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import variable_name_case
+
+    yield from cpp_findings(
+        ctx, variable_name_case, allow=tuple(str(a) for a in ctx.options.get("allow", []))
+    )

@@ -1,0 +1,45 @@
+"""An `#include` whose file cannot be found or read.
+
+## What it does
+Reports an nsplug `#include` of a file that does not exist in any of the
+folders nsplug searches, or that cannot be read.
+
+moos-lint searches where nsplug does: the folder nsplug runs in (taken to be
+the top-level file's folder), then each `--include-path` folder (nsplug's
+`--path`), then the including file's folder, then the folders that the
+launch scripts beside the top-level file (`*.sh`, read as text, never run)
+hand nsplug with `--path=DIR` or `-p DIR`.
+
+## Why is this bad?
+nsplug stops with an error and writes no mission file, so the launch script
+fails; with `--force` in a script the old generated file is used instead.
+Includes whose path still holds an unknown `$(MACRO)` are skipped, not
+reported.
+
+## Example
+```moos
+#include plug_origin_warp.moos   // the file is plugs/plug_origin_warp.moos
+```
+
+## How to fix
+Fix the path, or pass the folder with `--include-path` (config:
+`include-paths`) as the launch script passes it to nsplug with `--path`.
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.nsplug._problems import problem_findings
+
+
+@rule(
+    code="P001",
+    name="include-not-found",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    yield from problem_findings(ctx, "include-not-found")

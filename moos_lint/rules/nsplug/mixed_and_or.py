@@ -1,0 +1,35 @@
+"""An `#ifdef` that mixes `||` and `&&`.
+
+## What it does
+Reports an `#ifdef` / `#elseifdef` condition using both `||` and `&&`.
+
+## Why is this bad?
+nsplug does not support mixed conditions: it prints a warning and evaluates
+the condition as false (with `--strict` it exits).
+
+## Example
+```moos
+#ifdef VNAME abe || VNAME ben && SIM
+```
+
+## How to fix
+Nest two conditionals instead.
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.nsplug._problems import problem_findings
+
+
+@rule(
+    code="P008",
+    name="mixed-and-or",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    yield from problem_findings(ctx, "mixed-and-or")

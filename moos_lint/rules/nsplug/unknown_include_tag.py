@@ -1,0 +1,36 @@
+"""An `#include FILE <tag>` of a tag the file does not have.
+
+## What it does
+Reports `#include plugs.moos <name>` when `plugs.moos` has no
+`<tag><name>` section.
+
+## Why is this bad?
+nsplug includes nothing and says nothing: the block the author meant to
+include is silently missing from the mission.
+
+## Example
+```moos
+#include plugs.moos <pShare>     // plugs.moos has <tag><pshare>
+```
+
+## How to fix
+Use the tag as spelled in the included file (tags are case-sensitive).
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.nsplug._problems import problem_findings
+
+
+@rule(
+    code="P007",
+    name="unknown-include-tag",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    yield from problem_findings(ctx, "unknown-include-tag")

@@ -1,0 +1,65 @@
+"""A line in a behavior file that the helm rejects.
+
+## What it does
+Reports a line of a `.bhv` file that the IvP helm's behavior-file reader does
+not accept: a top-level line that is not `initialize`, `Behavior =`, `set`,
+a brace or a comment; a Behavior-block line without `=`; an `initialize`
+followed by a tab or with a malformed `VAR=VALUE` pair; a `#` line (not a
+comment in a behavior file).
+
+A run of consecutive lines rejected for the same reason (a `/* ... */` block,
+a pasted paragraph) is one finding, on its first line.
+
+## Why is this bad?
+The helm reports `Problem with line N in the BehaviorSet file` and the *whole*
+behavior set fails to load: the vehicle has no behaviors at all.
+
+## Example
+```bhv
+# the survey behaviors
+initialize DEPLOY = false
+Behavior = BHV_Waypoint
+{
+  name = survey
+  speed 2.0
+}
+```
+
+## How to fix
+Use `//` for comments, and `key = value` for every parameter line.
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+
+@rule(
+    code="B001",
+    name="bhv-invalid-line",
+    severity=Severity.ERROR,
+    scope=Scope.FILE,
+    kinds=(Kind.BHV,),
+)
+def check(ctx):
+    flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
+    runs: list[list] = []  # consecutive lines rejected for one reason: one finding
+    for line, reason in ctx.bhv.invalid:
+        if (line.path, line.lineno) in flagged:
+            continue  # an nsplug problem on this line is reported already
+        last = runs[-1][-1] if runs else None
+        if (
+            last
+            and last[1] == reason
+            and last[0].path == line.path
+            and (line.lineno - last[0].lineno == 1)
+        ):
+            runs[-1].append((line, reason))
+        else:
+            runs.append([(line, reason)])
+    for run in runs:
+        line, reason = run[0]
+        more = f" (and the {len(run) - 1} lines after it)" if len(run) > 1 else ""
+        yield ctx.at_line(line, f"{reason}{more}: the helm fails to load the whole behavior file")

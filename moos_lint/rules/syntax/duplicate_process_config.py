@@ -1,0 +1,65 @@
+"""Two ProcessConfig blocks for one name.
+
+## What it does
+Reports a second `ProcessConfig` block with the same name (compared without
+regard to case, as MOOS does) in one file, after nsplug expansion.
+
+## Why is this bad?
+MOOS uses the first block it finds and silently ignores the later one: edits
+to the second block have no effect. Through nsplug `#include`s this is easy to
+do by accident. Blocks in mutually exclusive `#ifdef` branches are fine.
+
+## Example
+```moos
+ProcessConfig = pLogger
+{
+  AsyncLog = true
+}
+ProcessConfig = pLogger
+{
+  WildCardLogging = true
+}
+```
+
+## How to fix
+Merge the two blocks into one.
+
+## Options
+None.
+"""
+
+from typing import Any
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Scope, rule
+
+
+@rule(code="R011", name="duplicate-process-config", severity=Severity.ERROR, scope=Scope.FILE)
+def check(ctx):
+    # Per name, the first block of each distinct set of ``#ifdef`` branches, in order:
+    # a block's first compatible predecessor is among them. Blocks outside any branch
+    # are compatible with all, so none after the first such block is kept, and a file
+    # of many duplicate blocks is checked in linear time.
+    firsts: dict[str, dict[tuple, Any]] = {}
+    closed: set[str] = set()  # names with a block outside any branch
+    for block in ctx.moos.blocks:
+        header = block.header
+        kept = firsts.setdefault(block.lname, {})
+        first = next((b for b in kept.values() if not b.header.excludes(header)), None)
+        if first is not None:
+            yield ctx.report(
+                block.name_span,
+                f"second block for `{block.name}` (first at "
+                f"{_where(first.header)}): MOOS ignores this one",
+                line=header,
+            )
+        if block.lname not in closed and header.branches not in kept:
+            kept[header.branches] = block
+            if not header.branches:
+                closed.add(block.lname)
+
+
+def _where(line) -> str:
+    import os
+
+    return f"{os.path.basename(line.path)}:{line.lineno}"

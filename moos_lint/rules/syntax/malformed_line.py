@@ -1,0 +1,51 @@
+"""A line that is neither a comment, a directive, a brace nor `key = value`.
+
+## What it does
+Reports a line in a `.moos` file that MOOS cannot read as anything: it has no
+`=`, is not a `//` comment, not a block brace and not an nsplug directive.
+
+## Why is this bad?
+MOOS drops such a line without a word. It is usually a typo (`AppTick 4`,
+a missing `=`) or a leftover note, and whatever the author meant it to set is
+not set.
+
+## Example
+```moos
+ProcessConfig = pLogger
+{
+  AppTick 4
+}
+```
+
+Inside a block that an app reads with protobuf's text format (goby's MOOS
+apps such as pAcommsHandler and iFrontSeat, or a block whose lines are mostly
+`key: value`), the line must read as protobuf text instead: `name: value`,
+`name { ... }` with balanced braces, `#` comments. The app stops at start-up
+on such a line ("fatal configuration errors").
+
+## How to fix
+Add the `=`, or turn the line into a `//` comment. In a protobuf-text block,
+write `name: value` or `name { ... }`.
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Scope, rule
+
+
+@rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)
+def check(ctx):
+    for line in ctx.moos.malformed:
+        text = line.text.strip()
+        if text.startswith("#") or (text.startswith("/") and not text.startswith("//")):
+            continue  # reported by not-a-comment / the nsplug rules
+        yield ctx.at_line(line, "MOOS cannot read this line: it has no `key = value` form")
+    for block in ctx.moos.blocks:
+        for line, start, end, why in block.text_errors:
+            yield ctx.report(
+                line.span(start, end),
+                f"{block.name} reads this block as protobuf text: {why}",
+                line=line,
+            )

@@ -1,0 +1,53 @@
+"""A line that looks like a comment but is not one to MOOS.
+
+## What it does
+Reports a line starting with `#` that is not an nsplug directive, and a line
+starting with a single `/`. In a `.moos` file only `//` starts a comment.
+
+## Why is this bad?
+MOOS reads `#Run = pFoo` as a live line whose key is `#Run`: the Run line is
+not a Run line any more, so the process silently never launches, and
+`#LatOrigin = 43.8` silently drops the origin. A line such as
+`/ old comment` is read as a live line too, dropped only for lacking `=`.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB @ NewConsole = false
+  #Run = pLogger @ NewConsole = false
+}
+```
+
+## How to fix
+Comment lines out with `//`.
+
+## Options
+None.
+"""
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Scope, rule
+
+
+@rule(code="R007", name="not-a-comment", severity=Severity.WARNING, scope=Scope.FILE)
+def check(ctx):
+    flagged = {
+        (p.span.path, p.span.line)
+        for p in ctx.expansion.problems
+        if p.kind in ("unknown-directive", "malformed-directive")
+    }
+    for line in ctx.moos.lines:
+        text = line.text.lstrip()
+        if (line.path, line.lineno) in flagged:
+            continue
+        if text.startswith("#"):
+            yield ctx.at_line(
+                line,
+                "`#` does not start a comment in a .moos file: MOOS reads this line (use `//`)",
+            )
+        elif text.startswith("/") and not text.startswith("//"):
+            yield ctx.at_line(
+                line,
+                "a single `/` does not start a comment: MOOS reads this line (use `//`)",
+            )

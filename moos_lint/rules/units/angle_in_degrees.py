@@ -1,0 +1,97 @@
+"""A pitch, roll or other radian angle written in degrees.
+
+## What it does
+Reports a literal value larger than 2π given to a pitch, roll or other
+radian field: a MOOS variable or parameter whose name ends in the word
+`PITCH`, `ROLL` or `RADIANS` (`NAV_PITCH`, `NAV_ROLL`, `START_PITCH`,
+`TILT_RADIANS`). Values are found where `yaw-in-degrees` finds
+them (parameters, uTimerScript events, flags, pMarineViewer postings,
+behavior-file `initialize`). Yaw itself is `yaw-in-degrees`. A fix replaces
+the literal with its radian value (value·π/180, wrapped to ±π, 4 decimals).
+
+
+In C++, it reports `Notify` of a ROLL or PITCH variable with a degree
+value (a literal above 2π, a radians-to-degrees conversion, a library getter
+or device value in degrees, an angle read from the same device array as one
+a consumer converts from degrees), and of an angular rate (`*_GYRO_*`,
+`YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a
+`*_DPS` scale).
+
+The value is read by moos-lint's value analysis of C++ (unit, sense, range
+and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
+inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
+names and comments that state a unit, followed through locals, members set in
+any method, and functions anywhere in the repository (a library getter);
+another app of the repository that converts the variable from degrees on
+arrival counts as evidence too. The finding says why, as a chain. What the
+analysis cannot know is never reported.
+
+## Why is this bad?
+The MOOS Conventions put every angle except heading in radians, and MOOS-IvP
+publishes `NAV_PITCH` in radians. A pitch of `15` is read as 15 radians.
+
+This rule is off by default: unlike yaw, pitch and roll appear in app
+configuration with app-specific units, and MOOS-IvP itself documents some of
+them in degrees (pMarinePID's `maxpitch`, exempted here; `DESIRED_ELEVATOR`
+is degrees too, but its name does not match). Enable it for code bases that
+follow the radian convention for every angle.
+
+Deliberately not reported: heading fields (degrees by convention), names
+where the angle word is not the last (`pitch_pid_kp`), `maxpitch` and
+`max_pitch`, and values that are not one plain number.
+
+## Example
+```bhv
+initialize NAV_PITCH=15
+```
+
+## How to fix
+Give the angle in radians, wrapped to ±π:
+```bhv
+initialize NAV_PITCH=0.2618
+```
+
+## Options
+None.
+"""
+
+import math
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.angles import angle_values, degrees_to_radians
+
+
+@rule(
+    code="U003",
+    name="angle-in-degrees",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
+    default_enabled=False,
+    fixable=True,
+)
+def check(ctx):
+    if ctx.unit.kind is Kind.CPP:
+        yield from cpp_check(ctx)
+        return
+    for av in angle_values(ctx):
+        if av.kind == "yaw" or abs(av.value) <= 2 * math.pi:
+            continue
+        new, conv = degrees_to_radians(av.literal, av.value)
+        what = "this field is" if av.kind == "radian" else f"{av.kind} is"
+        yield ctx.report(
+            av.span,
+            f"`{av.name}` = {av.literal} looks like degrees, but {what} in radians: "
+            f"as degrees it is {conv}",
+            line=av.line,
+            fix=av.fix(new, f"write the angle in radians: {new}"),
+        )
+
+
+def cpp_check(ctx):
+    """The C++ check, on the app model (see :mod:`moos_lint.semantics.cpp_checks`)."""
+    from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.cpp_checks import angle_in_degrees
+
+    yield from cpp_findings(ctx, angle_in_degrees)

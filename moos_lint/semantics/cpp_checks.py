@@ -1,0 +1,299 @@
+"""The C++ checks of moos-lint's rules: plain functions over an :class:`AppModel`.
+
+Each yields ``(span, message)``; the rule modules turn them into findings.
+Names that cannot be resolved statically are dynamic and never reported.
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import re
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from moos_lint.files.diagnostics import Span
+from moos_lint.frontends.cpp import angle_exprs as angles
+from moos_lint.frontends.cpp.model import AppModel, Publication
+
+Finding = tuple[Span, str]
+UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
+#: apps whose network traffic carries MOOS itself
+MOOS_NETWORK_APPS = ("pShare", "pMOOSBridge", "MOOSDB")
+
+
+def _named(app: AppModel, pred) -> Iterator[Publication]:
+    for p in app.publications:
+        if p.name.text is not None and p.value is not None and pred(p.name.text):
+            yield p
+
+
+def _app_label(app: AppModel) -> str:
+    return f"`{app.process_name}`" if app.process_name else "this app"
+
+
+def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_app or not name or app.process_name_span is None:
+        return
+    if name.lower() in {e.lower() for e in exempt} or re.match(r"^[ipu][A-Z]", name):
+        return
+    if app.process_name_source == "folder" and name.islower():
+        return  # a generic folder (src, attic, test): the name is a guess
+    where = {
+        "run": "as given to Run()",
+        "cmake": "the CMake add_executable name",
+        "folder": "from its folder, as no Run() literal or add_executable names it",
+    }[app.process_name_source]
+    yield (
+        app.process_name_span,
+        f"process name `{name}` ({where}) does not start with i, p or u "
+        "(instrument, process, utility)",
+    )
+
+
+def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_instrument or not name or app.app_class is None:
+        return
+    if name.startswith("i"):
+        return
+    yield (
+        app.app_class.span,
+        f"`{app.app_class.name}` derives from CMOOSInstrument but its process is `{name}`: "
+        "instruments are named with an `i` prefix",
+    )
+
+
+def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
+    name = app.process_name
+    if not app.is_app or not name or not re.match(r"^[pu][A-Z0-9_]", name):
+        return
+    uses = [u for u in app.io if u.device]
+    termios = [u for u in app.io if u.kind == "termios"]
+    if termios and any(u.kind == "serial" for u in uses):
+        uses = [*uses, *termios]
+    bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in app.io)
+    if sockets and name.startswith("p") and not bridge:
+        uses += [u for u in app.io if u.kind == "socket"]
+    if not uses:
+        return
+    first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))
+    kinds = sorted({u.detail for u in uses})
+    kind = "a `p` app" if name.startswith("p") else "a `u` app"
+    what = "device I/O" if all(u.kind != "socket" for u in uses) else "I/O outside the MOOSDB"
+    yield (
+        first.span,
+        f"{_app_label(app)} is {kind} but does {what} ({', '.join(kinds[:4])}): "
+        "an app that talks to a device, or to a vehicle or service in a protocol that is "
+        "not MOOS, is an interface app, named with an `i` prefix",
+    )
+
+
+def _valued(app: AppModel, pred) -> Iterator[tuple[Publication, Any]]:
+    """Publications whose name (or its known last word) ``pred`` accepts, with their values."""
+    for p in app.publications:
+        name = p.name.last
+        if name and p.value is not None and pred(name):
+            yield p, p.value.abstract
+
+
+def _shown(p: Publication) -> str:
+    """The name as a message quotes it (with how it is built when only its end is known)."""
+    if p.name.text is not None:
+        return f"`{p.name.text}`"
+    source = " ".join(p.name.source.split())
+    if p.name.suffix in source:
+        return f"`{p.name.suffix}` (named by `{source}`)"
+    return f"`{source}` (a {angles.last_word(p.name.suffix)} by its index)"
+
+
+def _because(v: Any) -> str:
+    """The chain of reasons, source first, as a parenthesis."""
+    return f" ({v.explanation})" if v is not None and v.why else ""
+
+
+def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_yaw_var):
+        if v is None or v.unit != "rad" or v.sense != "heading":
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is a heading turned into radians without the minus sign"
+            f"{_because(v)}; yaw is −heading·π/180 (heading turns clockwise, yaw "
+            "counter-clockwise)",
+        )
+
+
+def heading_in_radians(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_heading_var):
+        if v is None or v.unit != "rad":
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published in radians{_because(v)}: "
+            "headings are degrees, 0 = north, clockwise",
+        )
+
+
+def depth_z_sign(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, lambda n: angles.is_z_var(n) or angles.is_depth_var(n)):
+        if v is None or v.sign is None:
+            continue
+        name = p.name.last
+        if angles.is_z_var(name) and v.sign == "down":
+            what, rule = "a depth (positive down)", "Z is up, so Z = −depth"
+        elif angles.is_depth_var(name) and v.sign == "up" and not v.hint:
+            what, rule = "a Z (positive up)", "depth is down, so depth = −Z"
+        else:
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published from {what} without negation{_because(v)}: {rule}",
+        )
+
+
+def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_latlong_var):
+        if v is None or v.unit != "rad":
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published in radians{_because(v)}: "
+            "latitude and longitude are decimal degrees",
+        )
+
+
+def yaw_in_degrees(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_yaw_var):
+        val = p.value
+        if angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
+            yield (
+                val.span,  # type: ignore[union-attr]
+                f"{_shown(p)} is published as {val.text}, more than 2π: "  # type: ignore[union-attr]
+                "a yaw is in radians",
+            )
+        elif v is not None and v.unit == "deg":
+            yield (
+                val.span,  # type: ignore[union-attr]
+                f"{_shown(p)} is published in degrees{_because(v)}: a yaw is in radians",
+            )
+
+
+def angle_not_wrapped(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, lambda n: angles.is_yaw_var(n) or angles.is_other_angle_var(n)):
+        if v is None or v.unit != "rad" or v.range is None:
+            continue
+        if angles_within(v):
+            continue
+        from moos_lint.frontends.cpp.values import range_text
+
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} lies in {range_text(v.range, v.unit)}{_because(v)}: "
+            "angles are wrapped to ±π (MOOS_ANGLE_WRAP)",
+        )
+
+
+def angles_within(v: Any) -> bool:
+    from moos_lint.frontends.cpp.values import within_pi
+
+    return within_pi(v.range) is not False
+
+
+def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, lambda n: angles.is_other_angle_var(n) or angles.is_rate_var(n)):
+        val = p.value
+        if angles.is_other_angle_var(p.name.last) and angles.literal_over_two_pi(val.number):  # type: ignore[union-attr]
+            why = f" ({val.text} is more than 2π)"  # type: ignore[union-attr]
+            unit = "degrees"
+        elif v is not None and v.unit in ("deg", "deg/s"):
+            rate_only = angles.is_rate_var(p.name.last) and not angles.is_other_angle_var(
+                p.name.last
+            )
+            if rate_only and v.unit == "deg" and v.hint:
+                continue
+            why = _because(v)
+            unit = "degrees per second" if angles.is_rate_var(p.name.last) else "degrees"
+        else:
+            continue
+        rule = (
+            "angular rates are radians per second"
+            if unit == "degrees per second"
+            else "angles other than heading are radians"
+        )
+        yield (val.span, f"{_shown(p)} is published in {unit}{why}: {rule}")  # type: ignore[union-attr]
+
+
+def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
+    seen = set()
+    items: list[tuple[Any, str]] = [(p, "published") for p in app.publications]
+    items += [(s, "subscribed to") for s in app.subscriptions]
+    for item, verb in items:
+        name = item.name.text
+        if name is None or not name or (item.name_span.path, item.name_span.line, name) in seen:
+            continue
+        seen.add((item.name_span.path, item.name_span.line, name))
+        check = name.replace("*", "").replace("?", "")
+        if not check or UPPER_SNAKE.match(check) or re.fullmatch(r"[A-Z0-9_]+", check):
+            continue
+        if re.search(r"\s", name) or any(fnmatch.fnmatchcase(name, a) for a in allow):
+            continue  # not a variable name (a message or a format), or allowed
+        yield (
+            item.name_span,
+            f"variable `{name}` ({verb}) is not UPPER_SNAKE_CASE",
+        )
+
+
+def unhandled_mail(app: AppModel) -> Iterator[Finding]:
+    if not any(f.has_on_new_mail for f in app.files) or any(f.mail_generic for f in app.files):
+        return
+    keys = app.mail_keys
+    exact = {k.text for k in keys if not (k.prefix or k.suffix)}
+    prefixes = [k.text for k in keys if k.prefix and k.text]
+    suffixes = [k.text for k in keys if k.suffix and k.text]
+    if not exact and not prefixes:
+        return  # no dispatch on literal keys: handling we cannot read
+    seen = set()
+    for s in app.subscriptions:
+        name = s.name.text
+        if name is None or s.name.wildcard or name in seen or name == "APPCAST_REQ":
+            continue
+        seen.add(name)
+        if name in exact or name.upper() in {e.upper() for e in exact}:
+            continue
+        if any(name.startswith(p) for p in prefixes) or any(name.endswith(x) for x in suffixes):
+            continue
+        if s.name.source.strip().startswith('"') is False:
+            continue  # a name built in code may be matched in code too
+        yield (
+            s.name_span,
+            f"{_app_label(app)} registers for `{name}` but its OnNewMail never handles it",
+        )
+
+
+def published_names(app: AppModel) -> Iterator[tuple[str, Span]]:
+    """The names an app publishes that are known statically, each once per place."""
+    seen = set()
+    for p in app.publications:
+        name = p.name.text
+        if not name or p.name.wildcard or (name, p.name_span.path, p.name_span.line) in seen:
+            continue
+        seen.add((name, p.name_span.path, p.name_span.line))
+        yield name, p.name_span
+
+
+def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterator[Finding]:
+    """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR."""
+    for p in app.publications:
+        name = p.name.text
+        if name is None:
+            continue
+        word = word_of(name)
+        if word:
+            key = p.name.config_key
+            where = f" (its default; the configuration key `{key}` may rename it)" if key else ""
+            yield (
+                p.name_span,
+                f"`{name}`{where} names the actuator `{word}`: MOOS actuators are "
+                "THRUST, RUDDER and ELEVATOR (`DESIRED_THRUST`, `DESIRED_RUDDER`, ...)",
+            )

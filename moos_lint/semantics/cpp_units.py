@@ -1,0 +1,58 @@
+"""C++ files as lint units: one unit per folder (an app), carrying its :class:`AppModel`.
+
+:func:`build_cpp_units` parses the files, joins what crosses folders (base
+classes) and runs the libclang deep mode when it is asked for.
+"""
+
+from __future__ import annotations
+
+import os
+
+from moos_lint.files.source import SourceFile
+from moos_lint.files.suffixes import Kind
+from moos_lint.frontends.cpp.app import build_apps, link_apps, read_relevant
+from moos_lint.frontends.cpp.model import AppModel, CppFile
+from moos_lint.frontends.nsplug import Expansion
+from moos_lint.frontends.unit import Unit
+from moos_lint.semantics.run_state import RunView
+
+#: what a worker process read and parsed of one folder: its relevant sources, its files
+ParsedFolder = tuple[dict[str, SourceFile], list[CppFile]]
+
+
+def build_cpp_units(
+    run: RunView, paths: list[str], parsed: dict[str, ParsedFolder] | None = None
+) -> list[Unit]:
+    """Units for the C++ files in ``paths``: one per folder, in folder order.
+
+    ``parsed`` (folder -> (relevant sources, extracted files)) is what worker
+    processes already read and parsed (:mod:`moos_lint.speed.parallel`).
+    """
+    if parsed is None:
+        sources = read_relevant(paths)
+        run.sources.update(sources)
+        apps = {a.folder: a for a in build_apps(sources)}
+    else:
+        found = {p: s for srcs, _ in parsed.values() for p, s in srcs.items()}
+        sources = {p: found[p] for p in paths if p in found}  # in the order of ``paths``
+        run.sources.update(sources)
+        linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
+        link_apps(linked)
+        apps = {a.folder: a for a in linked}
+    if apps:
+        from moos_lint.frontends.cpp.values import link_values
+
+        link_values(list(apps.values()), paths)
+    if run.settings.cpp_backend == "clang" and apps:
+        from moos_lint.frontends.cpp.clang import enrich
+
+        enrich(list(apps.values()), run.settings)
+    units = []
+    folders: dict[str, list[str]] = {}
+    for p in paths:
+        folders.setdefault(os.path.dirname(p), []).append(p)
+    for folder, files in sorted(folders.items()):
+        app = apps.get(folder) or AppModel(folder=folder)
+        first = sorted(f.path for f in app.files)[0] if app.files else sorted(files)[0]
+        units.append(Unit(path=first, kind=Kind.CPP, expansion=Expansion(path=first), cpp=app))
+    return units

@@ -1,0 +1,66 @@
+"""What the modules that build shared models keep for one lint run, declared.
+
+The engine's :class:`moos_lint.core.engine.LintRun` holds one :class:`RunMemos`.
+Each field is filled, and read, only by the module that owns it, through its
+typed accessor:
+
+- ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
+- ``mission_models``, ``pokes``, ``app_publishers``, ``external_publishers``:
+  :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
+- ``repo_cpp_stems``: :func:`moos_lint.rules.mission._behaviors.repo_classes`;
+- ``repo_globals``: :func:`moos_lint.rules.hygiene.unknown_key._repo_globals`.
+
+Those modules see the run through :class:`RunView`, the part of it they read,
+so that none of them imports the engine.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Protocol
+
+if TYPE_CHECKING:  # types only: the owners import this module, not the reverse
+    from moos_lint.core.config import Settings
+    from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.nsplug import Preprocessor
+    from moos_lint.frontends.unit import Unit
+    from moos_lint.semantics.catalogue import Catalogue
+    from moos_lint.semantics.mission_model import MissionModel, Publisher
+
+
+@dataclass
+class RunMemos:
+    """The memos of one lint run (see the module docs for who fills each)."""
+
+    #: the run's app and behavior catalogue (stock, user files, the run's own C++)
+    catalogue: Catalogue | None = None
+    #: normalised mission path -> its model
+    mission_models: dict[str, MissionModel] = field(default_factory=dict)
+    #: folder -> ``VAR`` -> the script whose ``uPokeDB`` posts it
+    pokes: dict[str, dict[str, str]] = field(default_factory=dict)
+    #: (id of the app's catalogue entry, process name) -> (key, publisher) pairs
+    app_publishers: dict[tuple[int, str], list[tuple[str, Publisher]]] = field(default_factory=dict)
+    #: normalised sibling mission path -> what it publishes, as (key, publisher) pairs
+    external_publishers: dict[str, list[tuple[str, Publisher]]] = field(default_factory=dict)
+    #: lower-case names of the C++ files and classes of the project
+    repo_cpp_stems: frozenset[str] | None = None
+    #: top-of-file keys the run's own C++ apps read with ``GetValue``
+    repo_globals: frozenset[str] | None = None
+
+
+class RunView(Protocol):
+    """The part of a lint run that the model builders read."""
+
+    @property
+    def settings(self) -> Settings: ...
+    @property
+    def units(self) -> list[Unit]: ...
+    @property
+    def sources(self) -> dict[str, SourceFile]: ...
+    @property
+    def preprocessor(self) -> Preprocessor: ...
+    @property
+    def memos(self) -> RunMemos: ...
+
+
+__all__ = ["RunMemos", "RunView"]

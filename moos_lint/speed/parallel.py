@@ -1,0 +1,242 @@
+"""Worker processes for ``--jobs N``: the same result as one process, sooner.
+
+A lint run has two expensive phases, and each is spread over a pool of
+worker processes:
+
+1. **Reading C++.** Each folder of C++ files is read, prefiltered (only files
+   that mention the MOOS API are parsed) and parsed with tree-sitter in a
+   worker; the largest folders go first, so that no big folder starts last.
+   Meanwhile the main process expands and parses the mission and behavior
+   files, then takes the folders no worker has started yet, smallest first.
+   The workers send back plain facts (the relevant sources and the extracted
+   :class:`~moos_lint.frontends.cpp.model.CppFile` records); the main process links them
+   into apps exactly as a single process does.
+2. **Running the rules.** Once every unit is built, a second pool is forked:
+   each worker inherits the whole run (every unit, the cross-unit sets) and
+   runs the rules on the units it is given: a folder at a time (missions there
+   share models), heaviest folders first. It sends back the
+   findings of each unit; the main process merges them in unit order, then
+   applies suppressions and runs the run-wide rules (``unused-suppression``)
+   itself. Caches that rules build lazily on the run (mission models, the app
+   catalogue) are rebuilt in each worker from the same units, so every worker
+   sees what a single process would.
+
+Workers are forked, which shares the run with them for free; where ``fork``
+is not available (Windows, macOS, where it is unsafe) a run stays in one
+process, and so does a process that runs other threads (forking it could
+deadlock). A small input (fewer than :data:`MIN_FILES` files) also stays in one
+process: starting a pool costs more than it saves, and editors re-lint one
+file at a time. A worker that dies breaks the pool; the main process then does
+the rest of the work itself, so a run never waits forever.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import multiprocessing
+import os
+import sys
+import threading
+from collections.abc import Iterator
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the engine starts the workers: this module does not import it
+    from moos_lint.commands.progress import Progress
+    from moos_lint.core.engine import LintRun
+    from moos_lint.files.diagnostics import Diagnostic
+    from moos_lint.frontends.unit import Unit
+
+#: below this many files a run stays in one process
+MIN_FILES = 50
+
+# The run a forked rule worker inherits (set just before the pool is forked).
+_RUN: LintRun | None = None
+
+
+def default_jobs() -> int:
+    """The number of CPUs this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def can_fork() -> bool:
+    return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
+
+
+def effective_jobs(jobs: int | None, n_files: int) -> int:
+    """How many processes to use for ``n_files`` files when ``jobs`` are asked for."""
+    if jobs is None:
+        jobs = default_jobs()
+    if jobs <= 1 or n_files < MIN_FILES or not can_fork():
+        return 1
+    if threading.active_count() > 1:  # forking a threaded process (an embedding host) can deadlock
+        return 1
+    return jobs
+
+
+def pool(jobs: int) -> Any:
+    """Forked workers. A worker that dies (a crash in a parser) breaks the pool, which the
+    callers notice: the work is then done in this process, never waited for forever."""
+    return ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork"))
+
+
+def stop(workers: Any) -> None:
+    workers.shutdown(wait=True, cancel_futures=True)
+
+
+# ------------------------------------------------------------------ phase 1: C++
+def _cpp_folder(paths: list[str]) -> tuple[tuple, list]:
+    """In a worker: read, prefilter and parse one folder of C++ files; with the reads
+    noted meanwhile (see :func:`moos_lint.files.source.keep_journal`)."""
+    from moos_lint.files import source
+
+    size = source.journal_size()
+    facts = cpp_folder_facts(paths)
+    return facts, source.journal_since(size)
+
+
+def cpp_folder_facts(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
+    """Read, prefilter and parse one folder of C++ files: (paths, sources, facts, error)."""
+    from moos_lint.frontends.cpp.app import parse_folder, read_relevant
+
+    try:
+        sources = read_relevant(paths)
+        files = parse_folder(sources) if sources else []
+        return paths, sources, files, ""
+    except Exception as exc:  # the main process redoes this folder to report it
+        return paths, {}, None, f"{type(exc).__name__}: {exc}"
+
+
+def _folder_weight(paths: list[str]) -> int:
+    total = 0
+    for p in paths:
+        with contextlib.suppress(OSError):
+            total += os.stat(p).st_size
+    return total
+
+
+def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
+    """Submit the C++ folders of ``paths`` to ``workers``, largest first; results in any order."""
+    folders: dict[str, list[str]] = {}
+    for p in paths:
+        folders.setdefault(os.path.dirname(p), []).append(p)
+    tasks = sorted(folders.values(), key=lambda ps: (-_folder_weight(ps), ps[0]))
+    futures = [workers.submit(_cpp_folder, t) for t in tasks]
+    return _completed(futures, tasks)
+
+
+def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
+    """The results; the folders no worker has started yet are taken here, smallest first,
+    so that this process (done with the missions) shares the tail of the work."""
+    try:
+        for i in range(len(futures) - 1, -1, -1):
+            if not futures[i].cancel():  # a worker has it (or had it)
+                break
+            yield cpp_folder_facts(tasks[i])
+        from moos_lint.files.source import merge_journal
+
+        for fut in as_completed([f for f in futures if not f.cancelled()]):
+            facts, reads = fut.result()
+            merge_journal(reads)
+            yield facts
+    except Exception as exc:  # a worker died: the main process redoes the C++
+        yield tasks[0] if tasks else [], {}, None, f"{type(exc).__name__}: {exc}"
+
+
+# ------------------------------------------------------------------ phase 2: rules
+_REPORTED: set[str] = set()
+
+
+def _unit_rules(
+    indices: list[int],
+) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]]:
+    """In a worker: the findings of some units, the files and folders newly read, and
+    the reads noted meanwhile (see :func:`moos_lint.files.source.keep_journal`)."""
+    from moos_lint.files import source
+
+    run = _RUN
+    if run is None:
+        raise RuntimeError("a rule worker started without a run")
+    size = source.journal_size()
+    out = []
+    for i in indices:
+        diags, errors = run.run_rules(run.units[i])
+        out.append((i, diags, errors))
+    read = run.cache.paths() - _REPORTED
+    _REPORTED.update(read)
+    return out, read, set(run.cache.probed), source.journal_since(size)
+
+
+def _unit_weight(unit: Unit) -> int:
+    if unit.cpp is not None:
+        return sum(len(f.publications) + len(f.subscriptions) for f in unit.cpp.files) * 400
+    n = len(unit.expansion.lines)
+    if unit.moos is not None and unit.moos.is_mission:
+        n *= 8  # a mission builds its model: the costliest unit by far
+    return n
+
+
+def rule_batches(units: list[Unit]) -> list[list[int]]:
+    """The units (by index) a rule worker takes at a time: one folder's.
+
+    Missions of a folder share their sibling missions, fragments and behavior
+    files, whose models a worker then builds once. Heaviest folders first, so
+    that no big folder starts last.
+    """
+    folders: dict[str, list[int]] = {}
+    for i, unit in enumerate(units):
+        folders.setdefault(os.path.dirname(unit.path), []).append(i)
+    return sorted(folders.values(), key=lambda b: (-sum(_unit_weight(units[i]) for i in b), b[0]))
+
+
+def run_rules_parallel(
+    run: LintRun, jobs: int, progress: Progress | None = None
+) -> list[tuple[list[Diagnostic], int]]:
+    """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order.
+    ``progress``: told of each unit done (:mod:`moos_lint.commands.progress`)."""
+    global _RUN
+    batches = rule_batches(run.units)
+    results: list[tuple[list[Diagnostic], int]] = [([], 0)] * len(run.units)
+    done: set[int] = set()
+    _RUN = run  # before the first submit, which forks the workers
+    _REPORTED.clear()
+    _REPORTED.update(run.cache.paths())
+    workers = pool(jobs)
+    from moos_lint.files.source import merge_journal
+
+    try:
+        futures = [workers.submit(_unit_rules, b) for b in batches]
+        for fut in as_completed(futures):
+            batch, read, probed, reads = fut.result()
+            merge_journal(reads)
+            for i, diags, errors in batch:
+                results[i] = (diags, errors)
+                done.add(i)
+            if progress is not None:
+                progress.advance(len(batch))
+            # what the workers read counts for the result cache (moos_lint.speed.cache)
+            run.cache.read_elsewhere.update(read)
+            run.cache.probed.update(probed)
+    except Exception:  # a worker died: the rest is done here
+        pass
+    finally:
+        _RUN = None
+        stop(workers)
+    for i, unit in enumerate(run.units):
+        if i not in done:
+            results[i] = run.run_rules(unit)
+    return results
+
+
+__all__ = [
+    "MIN_FILES",
+    "default_jobs",
+    "effective_jobs",
+    "pool",
+    "run_rules_parallel",
+    "start_cpp",
+    "stop",
+]

@@ -1,0 +1,931 @@
+"""Generate the stock catalogue from the MOOS-IvP and MOOS core C++ sources.
+
+Usage::
+
+    python scripts/generate_catalogue.py SRC [-o moos_lint/semantics/catalogue/stock.json]
+        [--commit SHA] [--repository URL]
+
+``SRC`` is a work tree of https://github.com/moos-ivp/moos-ivp (which vendors
+MOOS core in ``MOOS_Jul2724/``). Every app and behavior is read with
+moos-lint's own C++ extractor (:mod:`moos_lint.frontends.cpp`): the configuration
+parameters an app compares its config lines against, the variables it
+``Notify``s and ``Register``s; for behaviors the parameters their
+``setParam`` compares against (base classes included, ``IvPBehavior``'s
+generic keys among them) and the variables they post.
+
+What the extractor cannot see is added by hand in :data:`CORRECTIONS`; every
+entry so changed lists the correction in its ``corrected`` field.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+from collections.abc import Iterable
+from typing import Any
+
+from moos_lint.files.source import SourceFile, read_source
+from moos_lint.files.suffixes import is_cpp, is_cpp_source
+from moos_lint.frontends.cpp.app import build_apps
+from moos_lint.frontends.cpp.model import AppModel
+from moos_lint.semantics.catalogue import DELEGATE, OPTIONAL_BLOCK, READS_ORIGIN
+
+_POST = re.compile(
+    r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\"([A-Za-z0-9_]+)\"", re.MULTILINE
+)
+_LINK = re.compile(r"TARGET_LINK_LIBRARIES\s*\(([^)]*)\)", re.IGNORECASE | re.DOTALL)
+_NAME = re.compile(r"^[A-Za-z0-9_]+$")
+
+_APPCAST = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Thirdparty/AppCasting/AppCastingMOOSApp.cpp"
+
+#: Parameters read by base classes (``CMOOSApp``, ``AppCastingMOOSApp``): every app accepts them.
+BASE_PARAMS = {
+    "CMOOSApp": {
+        "params": [
+            "apptick",
+            "maxapptick",
+            "iteratemode",
+            "commstick",
+            "sortmailbytime",
+            "catchcommandmessages",
+            "moos_time_warp",
+            "moos_timewarp_delay_factor",
+            "moos_timewarp_scale_factor",
+            "moos_app_name",
+            "moos_name",
+            "moos_file",
+            "moos_host",
+            "moos_port",
+            "moos_iterate_mode",
+            "moos_quiet",
+            "moos_configuration_audit",
+            "moos_apptick",
+            "moos_max_apptick",
+            "moos_commstick",
+        ],
+        "provenance": "MOOS_Jul2724/MOOSCore/Core/libMOOS/App/MOOSApp.cpp:548-591,1149 (by hand)",
+        # GetConfigurationParam(double) takes only values starting with a digit or `-`
+        "param_forms": {
+            "apptick": {
+                "form": "moos_double",
+                "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:265",
+            },
+            "maxapptick": {
+                "form": "moos_double",
+                "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:265",
+            },
+        },
+    },
+    "AppCastingMOOSApp": {
+        "params": [
+            "comms_policy",
+            "app_logging",
+            "deprecated_ok",
+            "term_report_interval",
+            "max_appcast_events",
+            "max_appcast_run_warnings",
+        ],
+        "publishes": ["APPCAST", "APP_LOG"],
+        "publish_suffixes": ["_ITER_GAP", "_ITER_LEN"],
+        "subscribes": ["APPCAST_REQ", "LOADCAST_REQ", "TERM_REPORT_INTERVAL", "COMMS_POLICY"],
+        "provenance": (
+            "MOOS_Jul2724/MOOSCore/Core/libMOOS/Thirdparty/AppCasting/"
+            "AppCastingMOOSApp.cpp:233-275,384-420,455-458 (by hand)"
+        ),
+        # preOnStartUp compares the lower-cased value with a fixed set and warns
+        # "Invalid ..." for any other, keeping the default
+        "param_forms": {
+            "comms_policy": {"form": "enum:open|lean|dire", "at": _APPCAST + ":251-253"},
+            "app_logging": {"form": "enum:true|log|file|off", "at": _APPCAST + ":259-265"},
+            "deprecated_ok": {"form": "enum:true|false", "at": _APPCAST + ":268-274"},
+        },
+    },
+}
+
+#: Behavior parameters read outside the behavior classes.
+BEHAVIOR_EXTRA_PARAMS = {
+    "name": "ivp/src/lib_helmivp/BehaviorSet.cpp:399",
+    "descriptor": "ivp/src/lib_helmivp/BehaviorSet.cpp:399",
+    "templating": "ivp/src/lib_helmivp/BehaviorSpec.cpp:60-85",
+    "max_spawnings": "ivp/src/lib_helmivp/BehaviorSpec.cpp:60-85",
+}
+
+#: Hand corrections: app -> fields to add, and why.
+CORRECTIONS: dict[str, dict] = {
+    "pEchoVar": {
+        "param_prefixes": ["flip"],
+        "why": '`flip:N = ...` keys are matched with strncmp(param, "flip", 4) (EchoVar.cpp:143)',
+    },
+    "pMarineViewer": {
+        "reports_unhandled": True,
+        "why": "the final else hands other keys to PMV_Viewer::setParam, then "
+        "MarineViewer::setParam and VPlug_GeoSettings::setParam, whose keys are all listed "
+        "(PMV_MOOSApp.cpp, lib_marineview, lib_geometry): checked by hand",
+    },
+    "pShare": {
+        "params": [
+            "input",
+            "output",
+            "multicast_base_port",
+            "multicast_address",
+            "verbose",
+            "share",
+        ],
+        "keys_complete": True,
+        "why": "read with GetRepeatedConfigurations and "
+        "GetParameterFromCommandLineOrConfigurationFile (Share.cpp:213-308); no other key "
+        "is read, so the list is complete (`Share` lines: earlier pShare versions of "
+        "themoos/essential-moos)",
+    },
+    "pLogger": {
+        "params": ["log", "wildcardpattern", "wildcardomitpattern"],
+        "keys_complete": True,
+        "why": "`Log` lines are read from the whole block with GetConfiguration and "
+        "`WildCardPattern`/`WildCardOmitPattern` with GetTokenValPair (MOOSLogger.cpp:340-428); "
+        "every other key is a GetConfigurationParam call (MOOSLogger.cpp:230-389), so the "
+        "list is complete",
+    },
+    "pNodeReporter": {
+        "publishes": ["NODE_REPORT_LOCAL"],
+        "why": "the node report variable defaults to NODE_REPORT_LOCAL (NodeReporter.cpp:714)",
+    },
+    "uFldNodeBroker": {
+        "param_forms": {
+            "bridge": {"form": "fields:src", "at": "ivp/src/uFldNodeBroker/NodeBroker.cpp:337-352"}
+        },
+        "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
+        "(handleConfigBridge)",
+    },
+    "uFldShoreBroker": {
+        "param_forms": {
+            "bridge": {
+                "form": "fields:src",
+                "at": "ivp/src/uFldShoreBroker/ShoreBroker.cpp:592-614",
+            }
+        },
+        "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
+        "(handleConfigBridge)",
+    },
+    "pHelmIvP": {
+        "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
+        "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "
+        "the behavior file's set blocks",
+    },
+}
+
+_SRC = "ivp/src/"
+
+
+_MARINE = "ivp/src/lib_behaviors-marine/"
+
+#: Hand corrections for behaviors: class -> value forms its ``setParam`` enforces, and why.
+#: ``convex_polygon``, ``waypoints`` and ``point`` are judged by
+#: :mod:`moos_lint.semantics.geometry_forms`.
+#: ``enum:a|b`` values are compared lower-cased, as these ``setParam`` do.
+BEHAVIOR_CORRECTIONS: dict[str, dict] = {
+    "BHV_Waypoint": {
+        "param_forms": {
+            "capture_line": {
+                "form": "enum:true|false|absolute",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Waypoint.cpp:437-440",
+            },
+            "efficiency_measure": {
+                "form": "enum:all|off",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Waypoint.cpp:405-411",
+            },
+        },
+        "why": "capture_line and efficiency_measure return false for a value outside a fixed "
+        "set, compared after tolower",
+    },
+    "BHV_Loiter": {
+        "param_forms": {
+            "clockwise": {
+                "form": "enum:best|true|false|on|off|yes|no|toggle",
+                "at": "ivp/src/lib_behaviors-marine/BHV_Loiter.cpp:148-155",
+            },
+            "polygon": {"form": "convex_polygon", "at": _MARINE + "BHV_Loiter.cpp:98-103"},
+        },
+        "why": "clockwise takes `best` or a setBooleanOnString value, else returns false; "
+        "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_OpRegion": {
+        "param_forms": {
+            "polygon": {"form": "convex_polygon", "at": _MARINE + "BHV_OpRegion.cpp:124-127"},
+        },
+        "why": "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_OpRegionRecover": {
+        "param_forms": {
+            "polygon": {
+                "form": "convex_polygon",
+                "at": _MARINE + "BHV_OpRegionRecover.cpp:108-111",
+            },
+        },
+        "why": "polygon returns false unless string2Poly gives a convex polygon",
+    },
+    "BHV_AvoidObstacle": {
+        "param_forms": {
+            key: {
+                "form": "convex_polygon",
+                "at": "ivp/src/lib_dep_behaviors/BHV_AvoidObstacle.cpp:100-103",
+            }
+            for key in ("polygon", "points", "poly")
+        },
+        "why": "polygon, points and poly return false unless string2Poly gives a convex polygon",
+    },
+    "BHV_AbortToPoint": {
+        "param_forms": {
+            "point": {"form": "point", "at": _MARINE + "BHV_AbortToPoint.cpp:84-87"},
+        },
+        "why": "point returns false unless string2Point gives a valid point",
+    },
+    "BHV_StationKeep": {
+        "param_forms": {
+            key: {"form": "point", "at": _MARINE + "BHV_StationKeep.cpp:112-115"}
+            for key in ("station_pt", "point")
+        },
+        "why": "station_pt and point return false unless string2Point gives a valid point",
+    },
+    "BHV_BearingLine": {
+        "param_forms": {
+            "bearing_point": {"form": "point", "at": _MARINE + "BHV_BearingLine.cpp:59-77"},
+        },
+        "why": "bearing_point returns false unless string2Point gives a valid point",
+    },
+    "BHV_LegRun": {
+        "param_forms": {
+            key: {
+                "form": "point",
+                "at": "ivp/src/lib_bhvutil/LegRun.cpp:117-124,203-207,217-221",
+            }
+            for key in ("p1", "p2", "vx1", "vx2")
+        },
+        "why": "p1, p2 (and the deprecated vx1, vx2) go to LegRun::setParam "
+        "(BHV_LegRun.cpp:169), which returns false unless string2Point gives a valid point",
+    },
+    "BHV_HeadingBias": {
+        "param_forms": {
+            "bias": {"form": "enum:right|left", "at": _MARINE + "BHV_HeadingBias.cpp:51-63"},
+        },
+        "why": "bias returns false unless the lower-cased value is right or left",
+    },
+}
+BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["param_forms"].update(
+    {
+        # `empty`/`start`, else string2SegList, else string2Poly; false when both are empty
+        **{
+            key: {"form": "waypoints", "at": _MARINE + "BHV_Waypoint.cpp:196-208"}
+            for key in ("polygon", "points", "xpoints")
+        },
+        "point": {"form": "point|start|empty", "at": _MARINE + "BHV_Waypoint.cpp:239-250"},
+        "newpt": {"form": "point", "at": _MARINE + "BHV_Waypoint.cpp:259-262"},
+    }
+)
+BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["why"] += (
+    "; polygon, points and xpoints return false when neither string2SegList nor string2Poly "
+    "reads a vertex, point and newpt when string2Point gives no valid point"
+)
+
+
+_NAV = [
+    "NAV_X",
+    "NAV_Y",
+    "NAV_LAT",
+    "NAV_LONG",
+    "NAV_HEADING",
+    "NAV_SPEED",
+    "NAV_DEPTH",
+    "NAV_Z",
+    "NAV_PITCH",
+    "NAV_YAW",
+    "NAV_HEADING_OVER_GROUND",
+    "NAV_SPEED_OVER_GROUND",
+    "NAV_ALTITUDE",
+]
+for _sim in ("uSimMarine", "uSimMarineV22", "uSimMarineV23"):
+    CORRECTIONS[_sim] = {
+        "publishes": _NAV,
+        "why": 'NAV_* are posted as prefix + "_X" with the prefix NAV by default '
+        "(uSimMarineV22/USM_MOOSApp.cpp:600-648)",
+    }
+
+
+_USM_ENUMS = {
+    # key -> (form, USM_MOOSApp.cpp line V22, V23, USM_Model.cpp lines V22, V23)
+    "thrust_mode_diff": ("enum:differential|true|normal|false", 377, 354, "200-211", "199-210"),
+    "thrust_mode_reverse": ("enum:reverse|true|normal|false", 379, 356, "217-228", "216-227"),
+    "thrust_reflect": ("enum:true|false", 375, 352, "600-610", "601-611"),
+}
+for _sim, _col in (("uSimMarineV22", 1), ("uSimMarineV23", 2)):
+    CORRECTIONS[_sim]["param_forms"] = {
+        key: {
+            "form": f[0],
+            "at": f"ivp/src/{_sim}/USM_MOOSApp.cpp:{f[_col]}; USM_Model.cpp:{f[_col + 2]}",
+        }
+        for key, f in _USM_ENUMS.items()
+    }
+    CORRECTIONS[_sim]["why"] += (
+        "; thrust_mode_diff, thrust_mode_reverse and thrust_reflect go to USM_Model setters "
+        "that return false, keeping the default, for a value outside a fixed set"
+    )
+
+_BRS = "ivp/src/uFldBeaconRangeSensor/BRS_App.cpp:"
+CORRECTIONS["uFldBeaconRangeSensor"] = {
+    "param_forms": {
+        "report_vars": {"form": "enum:both|short|long", "at": _BRS + "156-157,662-671"},
+        "ping_payments": {
+            "form": "enum:upon_response|upon_request|upon_accept",
+            "at": _BRS + "154-155,646-657",
+        },
+        "ground_truth": {"form": "bool", "at": _BRS + "164-165"},
+        "verbose": {"form": "bool", "at": _BRS + "166-167"},
+    },
+    "why": "OnStartUp records `handled[param] = setter(value)` and reports unhandled lines; "
+    "report_vars and ping_payments take a fixed set (lower-cased), ground_truth and verbose "
+    "setBooleanOnString",
+}
+
+CORRECTIONS["pObstacleMgr"] = {
+    "param_forms": {
+        key: {
+            "form": "convex_polygon",
+            "at": "ivp/src/pObstacleMgr/ObstacleManager.cpp:202-203,489-491",
+        }
+        for key in ("given_obstacle", "given_obstable")
+    },
+    "why": "given_obstacle is rejected (unhandled) unless string2Poly gives a convex polygon",
+}
+
+
+def _fact(app: str, key: str, why: str) -> None:
+    """One more hand fact (a boolean set true, unless ``key`` says otherwise) for ``app``."""
+    value = not key.startswith("!")
+    entry = CORRECTIONS.setdefault(app, {})
+    entry[key.lstrip("!")] = value
+    entry["why"] = f"{entry['why']}; {why}" if entry.get("why") else why
+
+
+# Apps that run as intended without a ProcessConfig block although the extractor cannot
+# tell (they do not declare ``must_have_moosblock=false``).
+_fact(
+    "uMAC",
+    "!needs_process_config",
+    "reads its block only when there is one (ivp/src/uMAC/AppCastMonitor.cpp:177)",
+)
+_fact(
+    "uPokeDB",
+    "!needs_process_config",
+    "ignores a missing block: what it pokes comes from the command line "
+    "(ivp/src/uPokeDB/PokeDB.cpp:252, PokeDB_Info.cpp:55)",
+)
+# Tools users start by hand with the mission file: their block is read although no
+# Run line launches them. Evidence: the usage line of each.
+for _app, _usage in (
+    ("uXMS", "uXMS/XMS_Info.cpp:55"),
+    ("uMAC", "uMAC/AppCastMonitor_Info.cpp:59"),
+    ("uMACView", "uMACView/UMV_Info.cpp:54"),
+    ("uPokeDB", "uPokeDB/PokeDB_Info.cpp:55"),
+    ("uQueryDB", "uQueryDB/QueryDB_Info.cpp:60"),
+    ("uMayFinish", "uMayFinish/MayFinish_Info.cpp:38"),
+    ("uTermCommand", "uTermCommand/TermCommand_Info.cpp:51"),
+    ("uHelmScope", "uHelmScope/HelmScope_Info.cpp:52"),
+):
+    _fact(_app, "launched_manually", f"started by hand: `{_app} file.moos` ({_SRC}{_usage})")
+# Observers: they register for whatever they are told to show or log, so what they
+# subscribe to is not read by a consumer, and their dynamic subscriptions are no reader.
+for _app, _at in (
+    ("uXMS", "ivp/src/uXMS/XMS.cpp:185,832"),
+    ("uMAC", "ivp/src/uMAC/AppCastMonitor.cpp:202"),
+    ("uMACView", "ivp/src/uMACView/UMV_MOOSApp.cpp:151-154,293 (appcasts, watch clusters)"),
+    ("uHelmScope", "ivp/src/uHelmScope/HelmScope.cpp:483,524"),
+    ("pMarineViewer", "ivp/src/pMarineViewer/PMV_MOOSApp.cpp:262-291"),
+    ("pRealm", "ivp/src/pRealm/Realm.cpp:184-262"),
+    ("uFldScope", "ivp/src/uFldScope/UFS_MOOSApp.cpp:138"),
+    ("pLogger", "MOOS_Jul2724/MOOSEssentials/Essentials/pLogger/MOOSLogger.cpp:224-439"),
+):
+    _fact(_app, "observer", f"an observer: registers for what it is told to show or log ({_at})")
+# Apps whose run-time subscriptions are the variables their configuration names, which
+# moos_lint.semantics.variables reads from their blocks: not open-ended.
+for _app, _at in (
+    ("pHelmIvP", "pHelmIvP/HelmIvP.cpp:1186 (the behaviors' variables)"),
+    ("pShare", "MOOS_Jul2724/MOOSEssentials/Essentials/pShare/Share.cpp:757 (output routes)"),
+    ("uFldNodeBroker", "uFldNodeBroker/NodeBroker.cpp:337-352 (bridge src)"),
+    ("uFldShoreBroker", "uFldShoreBroker/ShoreBroker.cpp:592-645 (bridge src, qbridge)"),
+    ("uTimerScript", "uTimerScript/TS_MOOSApp.cpp:470-471 (condition, forward_var, pause_var)"),
+    ("pEchoVar", "pEchoVar/EchoVar.cpp:194-197 (echo sources, conditions)"),
+    ("pNodeReporter", "pNodeReporter/NodeReporter.cpp:297-313 (NAV_*, riders)"),
+    ("uProcessWatch", "uProcessWatch/ProcessWatch.cpp:611 (<PROC>_STATUS of watched apps)"),
+    ("pContactMgrV20", "pContactMgrV20/ContactMgrV20.cpp:357-361 (disable_var, enable_var)"),
+    ("pBasicContactMgr", "dep_pBasicContactMgr/BasicContactMgr.cpp:404-406 (alerts)"),
+    ("pDeadManPost", "pDeadManPost/DeadManPost.cpp:183 (heartbeat_var)"),
+    ("pObstacleMgr", "pObstacleMgr/ObstacleManager.cpp:283-297 (point_var)"),
+    ("pXRelay", "pXRelay/PXR_MOOSApp.cpp:84 (incoming_var)"),
+    ("uFldCollisionDetect", "uFldCollisionDetect/CollisionDetector.cpp:420 (condition)"),
+    ("uQueryDB", "uQueryDB/QueryDB.cpp:265-272 (conditions)"),
+    ("uPlotViewer", "uPlotViewer/UPV_MOOSApp.cpp:123 (plot_var)"),
+    ("pMissionEval", "pMissionEval/MissionEval.cpp:306-313 (lead/pass/fail conditions)"),
+):
+    where = _at if _at.startswith("MOOS_") else _SRC + _at
+    _fact(_app, "subscriptions_from_config", f"subscribes to what its block names ({where})")
+
+# Dynamic subscriptions that are no reader of the mission's variables.
+_fact(
+    "uMemWatch",
+    "!subscribes_dynamic",
+    "its only run-time subscriptions are <CLIENT>_PID, the process id each DB client "
+    "posts (ivp/src/uMemWatch/MemWatch.cpp:148-158)",
+)
+
+#: programs pAntler launches that are not configured by a ProcessConfig block of their own
+PROGRAMS: dict[str, dict] = {
+    "MOOSDB": {
+        "needs_process_config": False,
+        "why": "reads the top-of-file settings only "
+        "(MOOS_Jul2724/MOOSCore/Core/libMOOS/DB/MOOSDB.cpp:278-320)",
+    },
+    "pAntler": {
+        "needs_process_config": False,
+        "why": "reads the ANTLER block, under the name ANTLER "
+        "(MOOS_Jul2724/MOOSEssentials/Essentials/pAntler/Antler.cpp:379-383)",
+    },
+    "uMS": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "the MOOS scope GUI, started by hand; it asks for the server to watch "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uMS/uMS.cpp:139)",
+    },
+}
+
+#: apps the extractor does not see as apps (no CMOOSApp class), described by hand
+EXTRA_APPS: dict[str, dict] = {
+    "pMOOSBridge": {
+        "source": "MOOS_Jul2724/MOOSEssentials/Essentials/pMOOSBridge",
+        "base": "",
+        "params": ["share", "udpshare", "loopback", "bridgefrequency", "udplisten"],
+        "params_from_libraries": {},
+        "param_forms": {},
+        "reports_unhandled": False,
+        "delegates_other_keys": False,
+        "publishes": [],
+        "publish_prefixes": [],
+        "publish_suffixes": [],
+        "publishes_dynamic": True,
+        "subscribes": [],
+        "subscribe_prefixes": [],
+        "subscribes_dynamic": True,
+        "needs_process_config": True,
+        "needs_origin": False,
+        "corrected": [
+            "CMOOSBridge is not a CMOOSApp: keys read by hand from MOOSBridge.cpp:205-401"
+        ],
+    },
+}
+
+
+def _git_commit(src: str) -> tuple[str, str]:
+    try:
+        out = subprocess.run(
+            ["git", "-C", src, "log", "-1", "--format=%H %cs"],
+            capture_output=True,
+            text=True,
+            timeout=20,
+            check=False,
+        ).stdout.split()
+    except OSError:
+        return "", ""
+    return (out[0], out[1]) if len(out) == 2 else ("", "")
+
+
+def _cpp_files(folder: str) -> list[str]:
+    out: list[str] = []
+    for dirpath, _dirs, files in os.walk(folder):
+        out.extend(os.path.join(dirpath, f) for f in files if is_cpp(f))
+    return sorted(out)
+
+
+def _linked_libs(folder: str) -> list[str]:
+    path = os.path.join(folder, "CMakeLists.txt")
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+    except OSError:
+        return []
+    libs: list[str] = []
+    for m in _LINK.finditer(text):
+        libs.extend(t for t in m.group(1).split() if _NAME.match(t))
+    return libs
+
+
+#: ``m_var_index = "WPT_INDEX";``: a variable a behavior posts under a default name
+_VAR_DEFAULT = re.compile(r"\b(m_\w*var\w*)\s*=\s*\"([A-Z][A-Z0-9_]*)\"\s*;")
+_INFO_VARS = re.compile(r"addInfoVars\(\s*\"([^\"]+)\"")
+_DELEGATE_MEMBER = re.compile(r"\b(m_\w+)\s*(?:\.|->)\s*setParam\s*\(\s*param\b")
+_TAIL = re.compile(r"\+\s*\"([A-Z0-9_]+)\"\s*\)?$")
+
+
+def _names(items: Iterable) -> tuple[list[str], list[str], list[str], bool]:
+    """Static names, known prefixes and suffixes of dynamic names, and whether any is unknown."""
+    static, prefixes, suffixes, dynamic = set(), set(), set(), False
+    for it in items:
+        n = it.name
+        if n.text is not None:
+            static.add(n.text)
+        elif n.prefix:
+            prefixes.add(n.prefix)
+        else:
+            m = _TAIL.search(n.source.strip())
+            if m and m.group(1).startswith("_"):
+                suffixes.add(m.group(1))
+            else:
+                dynamic = True
+    return sorted(static), sorted(prefixes), sorted(suffixes), dynamic
+
+
+def _rel(path: str, src: str) -> str:
+    return os.path.relpath(path, src).replace(os.sep, "/")
+
+
+def _read(path: str) -> str:
+    try:
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    except OSError:
+        return ""
+
+
+def generate(src: str, commit: str = "", repository: str = "") -> dict:
+    src = os.path.abspath(src)
+    sha, date = _git_commit(src)
+    commit = commit or sha
+    ivp = os.path.join(src, "ivp", "src")
+    core = [
+        os.path.join(src, "MOOS_Jul2724", "MOOSEssentials", "Essentials"),
+        os.path.join(src, "MOOS_Jul2724", "MOOSCore", "Core", "MOOSDB"),
+    ]
+    folders = sorted(
+        os.path.join(ivp, d) for d in os.listdir(ivp) if os.path.isdir(os.path.join(ivp, d))
+    )
+    for core_dir in core:
+        if os.path.isdir(core_dir):
+            if os.path.exists(os.path.join(core_dir, "CMakeLists.txt")) and core_dir.endswith(
+                "MOOSDB"
+            ):
+                folders.append(core_dir)
+            else:
+                folders.extend(
+                    os.path.join(core_dir, d)
+                    for d in sorted(os.listdir(core_dir))
+                    if os.path.isdir(os.path.join(core_dir, d))
+                )
+    files: list[str] = []
+    for f in folders:
+        files.extend(_cpp_files(f))
+    # every file, not only those that mention the MOOS API: parsers of
+    # configuration often live in GUI, settings and behavior classes
+    sources = {}
+    for path in files:
+        got = read_source(path)
+        if isinstance(got, SourceFile):
+            sources[path] = got
+    models = build_apps(sources)
+    top = set(folders)
+    by_folder = {m.folder: m for m in models}
+    # library folders by CMake target name (lib_marine_pid -> marine_pid)
+    lib_folder = {
+        os.path.basename(f)[4:]: f for f in folders if os.path.basename(f).startswith("lib_")
+    }
+
+    # every class, for behaviors' base chains
+    class_params: dict[str, set[str]] = {}
+    class_forms: dict[str, dict[str, dict[str, str]]] = {}
+    class_bases: dict[str, list[str]] = {}
+    class_file: dict[str, str] = {}
+    for m in models:
+        for cf in m.files:
+            for c in cf.classes:
+                class_bases.setdefault(c.name, []).extend(c.bases)
+                if is_cpp_source(cf.path) or c.name not in class_file:
+                    class_file.setdefault(c.name, cf.path)
+    for m in models:
+        for cf in m.files:
+            if not is_cpp_source(cf.path):
+                continue
+            stem = os.path.splitext(os.path.basename(cf.path))[0]
+            class_params.setdefault(stem, set()).update(_keys(cf))
+            class_forms.setdefault(stem, {}).update(_forms(cf, src))
+            if stem in class_file:
+                class_file[stem] = cf.path
+
+    apps: dict[str, dict] = {}
+    for m in models:
+        if not m.is_app or not m.process_name or m.folder not in top:
+            continue
+        if m.process_name_source == "folder" and not any(f.has_main for f in m.files):
+            continue
+        apps[m.process_name] = _app_entry(m, src, by_folder, lib_folder)
+    for name, entry in EXTRA_APPS.items():
+        apps.setdefault(name, dict(entry))
+    for name, corr in CORRECTIONS.items():
+        if name not in apps:
+            raise SystemExit(f"a correction names an app the sources do not have: {name}")
+        if name in apps:
+            entry = apps[name]
+            for key, vals in corr.items():
+                if key == "why":
+                    continue
+                if isinstance(vals, bool):
+                    entry[key] = vals
+                elif isinstance(vals, dict):
+                    entry[key] = {**entry.get(key, {}), **vals}
+                else:
+                    entry[key] = sorted(set(entry.get(key, [])) | set(vals))
+            entry.setdefault("corrected", []).append(corr["why"])
+
+    behaviors: dict[str, dict] = {}
+    for cls, path in sorted(class_file.items()):
+        if not cls.startswith("BHV_"):
+            continue
+        chain = _bhv_chain(cls, class_bases)
+        if not chain:
+            continue
+        params: set[str] = set()
+        forms: dict[str, dict[str, str]] = {}
+        for base in reversed(chain):
+            params |= class_params.get(base, set())
+            forms.update(class_forms.get(base, {}))
+        text = _read(path)
+        header = _read(os.path.splitext(path)[0] + ".h")
+        delegated = []
+        for member in sorted(set(_DELEGATE_MEMBER.findall(text))):
+            m_type = re.search(r"(\w+)\s*\*?\s*\b" + re.escape(member) + r"\s*;", header)
+            if m_type and m_type.group(1) in class_params:
+                params |= class_params[m_type.group(1)]
+                delegated.append(m_type.group(1))
+        posts = set(_POST.findall(text))
+        reads: set[str] = set()
+        for lit in _INFO_VARS.findall(text):
+            reads.update(v.strip() for v in lit.split(",") if _NAME.match(v.strip()))
+        for member, var in _VAR_DEFAULT.findall(text):
+            # ``addInfoVars(m_mark_variable)``: a name the behavior reads, else one it posts
+            if re.search(r"addInfoVars\(\s*" + re.escape(member) + r"\b", text):
+                reads.add(var)
+            else:
+                posts.add(var)
+        entry = {
+            "source": _rel(path, src),
+            "bases": chain[1:],
+            "params": sorted(p for p in params if _param_like(p)),
+            "posts": sorted(posts),
+            "reads": sorted(reads),
+            "params_from_members": delegated,
+            "param_forms": dict(sorted(forms.items())),
+        }
+        bhv_corr = BEHAVIOR_CORRECTIONS.get(cls)
+        if bhv_corr:
+            entry["param_forms"] = dict(sorted({**forms, **bhv_corr["param_forms"]}.items()))
+            entry["corrected"] = [bhv_corr["why"]]
+        behaviors[cls] = entry
+    return {
+        "source": {
+            "repository": repository or "https://github.com/moos-ivp/moos-ivp",
+            "commit": commit,
+            "date": date,
+            "generator": "python scripts/generate_catalogue.py SRC",
+            "extractor": "moos_lint.frontends.cpp (tree-sitter)",
+        },
+        "base_classes": BASE_PARAMS,
+        "behavior_extra_params": BEHAVIOR_EXTRA_PARAMS,
+        "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
+        "programs": PROGRAMS,
+        "behaviors": behaviors,
+    }
+
+
+_LINES: dict[str, list[str]] = {}
+_SUBJECT = re.compile(r"(\w+)\s*(?:[=!]=\s*|,\s*)$")
+
+
+def _line(path: str, n: int) -> str:
+    if path not in _LINES:
+        _LINES[path] = _read(path).splitlines()
+    lines = _LINES[path]
+    return lines[n - 1] if 0 < n <= len(lines) else ""
+
+
+def _key_sites(cf) -> list[tuple[str, int]]:
+    """The configuration keys of one file and their lines: literals compared with a key."""
+    out = []
+    for p in cf.config_params:
+        before = _line(cf.path, p.span.line)[: max(p.span.col - 1, 0)]
+        m = _SUBJECT.search(before)
+        if m and "val" in m.group(1).lower():
+            continue  # ``param_val == "true"``: a value, not a key
+        out.append((p.text, p.span.line))
+    return out
+
+
+def _keys(cf) -> set[str]:
+    return {k for k, _ in _key_sites(cf)}
+
+
+#: MBUtils setters (ivp/src/lib_mbutil/MBUtils.cpp) -> the value form they accept
+SETTER_FORMS = {
+    "setBooleanOnString": "bool",
+    "setDoubleOnString": "number",
+    "setNonNegDoubleOnString": "nonneg",
+    "setPosDoubleOnString": "positive",
+    "setUIntOnString": "uint",
+    "setPosUIntOnString": "posuint",
+    "setIntOnString": "int",
+}
+_SETTER = re.compile(r"\b(" + "|".join(SETTER_FORMS) + r")\s*\(")
+_LEAD = re.compile(r"\s*\{?\s*(?:\w+\s*=\s*|return\s*\(?\s*|ok\s*=\s*\w+\s*&&\s*)?")
+#: ``setX(member, value)``: the whole value goes to the setter
+_SETTER_CALL = re.compile(r"\w+\s*\(\s*[\w.>-]+\s*,\s*\w+\s*(?:,\s*\w+\s*)?\)")
+_NEXT_KEY = re.compile(r"(?:param|key|config)\w*\s*==\s*\"", re.IGNORECASE)
+
+
+#: ``isNumber(value) && (dval >= 0)`` written into the key's own condition or the first
+#: statement of its branch: any other value leaves the key unhandled
+_INLINE = re.compile(
+    r"^\W*(?:if\s*\(\s*)?isNumber\s*\(\s*\w+\s*\)\s*\)?"
+    r"(?:\s*&&\s*\(?\s*\w+\s*(>=|>)\s*0(?:\.0*)?\s*\)?)?"
+)
+
+
+def _inline_form(lines: list[str], n: int, rest: str) -> str | None:
+    """The value form a key's branch checks inline (``number``, ``nonneg``, ``positive``)."""
+    text = rest.split("//", 1)[0]
+    # the key's condition may go on with more alternatives (`(param == "a") ||`)
+    k = n
+    while text.rstrip().endswith("||") and k < len(lines) and k < n + 3:
+        nxt = lines[k].split("//", 1)[0]
+        text = nxt[nxt.rfind('"') + 1 :] if _NEXT_KEY.search(nxt) else nxt
+        k += 1
+    after = text.split(")", 1)[1] if text.lstrip().startswith(")") else text
+    candidates = [after.lstrip(") ").lstrip("&").strip()]
+    if after.strip() in ("", "{", ")", ") {", "){") and k < len(lines):
+        candidates.append(lines[k].strip())
+    for chunk in candidates:
+        m = _INLINE.match(chunk)
+        if m and "isNumber" in chunk[: m.end()]:
+            return {">=": "nonneg", ">": "positive"}.get(m.group(1) or "", "number")
+    return None
+
+
+def _forms(cf, src: str) -> dict[str, dict[str, str]]:
+    """Keys whose value goes straight to an MBUtils setter that rejects other forms."""
+    out: dict[str, dict[str, str]] = {}
+    bad: set[str] = set()
+    lines = _LINES.get(cf.path) or _read(cf.path).splitlines()
+    for key, n in _key_sites(cf):
+        text = lines[n - 1] if 0 < n <= len(lines) else ""
+        at = text.find('"' + key)
+        rest = text[at + len(key) + 2 :] if at >= 0 else text
+        window = [rest, *lines[n : n + 1]]
+        form = None
+        for i, chunk in enumerate(window):
+            if i and _NEXT_KEY.search(chunk):
+                break
+            m = _SETTER.search(chunk)
+            if m:
+                lead = chunk[: m.start()]
+                if i == 0:
+                    lead = lead.rsplit(")", 1)[-1] if ")" in lead else lead
+                call = _SETTER_CALL.match(chunk, m.start())
+                if _LEAD.fullmatch(lead) and call:
+                    form = SETTER_FORMS[m.group(1)]
+                break
+            if chunk.strip() not in ("", "{", ")", "){", ") {") and i:
+                break
+        if form is None:
+            form = _inline_form(lines, n, rest)
+        if form is None:
+            bad.add(key)
+            continue
+        prev = out.get(key)
+        if prev and prev["form"] != form:
+            bad.add(key)
+        out[key] = {"form": form, "at": f"{_rel(cf.path, src)}:{n}"}
+    return {k: v for k, v in out.items() if k not in bad}
+
+
+def _param_like(p: str) -> bool:
+    return bool(re.match(r"^[a-z0-9_@:.\[\]+-]+$", p)) and len(p) < 60
+
+
+def _bhv_chain(cls: str, bases: dict[str, list[str]]) -> list[str]:
+    def walk(name: str, seen: frozenset) -> list[str]:
+        if name == "IvPBehavior":
+            return [name]
+        if name in seen:
+            return []
+        for b in bases.get(name, ()):
+            ch = walk(b, seen | {name})
+            if ch:
+                return [name, *ch]
+        return []
+
+    return walk(cls, frozenset())
+
+
+_WORD = re.compile(r"\w+")
+
+
+def _stem(path: str) -> str:
+    """The class a MOOS-IvP source file is named after (``PIDEngine.cpp`` -> PIDEngine)."""
+    return os.path.splitext(os.path.basename(path))[0]
+
+
+def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict:
+    text = "".join(_read(cf.path) for cf in m.files)
+    params = set().union(*(_keys(cf) for cf in m.files)) if m.files else set()
+    from_libs: dict[str, list[str]] = {}
+    lib_files: list[tuple[str, Any]] = []  # (library folder, file) of every library the app links
+    for lib in _linked_libs(m.folder):
+        folder = lib_folder.get(lib)
+        lm = by_folder.get(folder) if folder else None
+        if folder is None or lm is None or lm is m:
+            continue
+        lib_files.extend((folder, cf) for cf in lm.files)
+    # A library file's keys count when the app reaches the file's class: the app's code
+    # names it (MOOS-IvP keeps one class per file: `PIDEngine m_pengine;` hands lines to
+    # PIDEngine.cpp), or a library file the app reaches does (MarineViewer -> VPlug_*).
+    # Linking a library does not credit the app with every key the library compares.
+    reached: set[str] = set()
+    words = set(_WORD.findall(text))
+    grew = True
+    while grew:
+        grew = False
+        for _folder, cf in lib_files:
+            if cf.path not in reached and _stem(cf.path) in words:
+                reached.add(cf.path)
+                words |= set(_WORD.findall(_read(cf.path)))
+                grew = True
+    for folder, cf in lib_files:
+        if cf.path in reached:
+            got = _keys(cf) - params
+            if got:
+                key = _rel(folder, src)
+                from_libs[key] = sorted(
+                    set(from_libs.get(key, [])) | {p for p in got if _param_like(p)}
+                )
+    forms: dict[str, dict[str, str]] = {}
+    for cf in m.files:
+        forms.update(_forms(cf, src))
+    delegates = bool(DELEGATE.search(text))
+    base = m.base_chain[-1] if m.base_chain else ""
+    pubs, pub_prefixes, pub_suffixes, pub_dynamic = _names(m.publications)
+    subs, sub_prefixes, _sub_suffixes, sub_dynamic = _names(m.subscriptions)
+    entry = {
+        "source": _rel(m.folder, src),
+        "base": base,
+        "params": sorted(p for p in params if _param_like(p)),
+        "params_from_libraries": from_libs,
+        # value forms enforced by the app's parser: key -> {form, at: source line}
+        "param_forms": dict(sorted(forms.items())),
+        # IvP apps report "Unhandled config line" for any other key: the list is the parser's
+        "reports_unhandled": "reportUnhandledConfigWarning" in text and not delegates,
+        # a final ``else`` hands any other key to code whose keys are not listed
+        "delegates_other_keys": delegates,
+        "publishes": pubs,
+        "publish_prefixes": pub_prefixes,
+        "publish_suffixes": pub_suffixes,
+        "publishes_dynamic": pub_dynamic,
+        "subscribes": subs,
+        "subscribe_prefixes": sub_prefixes,
+        "subscribes_dynamic": sub_dynamic,
+        # every app needs its block unless its start-up declares it optional
+        # (AppCastingMOOSApp.cpp:308-368: "No mission config block found" otherwise)
+        "needs_process_config": not OPTIONAL_BLOCK.search(text),
+        "needs_origin": bool(READS_ORIGIN.search(text)),
+    }
+    return entry
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="python scripts/generate_catalogue.py")
+    ap.add_argument("src", help="a moos-ivp work tree")
+    ap.add_argument("-o", "--output", default="-")
+    ap.add_argument("--commit", default="")
+    ap.add_argument("--repository", default="")
+    args = ap.parse_args(argv)
+    if not os.path.isdir(os.path.join(args.src, "ivp", "src")):
+        print(f"{args.src}: not a moos-ivp work tree (no ivp/src)", file=sys.stderr)
+        return 2
+    data = generate(args.src, args.commit, args.repository)
+    text = json.dumps(data, indent=1, sort_keys=False) + "\n"
+    if args.output == "-":
+        sys.stdout.write(text)
+    else:
+        with open(args.output, "w", encoding="utf-8") as fh:
+            fh.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
