@@ -432,6 +432,19 @@ for _app, _at in (
     where = _at if _at.startswith("MOOS_") else _SRC + _at
     _fact(_app, "subscriptions_from_config", f"subscribes to what its block names ({where})")
 
+# Keys that take one of a few words (compared after tolower) or else a number, and warn
+# for any other value: ``enum_or_<number form>:word|word``.
+CORRECTIONS["uTimerScript"]["param_forms"] = {
+    "reset_max": {
+        "form": "enum_or_uint:any|unlimited|nolimit",
+        "at": _SRC + "uTimerScript/TS_MOOSApp.cpp:306-315",
+    },
+}
+CORRECTIONS["uTimerScript"]["why"] += (
+    "; reset_max takes any, unlimited or nolimit (lower-cased) or a whole number 0 or more, "
+    "and warns otherwise"
+)
+
 # Dynamic subscriptions that are no reader of the mission's variables.
 _fact(
     "uMemWatch",

@@ -28,6 +28,9 @@ as recorded in the catalogue with the source line that enforces it:
   `thrust_reflect` (`true`, `false`); uFldBeaconRangeSensor's `report_vars`
   (`both`, `short`, `long`) and `ping_payments` (`upon_response`,
   `upon_request`, `upon_accept`);
+- a word or else a number: uTimerScript's `reset_max` takes `any`,
+  `unlimited` or `nolimit` (any case) or a whole number 0 or more, so
+  `reset_max = no_limit` is rejected;
 - a polygon, point list or point, judged by a port of MOOS-IvP's own
   `string2Poly`, `string2SegList` and `string2Point`, where the parser
   rejects what they cannot read: the `polygon` of the Loiter, OpRegion and
@@ -140,6 +143,17 @@ def problem(form: str, value: str) -> str | None:
         if missing:
             return "has no " + " or ".join(f"`{f}=` field" for f in missing)
         return None
+    if form.startswith("enum_or_"):
+        # a few words (lower-cased) or else a number of the named form
+        number, _, words = form[len("enum_or_") :].partition(":")
+        allowed = words.split("|")
+        if value.lower() in allowed:
+            return None
+        why = problem(number, value)
+        if why is None:
+            return None
+        listed = ", ".join(f"`{a}`" for a in allowed)
+        return f"is not one of {listed}, and {why}"
     if form.startswith("enum:"):
         # compared lower-cased with a fixed set, as the parser does
         allowed = form[len("enum:") :].split("|")
