@@ -23,6 +23,7 @@ from moos_lint.files.discovery import kind_of
 from moos_lint.files.source import read_source
 from moos_lint.frontends.nsplug import MAX_INCLUDE_DEPTH
 from tests.fixture_expect import FIXTURES, expectations
+from tests.unprivileged import unprivileged
 
 BAD = FIXTURES / "bad-input"
 TIMEOUT = 180  # seconds; generous for slow CI machines, still far from a hang
@@ -242,20 +243,17 @@ def test_an_unreadable_file_is_reported_and_the_others_are_linted(tmp_path, monk
     assert any("Permission denied" in d["message"] for d in found if d["path"] == "secret.moos")
 
 
-@pytest.mark.skipif(
-    not hasattr(os, "geteuid") or os.geteuid() == 0,
-    reason="chmod 000 does not stop root from reading (the monkeypatched test covers it)",
-)
-def test_chmod_000_file_end_to_end(tmp_path):
-    secret = tmp_path / "secret.moos"
-    secret.write_text("ServerPort = 1\n")
-    secret.chmod(0)
-    (tmp_path / "other.moos").write_text("}\n")
-    (tmp_path / "m.moos").write_text("#include secret.moos\n")
-    try:
-        proc = run_cli("check", ".", "--output-format", "json", cwd=tmp_path, timeout=60)
-    finally:
-        secret.chmod(0o644)
+def test_chmod_000_file_end_to_end():
+    # as a user the file's mode shuts out, even when the tests run as root
+    with unprivileged() as user:
+        tree = user.root / "repo"
+        tree.mkdir()
+        secret = tree / "secret.moos"
+        secret.write_text("ServerPort = 1\n")
+        secret.chmod(0)
+        (tree / "other.moos").write_text("}\n")
+        (tree / "m.moos").write_text("#include secret.moos\n")
+        proc = user.cli("check", ".", "--output-format", "json", cwd=tree, timeout=60)
     got = {(d["path"], d["line"], d["code"]) for d in findings(proc)}
     assert {("secret.moos", 1, "R001"), ("other.moos", 1, "R006"), ("m.moos", 1, "P001")} <= got
     assert proc.returncode == 1

@@ -21,6 +21,7 @@ from pathlib import Path
 import pytest
 
 from moos_lint import __version__
+from tests.unprivileged import tree_listing, unprivileged
 
 TIMEOUT = 120
 MISSION = """ServerHost = localhost
@@ -311,19 +312,22 @@ def test_no_cache_without_a_home(world):
     assert sorted(os.listdir("/")) == top
 
 
-@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only folders")
-def test_a_read_only_tree_lints_normally(world):
-    (world.tree / "moos-lint.toml").write_text('cache-dir = ".lintcache"\n')
-    fresh = world.cli("check", ".", "--no-cache")
-    for p in (world.tree, *world.tree.iterdir()):
-        p.chmod(p.stat().st_mode & ~0o222)
-    try:
+def test_a_read_only_tree_lints_normally():
+    # as a user who cannot write the tree, even when the tests run as root
+    with unprivileged() as user:
+        tree = user.root / "repo"
+        tree.mkdir()
+        (tree / "alpha.moos").write_text(MISSION)
+        (tree / "moos-lint.toml").write_text('cache-dir = ".lintcache"\n')
+        fresh = user.cli("check", ".", "--no-cache", cwd=tree)
+        assert fresh.returncode == 1 and "alpha.moos:10:1: R003" in fresh.stdout, fresh
+        for p in (tree, *tree.iterdir()):
+            p.chmod(p.stat().st_mode & ~0o222)
+        before = tree_listing(tree)
         for _ in range(2):
-            proc = world.cli("check", ".")
+            proc = user.cli("check", ".", cwd=tree)
             assert (proc.returncode, proc.stdout) == (fresh.returncode, fresh.stdout)
-    finally:
-        for p in (world.tree, *world.tree.iterdir()):
-            p.chmod(p.stat().st_mode | 0o200)
+        assert tree_listing(tree) == before
 
 
 def test_a_key_that_is_not_private_is_never_used(world):
