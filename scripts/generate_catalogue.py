@@ -432,19 +432,6 @@ for _app, _at in (
     where = _at if _at.startswith("MOOS_") else _SRC + _at
     _fact(_app, "subscriptions_from_config", f"subscribes to what its block names ({where})")
 
-# Keys that take one of a few words (compared after tolower) or else a number, and warn
-# for any other value: ``enum_or_<number form>:word|word``.
-CORRECTIONS["uTimerScript"]["param_forms"] = {
-    "reset_max": {
-        "form": "enum_or_uint:any|unlimited|nolimit",
-        "at": _SRC + "uTimerScript/TS_MOOSApp.cpp:306-315",
-    },
-}
-CORRECTIONS["uTimerScript"]["why"] += (
-    "; reset_max takes any, unlimited or nolimit (lower-cased) or a whole number 0 or more, "
-    "and warns otherwise"
-)
-
 # Dynamic subscriptions that are no reader of the mission's variables.
 _fact(
     "uMemWatch",
@@ -790,6 +777,115 @@ def _inline_form(lines: list[str], n: int, rest: str) -> str | None:
     return None
 
 
+_LOWERED = re.compile(r"^(?:std::)?string\s+(\w+)\s*=\s*tolower\s*\(\s*(\w+)\s*\)\s*;$")
+_WORD_TEST = re.compile(r'^\(?\s*(?:tolower\s*\(\s*(\w+)\s*\)|(\w+))\s*==\s*"([^"]*)"\s*\)?$')
+_NUMBER_TEST = re.compile(
+    r"^isNumber\s*\(\s*(\w+)\s*\)"
+    r"(?:\s*&&\s*\(\s*(ato[if])\s*\(\s*(\w+)\.c_str\(\)\s*\)\s*(>=|>)\s*0\s*\))?$"
+)
+_REJECT = re.compile(
+    r"^(?:reportConfigWarning\s*\(.*\)|\w+\s*=\s*false|return\s*\(?\s*false\s*\)?)\s*;$"
+)
+#: (atoi or atof, comparison) -> the number form
+_NUMBER_FORMS = {
+    (None, None): "number",
+    ("atoi", ">="): "uint",
+    ("atoi", ">"): "posuint",
+    ("atof", ">="): "nonneg",
+    ("atof", ">"): "positive",
+}
+
+
+def _condition(text: str) -> tuple[str, str] | None:
+    """``if(COND) rest`` -> (COND, rest), the condition on one line."""
+    m = re.match(r"^(?:else\s+)?if\s*\(", text)
+    if not m:
+        return None
+    depth, i = 1, m.end()
+    while i < len(text) and depth:
+        depth += {"(": 1, ")": -1}.get(text[i], 0)
+        i += 1
+    return (text[m.end() : i - 1].strip(), text[i:].strip()) if not depth else None
+
+
+def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
+    """``enum_or_<number form>:a|b`` for a key's branch of this shape, else None::
+
+        string str = tolower(value);            // optional
+        if((str == "a") || (str == "b")) ...    // one or more branches of words
+        else if(isNumber(value) && (atoi(value.c_str()) >= 0)) ...
+        else
+          reportConfigWarning(...);             // or `handled = false;`, `return(false);`
+
+    Any other value is rejected, so the words and numbers are all the key takes.
+    """
+    code = [ln.split("//", 1)[0].strip() for ln in lines[n:]]
+    if rest.split("//", 1)[0].strip() not in (") {", "){"):
+        return None
+    k, value, lowered = 0, None, None
+    m = _LOWERED.match(code[0]) if code else None
+    if m:
+        lowered, value, k = m.group(1), m.group(2), 1
+    words: list[str] = []
+    number = None
+
+    def skip_body(after: str, k: int) -> int | None:
+        """The line after a branch whose condition ends line ``k`` with ``after``."""
+        if after.startswith("{"):
+            depth = 0
+            for j in range(k, min(k + 40, len(code))):
+                text = after if j == k else code[j]
+                depth += text.count("{") - text.count("}")
+                if depth == 0:
+                    return j + 1
+            return None
+        if after:
+            return k + 1 if after.endswith(";") else None
+        return k + 2 if k + 1 < len(code) and code[k + 1].endswith(";") else None
+
+    while k < len(code) and number is None:
+        cond = _condition(code[k])
+        if cond is None or code[k].startswith("if") != (k == (1 if lowered else 0)):
+            return None
+        test, after = cond
+        num = _NUMBER_TEST.match(test)
+        if num:
+            if num.group(3) not in (None, num.group(1)) or (value or num.group(1)) != num.group(1):
+                return None
+            number = _NUMBER_FORMS[(num.group(2), num.group(4))]
+        else:
+            for part in test.split("||"):
+                w = _WORD_TEST.match(part.strip())
+                if not w:
+                    return None
+                subject = w.group(1) or w.group(2)
+                if w.group(1):  # tolower(value) == "a"
+                    if value not in (None, subject):
+                        return None
+                    value = subject
+                elif subject != lowered:
+                    return None
+                if w.group(3) != w.group(3).lower() or "|" in w.group(3):
+                    return None
+                words.append(w.group(3))
+        nxt = skip_body(after, k)
+        if nxt is None:
+            return None
+        k = nxt
+    if number is None or not words or k >= len(code):
+        return None
+    # the final `else` rejects any other value, and ends the key's branch
+    if code[k] == "else":
+        reject, k = (code[k + 1] if k + 1 < len(code) else ""), k + 2
+    elif code[k].startswith("else "):
+        reject, k = code[k][len("else ") :].strip(), k + 1
+    else:
+        return None
+    if not _REJECT.match(reject) or k >= len(code) or code[k] != "}":
+        return None
+    return f"enum_or_{number}:" + "|".join(dict.fromkeys(words))
+
+
 def _forms(cf, src: str) -> dict[str, dict[str, str]]:
     """Keys whose value goes straight to an MBUtils setter that rejects other forms."""
     out: dict[str, dict[str, str]] = {}
@@ -817,6 +913,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
                 break
         if form is None:
             form = _inline_form(lines, n, rest)
+        if form is None:
+            form = _words_or_number(lines, n, rest)
         if form is None:
             bad.add(key)
             continue

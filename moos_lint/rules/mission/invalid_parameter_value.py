@@ -28,9 +28,12 @@ as recorded in the catalogue with the source line that enforces it:
   `thrust_reflect` (`true`, `false`); uFldBeaconRangeSensor's `report_vars`
   (`both`, `short`, `long`) and `ping_payments` (`upon_response`,
   `upon_request`, `upon_accept`);
-- a word or else a number: uTimerScript's `reset_max` takes `any`,
-  `unlimited` or `nolimit` (any case) or a whole number 0 or more, so
-  `reset_max = no_limit` is rejected;
+- a few words or else a number, where the parser warns for any other
+  value: uTimerScript's `reset_max` takes `any`, `unlimited` or `nolimit`
+  (any case) or a whole number 0 or more, so `reset_max = no_limit` is
+  rejected; its `reset_time` takes `end`, `all-posted`, `none` or a number
+  greater than 0; uProcessWatch's `allow_retractions` `true`, `false` or a
+  number;
 - a polygon, point list or point, judged by a port of MOOS-IvP's own
   `string2Poly`, `string2SegList` and `string2Point`, where the parser
   rejects what they cannot read: the `polygon` of the Loiter, OpRegion and
