@@ -85,6 +85,20 @@ FORM_TEXT = {
 }
 
 
+def form_text(kind: str) -> str:
+    """A value form in words: ``enum:a|b`` and ``enum_or_uint:a|b`` are spelt out."""
+    if kind in FORM_TEXT:
+        return FORM_TEXT[kind]
+    head, _, words = kind.partition(":")
+    listed = " or ".join(f"`{w}`" for w in words.split("|") if w)
+    if head == "enum" and listed:
+        return f"one of {listed}"
+    if head.startswith("enum_or_") and listed:
+        number = head[len("enum_or_") :]
+        return f"{listed}, or {FORM_TEXT.get(number, number)}"
+    return kind
+
+
 def from_app_catalogue(cat: object) -> Catalogue:
     """Adapt the rules' app catalogue (``moos_lint.semantics.catalogue.Catalogue``).
 
@@ -104,7 +118,7 @@ def from_app_catalogue(cat: object) -> Catalogue:
             form = forms.get(str(p).lower())
             if form:
                 kind, at = form
-                text += f"; its value is {FORM_TEXT.get(kind, kind)}"
+                text += f"; its value is {form_text(kind)}"
                 if at:
                     text += f" (parsed at {at})"
             params[str(p)] = ParamInfo(str(p), text)
