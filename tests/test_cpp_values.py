@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import pytest
@@ -10,8 +11,10 @@ import pytest
 from moos_lint.files.source import SourceFile
 from moos_lint.frontends.cpp.app import parse_folder
 from moos_lint.frontends.cpp.values import (
+    _DEF_TEMPLATE,
     AbstractValue,
     RepositoryResolver,
+    defined_names,
     neg,
     range_text,
     resolve_pending,
@@ -109,6 +112,21 @@ def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     assert out.unit == "deg"
     assert any("pitch() returns" in w and "Filter.cpp:1" in w for w in out.why)
     assert list(resolver.parsed) == [str(lib)]  # the other file is read, never parsed
+
+
+def test_the_definition_index_names_exactly_what_the_per_name_search_finds():
+    data = (
+        b"double A::pitch (int x) const {\n"
+        b"void roll\n(\n) override { if (x) { b(1); } }\n"
+        b"int  yaw2(double v){ return g(v) ; }\n"
+        b"x.heading() {}  ::depth() {} caf\xc3\xa9(){} speed(a(b)) {} alt(); {}\n"
+    )
+    words = set(re.findall(rb"\w+", data))
+    for w in sorted(words):
+        expected = re.search(_DEF_TEMPLATE % re.escape(w), data) is not None
+        assert (w in defined_names(data)) == expected, w
+    assert {b"pitch", b"roll", b"yaw2", b"heading", b"depth", b"if"} <= defined_names(data)
+    assert not {b"speed", b"alt", b"b", b"g"} & defined_names(data)
 
 
 def test_unknown_stays_unknown():

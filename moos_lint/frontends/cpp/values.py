@@ -1337,20 +1337,66 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
 
 
 _DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{"
+#: the tail of :data:`_DEF_TEMPLATE`: a definition's parameter list and opening brace
+_DEF_TAIL = re.compile(rb"\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{")
+_WORD = re.compile(rb"\w+")
+_WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
+_SPACE_BYTES = frozenset(b" \t\n\r\f\v")
+
+
+def defined_names(data: bytes) -> set[bytes]:
+    """The names ``data`` may define a function of: exactly the word names ``N`` for
+    which ``_DEF_TEMPLATE % N`` finds a match (each match holds one ``(``, so none hides
+    another, and the name is the word just before it, spaces apart)."""
+    names: set[bytes] = set()
+    for m in _DEF_TAIL.finditer(data):
+        end = m.start()
+        while end > 0 and data[end - 1] in _SPACE_BYTES:
+            end -= 1
+        start = end
+        while start > 0 and data[start - 1] in _WORD_BYTES:
+            start -= 1
+        if start < end:
+            names.add(data[start:end])
+    return names
 
 
 class RepositoryResolver:
     """Resolves a function's return value by its name across the repository's C++ files.
 
-    A file is read and parsed only when a pending value names a function it may define.
+    Each file is read once, to index the names it may define; a file is parsed only
+    when a pending value names a function it may define. Only the index is kept, not
+    the files' bytes.
     """
 
     def __init__(self, paths: list[str], read: Any):
         self.paths = paths
         self.read = read
         self.cache: dict[str, AbstractValue | None] = {}
-        self.data: dict[str, bytes] = {}
         self.parsed: dict[str, Any] = {}
+        self._index: dict[bytes, list[int]] | None = None
+
+    def _data(self, path: str) -> bytes:
+        raw = self.read(path)
+        return raw if isinstance(raw, bytes) else b""
+
+    def _candidates(self, name: str) -> list[tuple[str, bytes | None]]:
+        """The files that may define ``name`` (in path order), with their bytes when read."""
+        key = name.encode()
+        if _WORD.fullmatch(key) is None:  # not a plain word: search every file's bytes
+            pattern = re.compile(_DEF_TEMPLATE % re.escape(key))
+            out: list[tuple[str, bytes | None]] = []
+            for path in self.paths:
+                data = self._data(path)
+                if key in data and pattern.search(data):
+                    out.append((path, data))
+            return out
+        if self._index is None:
+            self._index = {}
+            for i, path in enumerate(self.paths):
+                for n in defined_names(self._data(path)):
+                    self._index.setdefault(n, []).append(i)
+        return [(self.paths[i], None) for i in self._index.get(key, [])]
 
     def __call__(self, name: str) -> AbstractValue | None:
         if name in self.cache:
@@ -1360,17 +1406,12 @@ class RepositoryResolver:
             "#"
         )  # ``getAttitude#2``: what it sets its third argument to
         name = fname
-        pattern = re.compile(_DEF_TEMPLATE % re.escape(name.encode()))
         out: AbstractValue | None = None
-        for path in self.paths:
-            data = self.data.get(path)
-            if data is None:
-                raw = self.read(path)
-                data = raw if isinstance(raw, bytes) else b""
-                self.data[path] = data
-            if name.encode() not in data or not pattern.search(data):
-                continue
-            pf = self._parse(path, data)
+        for path, data in self._candidates(name):
+            if path in self.parsed:
+                pf = self.parsed[path]
+            else:
+                pf = self._parse(path, data if data is not None else self._data(path))
             if pf is None:
                 continue
             folder = Folder([pf])
