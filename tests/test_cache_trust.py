@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 import pickle
+import shlex
 import shutil
 import subprocess
 import sys
@@ -406,3 +407,46 @@ def test_entries_that_are_links_devices_or_fifos_are_never_read(world):
             os.mkfifo(entry)
     proc = world.cli("check", ".", "--exit-zero")  # (would block or never end if read)
     assert proc.returncode == 0 and proc.stdout == first.stdout
+
+
+def _read_only_mount(tree: Path) -> list[str] | None:
+    """A command prefix that runs a program with ``tree`` mounted read-only, or None.
+
+    A read-only bind mount in a private mount namespace binds root too, so this
+    checks the read-only tree where dropping privileges is not possible.
+    """
+    if not shutil.which("unshare") or not hasattr(os, "geteuid") or os.geteuid() != 0:
+        return None
+    t = shlex.quote(str(tree))
+    script = f'mount --bind {t} {t} && mount -o remount,bind,ro {t} {t} && exec "$@"'
+    prefix = ["unshare", "-m", "sh", "-c", script, "sh"]
+    probe = subprocess.run(
+        [*prefix, "sh", "-c", f"! touch {t}/.probe 2>/dev/null"],
+        capture_output=True,
+        timeout=30,
+    )
+    return prefix if probe.returncode == 0 else None
+
+
+def test_a_tree_mounted_read_only_lints_normally(tmp_path):
+    tree = tmp_path / "repo"
+    tree.mkdir()
+    (tree / "alpha.moos").write_text(MISSION)
+    (tree / "moos-lint.toml").write_text('cache-dir = ".lintcache"\n')
+    prefix = _read_only_mount(tree)
+    if prefix is None:
+        pytest.skip("no read-only bind mount here (needs root and unshare)")
+    env = {k: v for k, v in os.environ.items() if k not in ("GITHUB_ACTIONS", "GITLAB_CI")}
+    env["HOME"] = str(tmp_path / "home")
+    env["XDG_CACHE_HOME"] = str(tmp_path / "home" / ".cache")
+    cmd = [sys.executable, "-m", "moos_lint", "check", "."]
+    fresh = subprocess.run([*cmd, "--no-cache"], cwd=tree, env=env, capture_output=True, text=True)
+    assert fresh.returncode == 1 and "alpha.moos:10:1: R003" in fresh.stdout, fresh
+    before = tree_listing(tree)
+    for _ in range(2):
+        proc = subprocess.run(
+            [*prefix, *cmd], cwd=tree, env=env, capture_output=True, text=True, timeout=120
+        )
+        assert "Traceback" not in proc.stderr, proc.stderr
+        assert (proc.returncode, proc.stdout) == (fresh.returncode, fresh.stdout)
+    assert tree_listing(tree) == before
