@@ -8,7 +8,6 @@ and its verdict is read from the DOM Chromium dumps.
 from __future__ import annotations
 
 import json
-import os
 import re
 import shutil
 import subprocess
@@ -20,7 +19,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURE = ROOT / "fixtures" / "graph" / "harbour.moos"
-CORPUS = Path(os.environ.get("MOOS_LINT_CORPUS", "/work/shared/corpus/moos-ivp"))
+CORPUS = Path(__file__).resolve().parents[2] / "shared" / "corpus" / "moos-ivp"
 
 _CHECK = r"""
 <script>
