@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -191,6 +191,14 @@ def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
         hint=a.hint and b.hint,
         origin=origin,
     )
+
+
+def _join_all(values: Iterable[AbstractValue]) -> AbstractValue | None:
+    """The join of ``values``, or None when there is none."""
+    out: AbstractValue | None = None
+    for v in values:
+        out = v if out is None else join(out, v)
+    return out
 
 
 def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
@@ -771,15 +779,24 @@ class Evaluator:
             return self._returns(name, own, depth)
         return AbstractValue(pending=name, why=(f"{text(n)[:40]} at {at}",))
 
-    def _returns(self, name: str, defs: list[tuple[Any, Any]], depth: int) -> AbstractValue:
-        key = ("fn", name)
-        if key in self.folder.memo:
-            return self.folder.memo[key]
+    def _once(self, key: tuple, compute: Callable[[], Any], on_cycle: Any = UNKNOWN) -> Any:
+        """``compute()``, once per folder and ``key``; ``on_cycle`` when asked again while it
+        is being computed (a flow that reaches itself)."""
+        memo = self.folder.memo
+        if key in memo:
+            return memo[key]
         if key in self._stack:
-            return UNKNOWN
+            return on_cycle
         self._stack.add(key)
-        out: AbstractValue | None = None
         try:
+            out = compute()
+        finally:
+            self._stack.discard(key)
+        memo[key] = out
+        return out
+
+    def _returns(self, name: str, defs: list[tuple[Any, Any]], depth: int) -> AbstractValue:
+        def values() -> Iterator[AbstractValue]:
             for pf, fn in defs:
                 for r in _returns_of(fn):
                     expr = r.named_children[0] if r.named_children else None
@@ -788,12 +805,9 @@ class Evaluator:
                     v = settle(self._eval(pf, expr, depth + 1))
                     if v.known and v.pending is None:
                         v = v.because(f"{name}() returns {_clip(text(expr))} at {_at(pf, r)}")
-                    out = v if out is None else join(out, v)
-        finally:
-            self._stack.discard(key)
-        out = out or UNKNOWN
-        self.folder.memo[key] = out
-        return out
+                    yield v
+
+        return self._once(("fn", name), lambda: _join_all(values()) or UNKNOWN)
 
     def _mail(self, pf: Any, n: Any) -> AbstractValue:
         var = mail_key_of(n)
@@ -908,14 +922,8 @@ class Evaluator:
     def _member_set_by_calls(self, key: str, depth: int) -> AbstractValue:
         """A member never assigned but passed to functions of the folder that set it
         (``getAttitude(m_roll, m_pitch, m_yaw)`` in one method, published in another)."""
-        mkey = ("member-out", key)
-        if mkey in self.folder.memo:
-            return self.folder.memo[mkey]
-        if mkey in self._stack:
-            return UNKNOWN
-        self._stack.add(mkey)
-        out: AbstractValue | None = None
-        try:
+
+        def values() -> Iterator[AbstractValue]:
             for pf in self.folder.files:
                 for fnode in pf.functions:
                     if key in pf.local.get(fnode.id, {}) or _is_param(fnode, key):
@@ -925,57 +933,38 @@ class Evaluator:
                         if not own:
                             continue  # a function we cannot see may or may not set it
                         v = self.out_param(name, own, index, depth + 1)
-                        if v is None:
-                            continue
-                        v = v.because(f"{name}() sets `{key}` at {_at(pf, call)}")
-                        out = v if out is None else join(out, v)
-        finally:
-            self._stack.discard(mkey)
-        out = out or UNKNOWN
-        self.folder.memo[mkey] = out
-        return out
+                        if v is not None:
+                            yield v.because(f"{name}() sets `{key}` at {_at(pf, call)}")
+
+        return self._once(("member-out", key), lambda: _join_all(values()) or UNKNOWN)
 
     def out_param(self, name: str, defs: list[tuple[Any, Any]], index: int, depth: int):
         """What function ``name`` sets its ``index``-th argument to (a non-const reference or
         pointer parameter), or None when no definition sets it."""
-        key = ("out", name, index)
-        if key in self.folder.memo:
-            return self.folder.memo[key]
-        if key in self._stack:
-            return None
-        self._stack.add(key)
-        out: AbstractValue | None = None
-        try:
+
+        def values() -> Iterator[AbstractValue]:
             for pf, fn in defs:
                 found = _out_param(fn, index)
                 if found is None:
                     continue
                 pname, pointer = found
                 if pointer:
-                    values = [
-                        settle(self._eval(pf, rhs, depth + 1)).because(
+                    for rhs in _pointer_writes(fn, pname):
+                        yield settle(self._eval(pf, rhs, depth + 1)).because(
                             f"{name}() sets `*{pname}` to {_clip(text(rhs))} at {_at(pf, rhs)}"
                         )
-                        for rhs in _pointer_writes(fn, pname)
-                    ]
-                else:
-                    writes = [a for a in pf.local.get(fn.id, {}).get(pname, []) if a.op]
-                    body = fn.child_by_field_name("body")
-                    if not writes or body is None or not body.children:
-                        continue
-                    end = body.children[-1]
-                    v = self._assigned(pf, fn, end, pname, writes, False, depth + 1)
+                    continue
+                writes = [a for a in pf.local.get(fn.id, {}).get(pname, []) if a.op]
+                body = fn.child_by_field_name("body")
+                if not writes or body is None or not body.children:
+                    continue
+                v = self._assigned(pf, fn, body.children[-1], pname, writes, False, depth + 1)
+                if v is not None:
                     last = writes[-1]
                     step = f"{name}() sets `{pname}`: {_clip(text(last.node))}"
-                    values = (
-                        [] if v is None else [settle(v).because(f"{step} at {_at(pf, last.node)}")]
-                    )
-                for v in values:
-                    out = v if out is None else join(out, v)
-        finally:
-            self._stack.discard(key)
-        self.folder.memo[key] = out
-        return out
+                    yield settle(v).because(f"{step} at {_at(pf, last.node)}")
+
+        return self._once(("out", name, index), lambda: _join_all(values()), on_cycle=None)
 
     def _param(self, fnode: Any, key: str, depth: int) -> AbstractValue:
         """A parameter: what the folder's calls of the function pass for it."""
@@ -1025,30 +1014,26 @@ class Evaluator:
         asgs = self.folder.members.get(key)
         if not asgs:
             return self._member_set_by_calls(key, depth)
-        mkey = ("member", key)
-        if mkey in self.folder.memo:
-            return self.folder.memo[mkey]
-        if mkey in self._stack:
-            return UNKNOWN
-        self._stack.add(mkey)
-        out: AbstractValue | None = None
-        try:
-            plain = [(pf, a) for pf, a in asgs if a.op == "="]
-            for pf, a in plain:
+
+        def plain() -> Iterator[AbstractValue]:
+            for pf, a in asgs:
+                if a.op != "=":
+                    continue
                 v = settle(self._eval(pf, a.rhs, depth + 1))
                 if v.known and v.pending is None and a.fn is not None:
                     v = v.because(f"`{key}` set at {place(pf.path, a.node.start_point[0] + 1)}")
-                out = v if out is None else join(out, v)
+                yield v
+
+        def compute() -> AbstractValue:
+            out = _join_all(plain())
             for pf, a in asgs:
                 if a.op == "=" or out is None:
                     continue
                 cond = _guard(a.node, a.fn) if a.fn is not None else None
                 out = self._compound(pf, a, out, cond, key, depth)
-        finally:
-            self._stack.discard(mkey)
-        out = out or UNKNOWN
-        self.folder.memo[mkey] = out
-        return out
+            return out or UNKNOWN
+
+        return self._once(("member", key), compute)
 
 
 def _at(pf: Any, n: Any) -> str:
