@@ -13,14 +13,19 @@ from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.nsplug import Expansion, Line
 
 #: Keys every MOOS app reads from the top of a mission file (CMOOSApp, MOOSDB, pAntler).
-#: the keys MOOS, pAntler and the MOOS apps read at the top of a mission file
+GLOBAL_KEYS = {
+    "serverhost": "ServerHost",
+    "serverport": "ServerPort",
+    "community": "Community",
+    "moostimewarp": "MOOSTimeWarp",
+    "latorigin": "LatOrigin",
+    "longorigin": "LongOrigin",
+}
+
+#: Every key MOOS, pAntler and the MOOS apps read at the top of a mission file: the keys
+#: above and those only some programs read.
 MOOS_GLOBALS = [
-    "ServerHost",
-    "ServerPort",
-    "Community",
-    "MOOSTimeWarp",
-    "LatOrigin",
-    "LongOrigin",
+    *GLOBAL_KEYS.values(),
     "UseMOOSComms",
     "NoNetwork",
     "WebServerPort",
@@ -33,15 +38,6 @@ MOOS_GLOBALS = [
     "MagneticOffset",
     "ProcessConfig",
 ]
-
-GLOBAL_KEYS = {
-    "serverhost": "ServerHost",
-    "serverport": "ServerPort",
-    "community": "Community",
-    "moostimewarp": "MOOSTimeWarp",
-    "latorigin": "LatOrigin",
-    "longorigin": "LongOrigin",
-}
 
 
 def has_macro(text: str) -> bool:
