@@ -142,8 +142,9 @@ class LintRun:
     def suppress(self, diags: Iterable[Diagnostic]) -> list[Diagnostic]:
         """Drop findings that a comment or per-file-ignores suppresses; record what was used."""
         for path, src in self.sources.items():
-            if path not in self.suppressions:
-                self.suppressions[path] = parse_suppressions(path, src.lines)
+            if path not in self.suppressions:  # (a file without the marker has none)
+                found = parse_suppressions(path, src.lines) if "moos-lint:" in src.text else []
+                self.suppressions[path] = found
         index = {path: SuppressionIndex(sups) for path, sups in self.suppressions.items() if sups}
         kept: list[Diagnostic] = []
         for d in diags:

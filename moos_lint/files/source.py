@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 import stat
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 #: Files larger than this are not read at all (a mission file is a few KB).
@@ -24,37 +24,70 @@ class ReadProblem:
     message: str
 
 
-@dataclass(slots=True)
 class SourceFile:
-    """One file's text, split into lines, with how it was decoded."""
+    """One file's text, split into lines on first use, with how it was decoded.
 
-    path: str | Path
-    text: str
-    encoding: str = "utf-8"
-    bom: bool = False
-    newline: str = "\n"
-    lines: list[str] = field(default_factory=list)
+    The lines are split only when something reads them: most C++ files a run reads
+    are only searched and parsed as a whole, and their lines would double the
+    memory their text takes.
+    """
+
+    __slots__ = ("_lines", "bom", "encoding", "newline", "path", "text")
+
+    def __init__(
+        self,
+        path: str | Path,
+        text: str,
+        encoding: str = "utf-8",
+        bom: bool = False,
+        newline: str = "\n",
+        lines: list[str] | None = None,
+    ):
+        self.path = path
+        self.text = text
+        self.encoding = encoding
+        self.bom = bom
+        self.newline = newline
+        self._lines = lines
+
+    @property
+    def lines(self) -> list[str]:
+        if self._lines is None:
+            self._lines = split_lines(self.text)
+        return self._lines
+
+    @lines.setter
+    def lines(self, value: list[str]) -> None:
+        self._lines = value
+
+    def _fields(self) -> tuple:
+        return (self.path, self.text, self.encoding, self.bom, self.newline, self.lines)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, SourceFile):
+            return NotImplemented
+        return self._fields() == other._fields()
+
+    __hash__ = None  # type: ignore[assignment]  (mutable, as a dataclass would be)
+
+    def __repr__(self) -> str:
+        return f"SourceFile(path={self.path!r}, encoding={self.encoding!r}, {len(self.text)} chars)"
 
     # A stored result (the cache) keeps the text only: the lines are split again on first use.
     def __getstate__(self) -> tuple:
-        lines = None if self.lines == split_lines(self.text) else self.lines
+        lines = self._lines
+        if lines is not None and lines == split_lines(self.text):
+            lines = None
         return (self.path, self.text, self.encoding, self.bom, self.newline, lines)
 
     def __setstate__(self, state: tuple) -> None:
-        self.path, self.text, self.encoding, self.bom, self.newline, lines = state
-        if lines is not None:
-            self.lines = lines
-
-    def __getattr__(self, name: str):
-        if name == "lines":  # not restored yet
-            self.lines = split_lines(self.text)
-            return self.lines
-        raise AttributeError(name)
+        self.path, self.text, self.encoding, self.bom, self.newline, self._lines = state
 
     def line(self, lineno: int) -> str:
         """The text of 1-based line ``lineno`` ('' when out of range)."""
-        if 1 <= lineno <= len(self.lines):
-            return self.lines[lineno - 1]
+        lines = self.lines
+        if 1 <= lineno <= len(lines):
+            return lines[lineno - 1]
         return ""
 
 
@@ -95,7 +128,6 @@ def decode(data: bytes, path: str | Path) -> SourceFile | ReadProblem:
         encoding=encoding,
         bom=bom,
         newline=_newline_of(text),
-        lines=split_lines(text),
     )
 
 

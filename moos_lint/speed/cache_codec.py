@@ -80,8 +80,9 @@ def _source(src: SourceFile) -> dict:
         "bom": src.bom,
         "newline": src.newline,
     }
-    if src.lines != split_lines(src.text):
-        out["lines"] = list(src.lines)
+    lines = src._lines  # (lines never split need not be stored: they follow from the text)
+    if lines is not None and lines != split_lines(src.text):
+        out["lines"] = list(lines)
     return out
 
 
@@ -146,7 +147,7 @@ def _decode_source(v: Any) -> SourceFile:
     if not set(v) <= {"path", "text", "encoding", "bom", "newline", "lines"}:
         raise BadEntry("source: unexpected keys")
     text = want(v["text"], str, "source text")
-    lines = want_strings(v["lines"], "source lines") if "lines" in v else split_lines(text)
+    lines = want_strings(v["lines"], "source lines") if "lines" in v else None
     return SourceFile(
         path=Path(want(v["path"], str, "source path")),
         text=text,
