@@ -49,12 +49,24 @@ class Boundary:
         self.root = os.path.abspath(root)
         self._real_root = os.path.realpath(self.root)
         self._known: dict[str, bool] = {}
+        self._folders: dict[str, str] = {}
 
     def inside(self, path: str) -> bool:
         hit = self._known.get(path)
         if hit is None:
-            hit = self._known[path] = is_within(os.path.realpath(path), self._real_root)
+            hit = self._known[path] = is_within(self._real(path), self._real_root)
         return hit
+
+    def _real(self, path: str) -> str:
+        """``os.path.realpath(path)``, resolving each folder once: the real path of a file
+        that is not a link is its folder's real path joined with its name."""
+        if os.path.islink(path):
+            return os.path.realpath(path)
+        folder, name = os.path.split(os.path.abspath(path))
+        real = self._folders.get(folder)
+        if real is None:
+            real = self._folders[folder] = os.path.realpath(folder)
+        return os.path.join(real, name)
 
 
 def split_linted(files: Iterable[str], boundary: Boundary) -> tuple[list[str], list[str]]:

@@ -71,12 +71,31 @@ def _exact(line: str) -> tuple[bool, re.Pattern | None, re.Pattern] | None:
 class _Layer:
     """The patterns of one ignore file, relative to its folder ``base``."""
 
-    __slots__ = ("base", "patterns", "prefix")
+    __slots__ = ("any_dir", "any_file", "base", "patterns", "prefix")
 
     def __init__(self, base: str, lines: list[str]) -> None:
         self.base = base
         self.prefix = base.rstrip(os.sep) + os.sep  # what a path below ``base`` starts with
         self.patterns = [p for p in map(_exact, lines) if p is not None]
+        #: one regex per kind of path that matches where any pattern matches: most paths
+        #: match none, and one search then rules the whole layer out
+        self.any_file = _any_of([f for _, f, _ in self.patterns])
+        self.any_dir = _any_of([d for _, _, d in self.patterns])
+
+
+def _any_of(regexes: list[re.Pattern | None]) -> re.Pattern | None:
+    """A regex that finds a match where any of ``regexes`` does (None: not combinable)."""
+    sources = [r.pattern for r in regexes if r is not None]
+    if not sources:
+        return None
+    joined = "|".join(f"(?:{_NAMED.sub('(?:', src)})" for src in sources)
+    try:
+        return re.compile(joined)
+    except re.error:  # (inline flags, a back-reference): every pattern is searched alone
+        return None
+
+
+_NAMED = re.compile(r"\(\?P<\w+>")
 
 
 class Frame:
@@ -243,6 +262,8 @@ def _rebase(layer: _Layer, base: str) -> _Layer:
     copy.base = base
     copy.prefix = base.rstrip(os.sep) + os.sep
     copy.patterns = layer.patterns
+    copy.any_file = layer.any_file
+    copy.any_dir = layer.any_dir
     return copy
 
 
@@ -256,6 +277,9 @@ def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
         rel = path[len(layer.prefix) :]
         if os.sep != "/":
             rel = rel.replace(os.sep, "/")
+        any_ = layer.any_dir if is_dir else layer.any_file
+        if any_ is not None and any_.search(rel) is None:
+            continue
         for include, file_re, dir_re in layer.patterns:
             regex = dir_re if is_dir else file_re
             if include != decision and regex is not None and regex.search(rel) is not None:
