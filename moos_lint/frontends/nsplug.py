@@ -212,10 +212,12 @@ class _Work:
     n_false: int = 0
     n_unknown: int = 0
     path: str = ""
+    lines: list[str] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         self.branches = self.outer
         self.path = str(self.src.path)
+        self.lines = self.src.lines
 
     def count(self, state: str | None, delta: int) -> None:
         if state == "F":
@@ -511,12 +513,13 @@ class Preprocessor:
             path = work.path
             if work.idx == 0:
                 exp.sources.setdefault(path, src)
-            if work.idx >= len(src.lines):
+            lines = work.lines
+            if work.idx >= len(lines):
                 self._close_file(exp, work.frames)
                 stack.pop()
                 active.discard(path)
                 continue
-            raw = src.lines[work.idx]
+            raw = lines[work.idx]
             work.idx += 1
             here = Line(raw, raw, path, work.idx, work.chain)
             frames = work.frames

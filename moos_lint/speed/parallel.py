@@ -26,8 +26,11 @@ is not available (Windows, macOS, where it is unsafe) a run stays in one
 process, and so does a process that runs other threads (forking it could
 deadlock). A small input (fewer than :data:`MIN_FILES` files) also stays in one
 process: starting a pool costs more than it saves, and editors re-lint one
-file at a time. A worker that dies breaks the pool; the main process then does
-the rest of the work itself, so a run never waits forever.
+file at a time. Without ``--jobs``, a run takes the CPUs that other work leaves
+idle at its start (a CPU shared with a busy process gains nothing from a second
+worker but the cost of starting it), so it is never slower than ``-j 1``. A
+worker that dies breaks the pool; the main process then does the rest of the
+work itself, so a run never waits forever.
 """
 
 from __future__ import annotations
@@ -62,14 +65,25 @@ def default_jobs() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+def busy_cpus() -> int:
+    """How many tasks other than this one are running now (Linux's ``/proc/loadavg``
+    counts the runnable tasks, this one included); 0 where that is not known."""
+    try:
+        with open("/proc/loadavg", encoding="ascii") as fh:
+            running = int(fh.read().split()[3].split("/")[0])
+    except (OSError, ValueError, IndexError):
+        return 0
+    return max(0, running - 1)
+
+
 def can_fork() -> bool:
     return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
 
 
 def effective_jobs(jobs: int | None, n_files: int) -> int:
     """How many processes to use for ``n_files`` files when ``jobs`` are asked for."""
-    if jobs is None:
-        jobs = default_jobs()
+    if jobs is None:  # as many as there are CPUs that other work leaves idle now
+        jobs = max(1, default_jobs() - busy_cpus())
     if jobs <= 1 or n_files < MIN_FILES or not can_fork():
         return 1
     if threading.active_count() > 1:  # forking a threaded process (an embedding host) can deadlock

@@ -132,6 +132,36 @@ def test_small_inputs_stay_in_one_process():
     assert parallel.effective_jobs(1, 10_000) == 1
 
 
+def test_default_jobs_leave_busy_cpus_alone(monkeypatch):
+    monkeypatch.setattr(parallel, "default_jobs", lambda: 4)
+    monkeypatch.setattr(parallel, "can_fork", lambda: True)
+    monkeypatch.setattr(parallel, "busy_cpus", lambda: 3)
+    assert parallel.effective_jobs(None, 10_000) == 1  # one idle CPU: one process
+    monkeypatch.setattr(parallel, "busy_cpus", lambda: 9)
+    assert parallel.effective_jobs(None, 10_000) == 1
+    monkeypatch.setattr(parallel, "busy_cpus", lambda: 1)
+    assert parallel.effective_jobs(None, 10_000) == 3
+    assert parallel.effective_jobs(4, 10_000) == 4  # asked for: as asked, whatever the load
+
+
+def test_busy_cpus_reads_the_running_tasks(monkeypatch, tmp_path):
+    import builtins
+
+    real_open = builtins.open
+    fake = tmp_path / "loadavg"
+
+    def fake_open(path, *a, **k):
+        return real_open(fake if path == "/proc/loadavg" else path, *a, **k)
+
+    monkeypatch.setattr(builtins, "open", fake_open)
+    fake.write_text("0.50 0.40 0.30 3/120 4567\n")
+    assert parallel.busy_cpus() == 2  # three running, this process one of them
+    fake.write_text("garbage\n")
+    assert parallel.busy_cpus() == 0  # not known: as if idle
+    fake.unlink()
+    assert parallel.busy_cpus() == 0
+
+
 def test_version_imports_no_parser_and_no_server():
     code = (
         "import sys\n"
