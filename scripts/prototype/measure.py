@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import importlib.util
+import json
 import os
 import statistics
 import subprocess
@@ -96,10 +97,9 @@ def main() -> int:
     print(f"{len(files)} mission and behavior files; medians of {args.runs} runs")
     # each Python run in a fresh process: imports and memos start cold, as a command does
     code = (
-        "import json, sys; sys.path.insert(0, %r); import measure; "
-        "print(json.dumps(measure.stages(sys.argv[1:])))" % str(HERE)
+        f"import json, sys; sys.path.insert(0, {str(HERE)!r}); import measure; "
+        "print(json.dumps(measure.stages(sys.argv[1:])))"
     )
-    import json
 
     runs = [
         json.loads(
