@@ -360,6 +360,36 @@ class _Builder:
             self.m.publishers.setdefault(found[0], []).append(found[1])
 
     def build(self) -> MissionModel:
+        """The whole model: the mission's own part (:func:`_core`, shared with the
+        missions beside it), then what ``uPokeDB`` scripts and sibling missions post."""
+        core = _core(self.run, self.m.path, self.m.moos).m
+        self.m = m = MissionModel(
+            path=core.path,
+            moos=core.moos,
+            catalogue=core.catalogue,
+            processes=core.processes,
+            behavior_files=core.behavior_files,
+            unresolved_behaviors=core.unresolved_behaviors,
+            refs=core.refs,
+            publishers={k: list(v) for k, v in core.publishers.items()},
+            unknown_apps=core.unknown_apps,
+            inbound=core.inbound,
+            dynamic_apps=core.dynamic_apps,
+            ref_process=core.ref_process,
+        )
+        folder = os.path.dirname(m.path)
+        pokes = self.run.memos.pokes
+        if folder not in pokes:
+            pokes[folder] = _pokes(folder)
+        for var, script in pokes[folder].items():
+            self.add(var, f"uPokeDB ({script})", "poke")
+        if m.inbound:
+            self._siblings(folder)
+        return m
+
+    def build_core(self) -> MissionModel:
+        """The mission's own part: its processes, what their apps and configuration
+        blocks publish and read, and its behavior files."""
         m = self.m
         seen: set[str] = set()
         for run in m.moos.runs:
@@ -386,14 +416,6 @@ class _Builder:
         for proc in m.processes:
             if proc.binary.lower() == "phelmivp" and proc.block is not None:
                 self._helm(proc)
-        folder = os.path.dirname(m.path)
-        pokes = self.run.memos.pokes
-        if folder not in pokes:
-            pokes[folder] = _pokes(folder)
-        for var, script in pokes[folder].items():
-            self.add(var, f"uPokeDB ({script})", "poke")
-        if m.inbound:
-            self._siblings(folder)
         return m
 
     def _process(self, proc: Process) -> None:
@@ -492,9 +514,8 @@ def _external_publishers(run: RunView, path: str, moos: MoosFile) -> list[tuple[
     if kept is not None and kept.holds(run, moos, cat):
         memo[path] = kept.publishers
         return kept.publishers
-    builder = _Builder(run, path, moos)
-    builder.m.inbound = []  # do not recurse
-    memo[path] = out = _publishers_of(path, _build_without_siblings(builder))
+    builder = _core(run, path, moos)
+    memo[path] = out = _publishers_of(path, builder.m)
     if cat.inputs is not None:
         with _KEPT_LOCK:
             _KEPT[path] = _Kept(moos, cat.inputs, builder, out)
@@ -565,21 +586,6 @@ def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
     return [f for f in found if f is not None]
 
 
-def _build_without_siblings(b: _Builder) -> MissionModel:
-    m = b.m
-    for run in m.moos.runs:
-        if not run.name or has_macro(run.name) or has_macro(run.binary):
-            continue
-        binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1].strip()
-        proc = Process(run.name, binary, run, _block_for(m.moos, run.name), b.cat.app(binary))
-        m.processes.append(proc)
-    for proc in m.processes:
-        b._process(proc)
-        if proc.binary.lower() == "phelmivp" and proc.block is not None:
-            b._helm(proc)
-    return m
-
-
 class _RuleContext(Protocol):
     """The part of a rule's context (:class:`moos_lint.core.engine.Context`) read here."""
 
@@ -596,6 +602,18 @@ def mission_model(ctx: _RuleContext) -> MissionModel:
     if ctx.moos is None:
         raise ValueError(f"{ctx.path}: a mission rule runs on a parsed .moos file")
     return model_of(ctx.run, ctx.path, ctx.moos)
+
+
+def _core(run: RunView, path: str, moos: MoosFile) -> _Builder:
+    """The builder of the mission's own part (:meth:`_Builder.build_core`), once per run:
+    its whole model and the models of the missions beside it start from it."""
+    cores = run.memos.mission_cores
+    key = _norm(path)
+    found = cores.get(key)
+    if found is None or found.m.moos is not moos:
+        found = cores[key] = _Builder(run, path, moos)
+        found.build_core()
+    return found
 
 
 def model_of(run: RunView, path: str, moos: MoosFile) -> MissionModel:

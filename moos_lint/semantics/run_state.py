@@ -5,7 +5,7 @@ Each field is filled, and read, only by the module that owns it, through its
 typed accessor:
 
 - ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
-- ``mission_models``, ``pokes``, ``app_publishers``, ``external_publishers``:
+- ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``:
   :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
 - ``repo_cpp_stems``: :func:`moos_lint.rules.mission._behaviors.repo_classes`;
 - ``repo_globals``: :func:`moos_lint.rules.hygiene.unknown_key._repo_globals`.
@@ -17,7 +17,7 @@ so that none of them imports the engine.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:  # types only: the owners import this module, not the reverse
     from moos_lint.core.config import Settings
@@ -36,6 +36,9 @@ class RunMemos:
     catalogue: Catalogue | None = None
     #: normalised mission path -> its model
     mission_models: dict[str, MissionModel] = field(default_factory=dict)
+    #: normalised mission path -> the builder of its own part (without what the missions
+    #: beside it publish), which its model and its siblings' models share
+    mission_cores: dict[str, Any] = field(default_factory=dict)
     #: folder -> ``VAR`` -> the script whose ``uPokeDB`` posts it
     pokes: dict[str, dict[str, str]] = field(default_factory=dict)
     #: (id of the app's catalogue entry, process name) -> (key, publisher) pairs
