@@ -217,6 +217,16 @@ def looks_like_text_format(lines: list[Line], known_app: bool) -> bool:
     ``key = value`` lines outnumber the field lines (an older version of the app).
     For any other block, field lines must be most of its lines.
     """
+    if not known_app:  # a field line holds `:`, `{` or `<`: most blocks have no two such
+        maybe = 0
+        for line in lines:
+            t = line.text
+            if ":" in t or "{" in t or "<" in t:
+                maybe += 1
+                if maybe == 2:
+                    break
+        if maybe < 2:
+            return False
     fields = moos = other = 0
     for line in lines:
         text = _QUOTED.sub('""', line.text).split("#", 1)[0].split("//", 1)[0].strip()
