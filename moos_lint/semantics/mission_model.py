@@ -351,13 +351,27 @@ class _Builder:
         #: (value, folder, paths found, ok) and each behavior file's expansion
         self.behavior_lookups: list[tuple[str, tuple[str, ...], tuple[list[str], bool]]] = []
         self.behavior_expansions: list[tuple[str, Expansion]] = []
+        #: the core's publishers, whose lists a whole model shares until it adds to them
+        self._shared: dict[str, list[Publisher]] | None = None
 
     def add(
         self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
     ) -> None:
         found = _publisher(var, who, how, line, process)
         if found is not None:
-            self.m.publishers.setdefault(found[0], []).append(found[1])
+            self._put(*found)
+
+    def _put(self, key: str, pub: Publisher) -> None:
+        """Add a publisher of ``key``; a list the model shares with its core is copied
+        first (a model copies only the lists it adds to)."""
+        publishers = self.m.publishers
+        found = publishers.get(key)
+        if found is None:
+            publishers[key] = [pub]
+        elif self._shared is not None and found is self._shared.get(key):
+            publishers[key] = [*found, pub]
+        else:
+            found.append(pub)
 
     def build(self) -> MissionModel:
         """The whole model: the mission's own part (:func:`_core`, shared with the
@@ -371,12 +385,13 @@ class _Builder:
             behavior_files=core.behavior_files,
             unresolved_behaviors=core.unresolved_behaviors,
             refs=core.refs,
-            publishers={k: list(v) for k, v in core.publishers.items()},
+            publishers=dict(core.publishers),
             unknown_apps=core.unknown_apps,
             inbound=core.inbound,
             dynamic_apps=core.dynamic_apps,
             ref_process=core.ref_process,
         )
+        self._shared = core.publishers
         folder = os.path.dirname(m.path)
         pokes = self.run.memos.pokes
         if folder not in pokes:
@@ -484,9 +499,8 @@ class _Builder:
             if not moos.is_mission:
                 continue
             self.m.sibling_missions.append(_norm(cand))
-            publishers = self.m.publishers
             for key, pub in _external_publishers(self.run, _norm(cand), moos):
-                publishers.setdefault(key, []).append(pub)
+                self._put(key, pub)
 
 
 def _app_publishers(run: RunView, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:
