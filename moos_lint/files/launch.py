@@ -17,6 +17,8 @@ import os
 import re
 
 from moos_lint.files.project import is_within, vcs_top
+from moos_lint.files.stamps import folder_mtime
+from moos_lint.files.suffixes import script_stem
 
 
 def project_folder(settings, path: str) -> str:
@@ -100,3 +102,49 @@ def script_include_paths(folder: str) -> tuple[str, ...]:
                     if os.path.isdir(where) and where not in out:
                         out.append(where)
     return tuple(out)
+
+
+def scripts_beside(path: str) -> frozenset[str]:
+    """The lower-case stems of the scripts in the folder of ``path`` (``iSonar`` for
+    ``iSonar.py``): programs a mission may start (``Run = ./iSonar.py``), each reading
+    the block of its stem. Listed again when the folder changes."""
+    folder = os.path.dirname(os.path.abspath(path))
+    return _scripts_in(folder, folder_mtime(folder))
+
+
+@functools.lru_cache(maxsize=256)
+def _scripts_in(folder: str, _mtime: object) -> frozenset[str]:
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        return frozenset()
+    stems = (script_stem(n) for n in names)
+    return frozenset(s.lower() for s in stems if s)
+
+
+_QUOTED = re.compile(rb"""["']([A-Za-z_][\w.\-]{0,63})["']""")
+
+
+def script_names(mission: str, program: str) -> frozenset[str] | None:
+    """The lower-case words a launched script quotes (``'iPydyna'``): the MOOS name it
+    connects as and the blocks it reads are among them. ``program`` is the Run line's
+    program, found from the mission's folder; None when no such script is there. The
+    script is read as text, never run."""
+    if script_stem(program.replace("\\", "/").rsplit("/", 1)[-1]) is None:
+        return None
+    path = os.path.join(os.path.dirname(os.path.abspath(mission)), program)
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return _quoted_in(path, st.st_mtime_ns, st.st_size)
+
+
+@functools.lru_cache(maxsize=256)
+def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
+    try:
+        with open(path, "rb") as fh:
+            data = fh.read(_SCRIPT_BYTES)
+    except OSError:
+        return None
+    return frozenset(m.group(1).decode("ascii", "replace").lower() for m in _QUOTED.finditer(data))

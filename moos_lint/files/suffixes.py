@@ -27,6 +27,18 @@ CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx")
 CPP_HEADER_SUFFIXES = (".h", ".hpp")
 #: every C++ file moos-lint reads
 CPP_SUFFIXES = CPP_SOURCE_SUFFIXES + CPP_HEADER_SUFFIXES
+#: programs an interpreter runs: pAntler starts ``Run = ./iSonar.py`` like any program,
+#: and such a script (pymoos, python-moos, a shell wrapper) reads the block of its stem
+SCRIPT_SUFFIXES = (".py", ".sh", ".bash", ".pl", ".rb", ".js", ".lua", ".jar")
+
+
+def script_stem(program: str) -> str | None:
+    """``iSonar`` for a script ``iSonar.py`` (no folder); None for any other program."""
+    low = program.lower()
+    for suffix in SCRIPT_SUFFIXES:
+        if low.endswith(suffix) and len(program) > len(suffix):
+            return program[: -len(suffix)]
+    return None
 
 
 def is_cpp(path: str) -> bool:
@@ -45,7 +57,9 @@ __all__ = [
     "CPP_SOURCE_SUFFIXES",
     "CPP_SUFFIXES",
     "MOOS_SUFFIXES",
+    "SCRIPT_SUFFIXES",
     "Kind",
     "is_cpp",
     "is_cpp_source",
+    "script_stem",
 ]

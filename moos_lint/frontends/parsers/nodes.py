@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from moos_lint.files.diagnostics import Span
+from moos_lint.files.suffixes import script_stem
 from moos_lint.frontends.nsplug import Expansion, Line
 
 #: Keys every MOOS app reads from the top of a mission file (CMOOSApp, MOOSDB, pAntler).
@@ -154,6 +155,21 @@ class RunLine:
         if self.alias:
             return self.alias
         return self.binary.replace("\\", "/").rsplit("/", 1)[-1]
+
+    @property
+    def script_block(self) -> str | None:
+        """The block a script started without an alias reads besides its own name:
+        ``Run = ./iSonar.py`` reads ``ProcessConfig = iSonar`` (the script, not pAntler,
+        names its MOOS client). None for a compiled program or an aliased one."""
+        if self.alias_from_params or self.alias:
+            return None
+        return script_stem(self.name)
+
+    @property
+    def block_names(self) -> tuple[str, ...]:
+        """The names of the blocks the process may read (see :attr:`script_block`)."""
+        stem = self.script_block
+        return (self.name, stem) if stem else (self.name,)
 
     def _find(self, text: str, after: int = 0) -> Span:
         line = self.param.line

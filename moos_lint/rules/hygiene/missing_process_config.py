@@ -51,7 +51,10 @@ MOOS-IvP caveats, deliberately not reported:
 - a Run line with `InhibitMOOSParams = true`: pAntler does not pass the
   mission file, so the process reads no block at all;
 - a process whose only block has `{` on its header line: MOOS never finds that
-  block, and brace-on-header (R003) reports it.
+  block, and brace-on-header (R003) reports it;
+- a script started by a Run line (`Run = ./iSonar.py`, also `.sh`, `.pl`,
+  `.rb`, `.js`, `.lua`, `.jar`): it names its MOOS client and reads its
+  configuration its own way, if at all.
 A Run line and a block in mutually exclusive `#ifdef` branches do not count as
 a match: in the branch that launches the process, the block is missing.
 """
@@ -103,9 +106,12 @@ def check(ctx):
             continue
         if run.options.get("inhibitmoosparams", "").lower() == "true":
             continue
+        if run.script_block is not None:
+            continue  # a script reads its configuration its own way, if at all
         if any(
-            names_match(b.name, name) and not exclusive(b.header, run.param.line, ctx.expansion)
-            for b in (*by_name.get(name.lower(), ()), *any_name)
+            names_match(b.name, n) and not exclusive(b.header, run.param.line, ctx.expansion)
+            for n in run.block_names
+            for b in (*by_name.get(n.lower(), ()), *any_name)
         ):
             continue
         yield ctx.report(

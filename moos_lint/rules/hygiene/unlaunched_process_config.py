@@ -48,6 +48,11 @@ suppress the finding on the header line.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
+- a block a launched script reads: a script started by a Run line
+  (`Run = ./iSonar.py`) connects under the name it chooses and reads its
+  configuration its own way, so its stem's block (`iSonar`) and any block
+  whose name it quotes (`MoosReader(file, "iSonar")`) count as read. The
+  script is read as text, never run;
 - a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
   be any name, so it launches (or is launched by) anything it could match;
 - a block and a Run line in mutually exclusive `#ifdef` branches do not launch
@@ -62,6 +67,7 @@ MOOS-IvP caveats, deliberately not reported:
 import re
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.launch import script_names
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
@@ -96,8 +102,10 @@ def check(ctx):
         if has_macro(run.name):
             any_name.append(run)
         else:
-            by_name.setdefault(run.name.lower(), []).append(run)
+            for name in run.block_names:
+                by_name.setdefault(name.lower(), []).append(run)
     commented: dict[str, str] | None = None
+    scripts: frozenset[str] | None = None  # what the launched scripts quote
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
             continue
@@ -106,11 +114,15 @@ def check(ctx):
         if has_macro(block.name) or any(block.lname.startswith(m) for m in manual if m):
             continue
         if any(
-            names_match(run.name, block.name)
+            any(names_match(name, block.name) for name in run.block_names)
             and not exclusive(run.param.line, block.header, ctx.expansion)
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
+        if scripts is None:
+            scripts = _script_words(ctx.path, moos)
+        if block.lname in scripts:
+            continue  # a launched script names it: the script reads it its own way
         if commented is None:
             commented = _commented_runs(moos)
         hint = commented.get(block.name.lower())
@@ -120,6 +132,16 @@ def check(ctx):
             f"no process reads block `{block.name}`: {why} (launch it or delete the block)",
             line=block.header,
         )
+
+
+def _script_words(mission: str, moos) -> frozenset[str]:
+    """The lower-case words the scripts the mission launches quote (see
+    :func:`moos_lint.files.launch.script_names`)."""
+    words: set[str] = set()
+    for run in moos.runs:
+        if run.script_block is not None and not has_macro(run.binary):
+            words |= script_names(mission, run.binary) or frozenset()
+    return frozenset(words)
 
 
 def _commented_runs(moos) -> dict[str, str]:

@@ -54,6 +54,10 @@ MOOS-IvP caveats, deliberately not reported:
   from their sources (`Output =` and `Log =` lines are theirs, whatever the
   value);
 - the ANTLER block (unknown-key, R-series, checks it);
+- the block of a script: one the mission launches (`Run = ./pSonar.py` reads
+  `pSonar`), or a script beside the mission of the block's name
+  (`pSonar.py`), when no Run line starts a compiled program of that name. The
+  script, not the catalogue's app of the same name, reads that block;
 - a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
   those from anywhere in the file with `GetValue`;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
@@ -73,6 +77,7 @@ import difflib
 import functools
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.files.launch import scripts_beside
 from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, has_macro
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.rules.kit.declare import Kind, Scope, rule
@@ -90,10 +95,14 @@ def block_apps(ctx):
     aliases: dict[str, str] = {}
     for run in ctx.moos.runs:
         if run.name and not has_macro(run.name):
-            aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+            for name in run.block_names:  # (a script's block is the script's, not an app's)
+                aliases.setdefault(name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    scripts = scripts_beside(ctx.path)
     for block in ctx.moos.blocks:
         if block.lname == "antler" or has_macro(block.name):
             continue
+        if block.lname in scripts and block.lname not in aliases:
+            continue  # a script beside the mission is the program that reads it
         app = cat.app(aliases.get(block.lname, block.name).strip())
         if app is not None:
             yield block, app
@@ -104,7 +113,8 @@ def text_blocks(ctx):
     aliases: dict[str, str] = {}
     for run in ctx.moos.runs:
         if run.name and not has_macro(run.name):
-            aliases.setdefault(run.name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+            for name in run.block_names:  # (a script's block is the script's, not an app's)
+                aliases.setdefault(name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
     for block in ctx.moos.blocks:
         if not block.text_format or has_macro(block.name):
             continue
