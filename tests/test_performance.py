@@ -154,6 +154,23 @@ def test_the_cache_notices_an_include_that_now_exists(tree, tmp_path, counted):
     assert not any(d["code"] == "P001" for d in after)
 
 
+def test_the_cache_notices_a_changed_launched_script(tmp_path, counted):
+    """A script a mission launches decides which blocks it reads (what it quotes)."""
+    (tmp_path / "m.moos").write_text(
+        "ServerPort = 9000\nCommunity = abe\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = ./iDyn2.py @ NewConsole = false\n}\n\n"
+        "ProcessConfig = iDyn\n{\n  AppTick = 4\n}\n"
+    )
+    script = tmp_path / "iDyn2.py"
+    script.write_text('NAME = "iDyn"\n')
+    store = tmp_path / "cache"
+    assert not any(d["code"] == "H001" for d in _json(_cached(tmp_path, store)))
+    script.write_text('NAME = "iDynamics"\n')  # it reads another block now
+    after = _json(_cached(tmp_path, store))
+    assert len(counted) == 2
+    assert [d["code"] for d in after if d["code"] == "H001"] == ["H001"]
+
+
 def test_the_stored_file_list_notices_new_and_removed_files(tree, tmp_path, counted):
     store = tmp_path / "cache"
     _cached(tree, store)

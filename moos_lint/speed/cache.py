@@ -27,7 +27,8 @@ discovery, so a new or deleted mission file is a different key).
 **When an entry is valid.** The entry records every file the run read: the
 linted files, every file an ``#include`` pulled in, behavior files and sibling
 missions the mission model opened, the C++ files (also the ones the prefilter
-skipped), the shell scripts beside the missions (``uPokeDB`` lines), the
+skipped), the scripts beside the missions (``uPokeDB`` lines, the names a
+launched script quotes), the
 ``CMakeLists.txt`` that names a C++ app's process, and user catalogues. For
 each it keeps the modification time and size *from just before the run read
 it* and a hash of the bytes it read (:func:`moos_lint.files.source.keep_journal`).
@@ -76,7 +77,6 @@ outside the cache folder.
 from __future__ import annotations
 
 import contextlib
-import glob
 import json
 import os
 from pathlib import Path
@@ -84,7 +84,7 @@ from pathlib import Path
 import moos_lint
 from moos_lint import __version__
 from moos_lint.files.stamps import file_stamp, folder_mtime, package_stamps
-from moos_lint.files.suffixes import is_cpp
+from moos_lint.files.suffixes import SCRIPT_SUFFIXES, is_cpp
 from moos_lint.speed.cache_codec import BadEntry, decode_result, encode_result, want, want_list
 from moos_lint.speed.cache_files import (
     Folder,
@@ -178,7 +178,12 @@ def _side_files(files: list[str], settings: Settings) -> set[str]:
     if cc:
         out.add(os.path.join(cc, "compile_commands.json") if os.path.isdir(cc) else cc)
     for d in {os.path.dirname(p) for p in files if not is_cpp(p)}:
-        out.update(glob.glob(os.path.join(glob.escape(d), "*.sh")))
+        try:
+            names = os.listdir(d)
+        except OSError:
+            continue
+        # shell scripts (uPokeDB lines) and the scripts missions launch (what they quote)
+        out.update(os.path.join(d, n) for n in names if n.lower().endswith(SCRIPT_SUFFIXES))
     for d in {os.path.dirname(p) for p in files if is_cpp(p)}:
         out.add(os.path.join(d, "CMakeLists.txt"))
         out.add(os.path.join(os.path.dirname(d), "CMakeLists.txt"))
