@@ -68,7 +68,8 @@ class SourceFile:
             return NotImplemented
         return self._fields() == other._fields()
 
-    __hash__ = None  # type: ignore[assignment]  (mutable, as a dataclass would be)
+    # mutable, as a dataclass would be: never a dict key
+    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f"SourceFile(path={self.path!r}, encoding={self.encoding!r}, {len(self.text)} chars)"
