@@ -194,6 +194,8 @@ class FolderTables:
     config_keys: dict[str, str] = field(default_factory=dict)
     # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
     name_tables: dict[str, list[str]] = field(default_factory=dict)
+    # members the app upper-cases (``m_var = toupper(value)``, ``MOOSToUpper(m_var)``)
+    upper: set[str] = field(default_factory=set)
 
 
 class Spans:
@@ -326,6 +328,7 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             t.assigns.setdefault(a.target, []).append(val)
         for name, entries in _name_tables(pf):
             t.name_tables.setdefault(name, entries)
+        t.upper |= _upper_cased(pf)
         for name, args in pf.inits:
             vals = args.named_children
             val = string_value(vals[0]) if len(vals) == 1 else None
@@ -338,6 +341,62 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 if ckey is not None and member:
                     t.config_keys.setdefault(member, ckey.lower())
     return t
+
+
+def _calls_in(root: Any) -> Iterator[Any]:
+    stack = [root]
+    while stack:
+        x = stack.pop()
+        if x.type == "call_expression":
+            yield x
+        stack.extend(x.named_children)
+
+
+def _upper_cased(pf: ParsedFile) -> set[str]:
+    """The variables ``pf`` upper-cases: the arguments of an upper-casing call
+    (``MOOSToUpper(m_var)``, ``transform(v.begin(), v.end(), v.begin(), ::toupper)``), what is
+    assigned its result (``m_var = toupper(value)``), and what is assigned a variable
+    upper-cased before it in the same block (``value = toupper(value); m_var = value;``)."""
+    from moos_lint.frontends.cpp.facts import UPPER_CASE_CALLS
+
+    if b"pper" not in pf.data:
+        return set()
+    upper: dict[str, list[Any]] = {}  # variable -> the upper-casing calls of it
+    for call in _calls_in(pf.tree.root_node):
+        fn, args = call.child_by_field_name("function"), call.child_by_field_name("arguments")
+        argv = args.named_children if args is not None else []
+        if callee(fn) not in UPPER_CASE_CALLS and not any(
+            short(text(a)) == "toupper" for a in argv
+        ):
+            continue
+        words = set()
+        in_place = callee(fn) in ("to_upper", "transform") or callee(fn) not in UPPER_CASE_CALLS
+        for a in argv if in_place else ():  # ``MOOSToUpper(v)`` and ``toupper(v)`` copy
+            a = strip_parens(a)
+            if a is not None and a.type == "call_expression":  # ``v.begin()``
+                inner = a.child_by_field_name("function")
+                if inner.type == "field_expression":
+                    a = inner.child_by_field_name("argument")
+            words.add(target_name(a) if a is not None else "")
+        if call.parent is not None and call.parent.type == "argument_list":
+            # a setter given the upper-cased value: ``setNonWhiteVarOnString(m_var, toupper(v))``
+            words.update(target_name(a) for a in call.parent.named_children)
+        asg = enclosing(call, ("assignment_expression", "init_declarator"))
+        if asg is not None and pf.function_of(asg) is pf.function_of(call):
+            words.add(
+                target_name(
+                    asg.child_by_field_name("left") or asg.child_by_field_name("declarator")
+                )
+            )
+        for w in words - {""}:
+            upper.setdefault(w, []).append(call)
+    out = set(upper)
+    for a in pf.asgs:
+        for call in upper.get(target_name(strip_parens(a.rhs)), ()):
+            block = enclosing(call, ("compound_statement",))  # the call's block holds `a`
+            if call.start_byte < a.node.start_byte and block is not None and _inside(a.node, block):
+                out.add(a.target)
+    return out
 
 
 _TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
@@ -406,6 +465,8 @@ class Extractor:
         if val is None:
             name.suffix = self._suffix(strip_parens(n))
         name.config_key = self._config_key(strip_parens(n))
+        if name.config_key is not None:
+            name.config_upper = self._config_member(strip_parens(n)) in self.tables.upper
         return name
 
     def _suffix(self, n: Any) -> str:
@@ -466,11 +527,15 @@ class Extractor:
 
     def _config_key(self, n: Any) -> str | None:
         """The configuration key that sets the member a name is built from."""
+        return self.tables.config_keys.get(self._config_member(n))
+
+    def _config_member(self, n: Any) -> str:
+        """The member a name is built from (``m_prefix`` of ``m_prefix + "_PITCH"``)."""
         while n is not None and n.type == "binary_expression":
             n = strip_parens(n.child_by_field_name("left"))
         if n is None or n.type not in ("identifier", "field_expression"):
-            return None
-        return self.tables.config_keys.get(target_name(n))
+            return ""
+        return target_name(n)
 
     def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
         n = strip_parens(n)
@@ -667,6 +732,12 @@ class Extractor:
                         function_name(a.fn),
                     )
                 )
+            elif a.op == "=" and a.fn is not None and self._ned_down(a):
+                value = self.value(a.rhs)
+                value.abstract = self.evaluator.of(pf, a.rhs)
+                out.ned_writes.append(
+                    Assignment(a.target, value, pf.spans.of(a.node), function_name(a.fn))
+                )
         for s in pf.strings:  # the literals that mention /dev/
             v = string_value(s)
             if v is not None and DEVICE_STRING.match(v):
@@ -694,6 +765,14 @@ class Extractor:
             elif "asio" in full:
                 out.io.append(IOUse("network", full, pf.spans.of(ns)))
         return out
+
+    def _ned_down(self, a: _Asg) -> bool:
+        """Whether ``a`` sets a NED z (:meth:`Evaluator.ned_down`)."""
+        if self.evaluator is None or a.node.type != "assignment_expression":
+            return False
+        if not re.search(rb"(?i)ned|down", self.pf.data):
+            return False
+        return bool(self.evaluator.ned_down(self.pf, a.node.child_by_field_name("left")))
 
     def _fn_of(self, n: Any) -> str:
         return self.pf.function_name_of(n)
