@@ -42,6 +42,13 @@ SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: MAVSDK's ``Mavsdk::add_*_connection(url)``: a link to an autopilot over UDP, TCP or serial
+VEHICLE_LINK_CALLS = {
+    "add_any_connection",
+    "add_udp_connection",
+    "add_tcp_connection",
+    "add_serial_connection",
+}
 #: conversions from degrees that tell what a variable read by mail carries
 FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
@@ -54,6 +61,7 @@ CALLED = (
     | CONFIG_CALLS
     | BAUD_CALLS
     | SOCKET_CALLS
+    | VEHICLE_LINK_CALLS
     | STRCMP
     | FROM_DEGREES
     | VARIABLE_SET
@@ -830,7 +838,7 @@ class Extractor:
                     break
         elif name in BAUD_CALLS:
             out.io.append(IOUse("serial", name, spans.of(call)))
-        elif name in SOCKET_CALLS and fn.type == "identifier":
+        elif (name in SOCKET_CALLS and fn.type == "identifier") or name in VEHICLE_LINK_CALLS:
             out.io.append(IOUse("socket", name, spans.of(call)))
         elif name in STRCMP and len(argv) >= 2:
             lit = string_value(strip_parens(argv[1]))
