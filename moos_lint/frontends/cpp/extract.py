@@ -336,7 +336,6 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             t.assigns.setdefault(a.target, []).append(val)
         for name, entries in _name_tables(pf):
             t.name_tables.setdefault(name, entries)
-        t.upper |= _upper_cased(pf)
         for name, args in pf.inits:
             vals = args.named_children
             val = string_value(vals[0]) if len(vals) == 1 else None
@@ -348,16 +347,30 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 member = target_name(argv[-1])
                 if ckey is not None and member:
                     t.config_keys.setdefault(member, ckey.lower())
+    if t.config_keys:  # only a configured name's case matters
+        for pf in files:
+            t.upper |= _upper_cased(pf)
     return t
 
 
-def _calls_in(root: Any) -> Iterator[Any]:
-    stack = [root]
-    while stack:
-        x = stack.pop()
-        if x.type == "call_expression":
-            yield x
-        stack.extend(x.named_children)
+_UPPER_WORD = re.compile(rb"(?i)\w*upper\w*")
+
+
+def _upper_calls(pf: ParsedFile) -> Iterator[Any]:
+    """The calls in ``pf`` whose callee or an argument is an upper-casing word (found on
+    the bytes first: most files have none)."""
+    seen = set()
+    root = pf.tree.root_node
+    for m in _UPPER_WORD.finditer(pf.data):
+        n = root.descendant_for_byte_range(m.start(), m.end())
+        while n is not None and n.type != "call_expression":
+            if n.type in ("expression_statement", "compound_statement", "function_definition"):
+                n = None
+                break
+            n = n.parent
+        if n is not None and n.id not in seen:
+            seen.add(n.id)
+            yield n
 
 
 def _upper_cased(pf: ParsedFile) -> set[str]:
@@ -367,10 +380,8 @@ def _upper_cased(pf: ParsedFile) -> set[str]:
     upper-cased before it in the same block (``value = toupper(value); m_var = value;``)."""
     from moos_lint.frontends.cpp.facts import UPPER_CASE_CALLS
 
-    if b"pper" not in pf.data:
-        return set()
     upper: dict[str, list[Any]] = {}  # variable -> the upper-casing calls of it
-    for call in _calls_in(pf.tree.root_node):
+    for call in _upper_calls(pf):
         fn, args = call.child_by_field_name("function"), call.child_by_field_name("arguments")
         argv = args.named_children if args is not None else []
         if callee(fn) not in UPPER_CASE_CALLS and not any(
@@ -406,6 +417,9 @@ def _upper_cased(pf: ParsedFile) -> set[str]:
                 out.add(a.target)
     return out
 
+
+#: a file that may name a NED z (``ned``, ``NED``, ``down`` as words or parts of names)
+_NED_BYTES = re.compile(rb"(?<![A-Za-z])[Nn]ed(?![a-z])|(?<![A-Z])NED(?![a-z])|[Dd]own")
 
 _TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
 
@@ -464,6 +478,7 @@ class Extractor:
         self.tables = tables
         self.out = CppFile(path=pf.path)
         self.evaluator = evaluator
+        self._ned_file: bool | None = None  # whether the file may name a NED z
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
@@ -778,7 +793,9 @@ class Extractor:
         """Whether ``a`` sets a NED z (:meth:`Evaluator.ned_down`)."""
         if self.evaluator is None or a.node.type != "assignment_expression":
             return False
-        if not re.search(rb"(?i)ned|down", self.pf.data):
+        if self._ned_file is None:
+            self._ned_file = bool(_NED_BYTES.search(self.pf.data))
+        if not self._ned_file:
             return False
         return bool(self.evaluator.ned_down(self.pf, a.node.child_by_field_name("left")))
 

@@ -1434,7 +1434,6 @@ _DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{
 #: the tail of :data:`_DEF_TEMPLATE`: a definition's parameter list and opening brace
 _DEF_TAIL = re.compile(rb"\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{")
 _WORD = re.compile(rb"\w+")
-_ASSIGNED = re.compile(rb"(\w+)\s*=(?!=)")
 _WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
 _SPACE_BYTES = frozenset(b" \t\n\r\f\v")
 
@@ -1470,8 +1469,8 @@ class RepositoryResolver:
         self.cache: dict[str, AbstractValue | None] = {}
         self.parsed: dict[str, Any] = {}
         self._index: dict[bytes, list[int]] | None = None
-        #: word -> the files that assign to it (``w =``, ``p->w =``), for :meth:`_field`
-        self._writes: dict[bytes, list[str]] | None = None
+        #: class -> the files (and their bytes) that name it, for :meth:`_field`
+        self._naming: dict[str, list[tuple[str, bytes]]] = {}
 
     def _data(self, path: str) -> bytes:
         raw = self.read(path)
@@ -1537,17 +1536,18 @@ class RepositoryResolver:
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
         names = set(names_text.split("|"))
-        if self._writes is None:
-            self._writes = {}
-            for path in [*self.paths, *c_sources(self.paths)]:
-                for w in set(_ASSIGNED.findall(self._data(path))):
-                    self._writes.setdefault(w, []).append(path)
-        found = sorted({p for n in names for p in self._writes.get(n.encode(), [])})
+        if cls not in self._naming:  # a file that never names the class cannot write its fields
+            key = cls.encode()
+            self._naming[cls] = [
+                (path, data)
+                for path in [*self.paths, *c_sources(self.paths)]
+                if key in (data := self._data(path))
+            ]
+        wrote = re.compile(rb"\b(?:%s)\s*=(?!=)" % b"|".join(re.escape(n.encode()) for n in names))
         out: AbstractValue | None = None
-        for path in found:
-            data = self._data(path)
-            if cls.encode() not in data:
-                continue  # a file that never names the class cannot write its fields
+        for path, data in self._naming[cls]:
+            if not wrote.search(data):
+                continue
             pf = self._parse(path, data)
             if pf is None:
                 continue
@@ -1569,6 +1569,8 @@ class RepositoryResolver:
                         f"at {_at(pf, node)}"
                     )
                 out = v if out is None else join(out, v)
+                if not out.known and out.const is None:
+                    return None  # a write we cannot read: the field stays unknown
         return out if out is not None and out.known else None
 
     def _parse(self, path: str, data: bytes) -> Any:
