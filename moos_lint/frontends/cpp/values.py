@@ -635,7 +635,7 @@ class Evaluator:
             v = settle(self._eval(pf, node, depth))
         except RecursionError:
             return UNKNOWN
-        if v.pending is not None and v.pending.startswith(".") and not v.ops and node:
+        if v.pending is not None and v.pending.startswith(".") and not v.ops and node is not None:
             # a field: if the repository's writes say nothing, its name, comment or label
             base = v.fallback if v.fallback is not None else UNKNOWN
             h = self._hint(pf, node, base) if base.unit is None else None
