@@ -202,8 +202,18 @@ class FolderTables:
     config_keys: dict[str, str] = field(default_factory=dict)
     # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
     name_tables: dict[str, list[str]] = field(default_factory=dict)
-    # members the app upper-cases (``m_var = toupper(value)``, ``MOOSToUpper(m_var)``)
-    upper: set[str] = field(default_factory=set)
+    # the folder's files, for :meth:`upper_cased` (worked out on first use)
+    files: list[ParsedFile] = field(default_factory=list)
+    _upper: set[str] | None = None
+
+    def upper_cased(self, member: str) -> bool:
+        """Whether the app upper-cases ``member`` (``m_var = toupper(value)``,
+        ``MOOSToUpper(m_var)``): asked only of the members a published name is built from."""
+        if self._upper is None:
+            self._upper = set()
+            for pf in self.files:
+                self._upper |= _upper_cased(pf)
+        return member in self._upper
 
 
 class Spans:
@@ -347,9 +357,7 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 member = target_name(argv[-1])
                 if ckey is not None and member:
                     t.config_keys.setdefault(member, ckey.lower())
-    if t.config_keys:  # only a configured name's case matters
-        for pf in files:
-            t.upper |= _upper_cased(pf)
+    t.files = files
     return t
 
 
@@ -419,7 +427,9 @@ def _upper_cased(pf: ParsedFile) -> set[str]:
 
 
 #: a file that may name a NED z (``ned``, ``NED``, ``down`` as words or parts of names)
-_NED_BYTES = re.compile(rb"(?<![A-Za-z])[Nn]ed(?![a-z])|(?<![A-Z])NED(?![a-z])|[Dd]own")
+_NED_BYTES = re.compile(
+    rb"(?<![A-Za-z])[Nn]ed(?![a-z])|(?<![A-Z])NED(?![a-z])|(?<![A-Za-z])down\b|_down\b|Down\b"
+)
 
 _TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
 
@@ -489,7 +499,7 @@ class Extractor:
             name.suffix = self._suffix(strip_parens(n))
         name.config_key = self._config_key(strip_parens(n))
         if name.config_key is not None:
-            name.config_upper = self._config_member(strip_parens(n)) in self.tables.upper
+            name.config_upper = self.tables.upper_cased(self._config_member(strip_parens(n)))
         return name
 
     def _suffix(self, n: Any) -> str:
