@@ -70,3 +70,35 @@ def test_keys_that_rename_a_publication_are_checked_at_the_mission(tmp_path):
     assert "under `out_var` (default `DRIVE_YAW`, degrees, Drive.cpp:27)" in found[1][2]
     # a block of another app with the same key says nothing
     assert all(line != 10 for _c, line, _m in found)
+
+
+def test_an_app_that_upper_cases_the_configured_name_is_left_alone(tmp_path):
+    from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.cpp.app import parse_folder
+
+    code = """
+    bool R::OnStartUp() {
+      STRING_LIST params;
+      m_MissionReader.GetConfiguration(GetAppName(), params);
+      for (STRING_LIST::iterator p = params.begin(); p != params.end(); p++) {
+        std::string param = tolower(biteStringX(*p, '='));
+        std::string value = *p;
+        if (param == "a_var") m_a = value;
+        else if (param == "b_var") { value = toupper(value); m_b = value; }
+        else if (param == "c_var") {
+          m_c = value;
+          std::transform(m_c.begin(), m_c.end(), m_c.begin(), ::toupper);
+        }
+        else if (param == "d_var") m_d = MOOSToUpper(value);
+        else if (param == "e_var") m_e = value;
+      }
+      return true;
+    }
+    bool R::Iterate() {
+      Notify(m_a, 1.0); Notify(m_b, 1.0); Notify(m_c, 1.0); Notify(m_d, 1.0); Notify(m_e, 1.0);
+      return true;
+    }
+    """
+    files = parse_folder({"r/R.cpp": SourceFile("r/R.cpp", code)})
+    upper = {p.name.config_key: p.name.config_upper for f in files for p in f.publications}
+    assert upper == {"a_var": False, "b_var": True, "c_var": True, "d_var": True, "e_var": False}

@@ -274,3 +274,97 @@ def test_a_member_set_through_an_out_parameter_in_another_method():
     assert v["A_YAW"].unit == "deg"
     assert any("euler() sets `m_yaw`" in w for w in v["A_YAW"].why)
     assert not v["A_ROLL"].known
+
+
+def _resolve_in(tmp_path, files: dict[str, str], pending: AbstractValue) -> AbstractValue:
+    paths = []
+    for name, code in files.items():
+        p = tmp_path / name
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(code)
+        paths.append(str(p))
+
+    def reader(path):
+        with open(path, "rb") as f:
+            return f.read()
+
+    return resolve_pending(pending, RepositoryResolver(sorted(paths), reader))
+
+
+EULER_H = """
+struct Euler {
+  double roll() const { return m_roll; }
+  double yaw() const { return m_yaw; }
+  union {
+    struct { double m_x; double m_y; double m_z; };
+    struct { double m_roll; double m_pitch; double m_yaw; };
+  };
+};
+"""
+
+
+def test_a_field_written_through_a_typed_pointer_in_a_c_file_resolves_there(tmp_path):
+    v = published('bool A::Iterate() { Notify("IMU_ROLL", m_e.roll()); return true; }')
+    c_file = """
+    void Euler_set(struct Euler* e, double q) {
+      e->m_x = rad2deg(atan2(q, 1.0));
+      e->m_y = 0.0;
+    }
+    void Euler_copy(struct Euler* e, const struct Euler* o) { e->m_x = o->m_x; }
+    void Other_set(struct Other* o, double r) { o->m_x = r; }
+    """
+    out = _resolve_in(tmp_path, {"lib/euler.h": EULER_H, "lib/euler.c": c_file}, v["IMU_ROLL"])
+    assert out.unit == "deg"
+    assert any("the storage of `m_roll`" in w and "euler.c:3" in w for w in out.why)
+
+
+def test_a_field_with_one_unknown_writer_stays_unknown(tmp_path):
+    v = published('bool A::Iterate() { Notify("IMU_YAW", m_e.yaw()); return true; }')
+    c_file = """
+    void Euler_set(struct Euler* e, double q) { e->m_z = atan2(q, 1.0) * 180 / M_PI; }
+    void Euler_put(Euler& e, double z) { e.m_yaw = z; }
+    """
+    out = _resolve_in(tmp_path, {"lib/euler.h": EULER_H, "lib/euler.c": c_file}, v["IMU_YAW"])
+    assert not out.known
+
+
+def test_a_struct_filled_by_reference_in_another_file():
+    code = """
+    struct Attitude { double pitch; };
+    bool A::Iterate() {
+      Attitude att;
+      readAttitude(att);
+      Notify("AHRS_PITCH", att.pitch);
+      return true;
+    }
+    """
+    v = published(code)["AHRS_PITCH"]
+    assert v.pending == ".Attitude.pitch"
+
+
+def test_a_member_printed_through_a_local_copy_takes_its_label():
+    v = published(
+        r"""
+        bool Imu::Iterate() {
+          Notify("IMU_ROLL", m_roll);
+          Notify("IMU_PITCH", m_pitch);
+          return true;
+        }
+        bool Imu::buildReport() {
+          double roll = m_roll;
+          double pitch = MOOSRad2Deg(m_pitch);
+          m_msgs << "Roll (deg): " << roll << " Pitch (deg): " << pitch << endl;
+          return true;
+        }
+        """
+    )
+    assert v["IMU_ROLL"].unit == "deg" and "through `roll`" in v["IMU_ROLL"].why[0]
+    assert not v["IMU_PITCH"].known  # a converted copy says nothing of the member
+
+
+def test_ned_is_a_word_of_a_name_not_letters_inside_one():
+    from moos_lint.frontends.cpp.values import ned_z_name
+
+    assert ned_z_name("m_ned.z") and ned_z_name("poseNED.z") and ned_z_name("ned_down")
+    assert not ned_z_name("m_planned.z") and not ned_z_name("aligned_z")
+    assert not ned_z_name("PLANNED_Z")

@@ -150,6 +150,15 @@ def depth_z_sign(app: AppModel) -> Iterator[Finding]:
             p.value.span,  # type: ignore[union-attr]
             f"{_shown(p)} is published from {what} without negation{_because(v)}: {rule}",
         )
+    for a in app.ned_writes:
+        v = a.value.abstract
+        if v is None or v.sign != "up" or v.hint:
+            continue
+        yield (
+            a.span,
+            f"`{a.target}`, a NED z (positive down), is set from a Z (positive up) without "
+            f"negation{_because(v)}: NED down = −Z = depth",
+        )
 
 
 def latlong_in_radians(app: AppModel) -> Iterator[Finding]:

@@ -42,6 +42,13 @@ SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
 DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: MAVSDK's ``Mavsdk::add_*_connection(url)``: a link to an autopilot over UDP, TCP or serial
+VEHICLE_LINK_CALLS = {
+    "add_any_connection",
+    "add_udp_connection",
+    "add_tcp_connection",
+    "add_serial_connection",
+}
 #: conversions from degrees that tell what a variable read by mail carries
 FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
@@ -54,6 +61,7 @@ CALLED = (
     | CONFIG_CALLS
     | BAUD_CALLS
     | SOCKET_CALLS
+    | VEHICLE_LINK_CALLS
     | STRCMP
     | FROM_DEGREES
     | VARIABLE_SET
@@ -194,6 +202,18 @@ class FolderTables:
     config_keys: dict[str, str] = field(default_factory=dict)
     # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
     name_tables: dict[str, list[str]] = field(default_factory=dict)
+    # the folder's files, for :meth:`upper_cased` (worked out on first use)
+    files: list[ParsedFile] = field(default_factory=list)
+    _upper: set[str] | None = None
+
+    def upper_cased(self, member: str) -> bool:
+        """Whether the app upper-cases ``member`` (``m_var = toupper(value)``,
+        ``MOOSToUpper(m_var)``): asked only of the members a published name is built from."""
+        if self._upper is None:
+            self._upper = set()
+            for pf in self.files:
+                self._upper |= _upper_cased(pf)
+        return member in self._upper
 
 
 class Spans:
@@ -337,8 +357,79 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
                 member = target_name(argv[-1])
                 if ckey is not None and member:
                     t.config_keys.setdefault(member, ckey.lower())
+    t.files = files
     return t
 
+
+_UPPER_WORD = re.compile(rb"(?i)\w*upper\w*")
+
+
+def _upper_calls(pf: ParsedFile) -> Iterator[Any]:
+    """The calls in ``pf`` whose callee or an argument is an upper-casing word (found on
+    the bytes first: most files have none)."""
+    seen = set()
+    root = pf.tree.root_node
+    for m in _UPPER_WORD.finditer(pf.data):
+        n = root.descendant_for_byte_range(m.start(), m.end())
+        while n is not None and n.type != "call_expression":
+            if n.type in ("expression_statement", "compound_statement", "function_definition"):
+                n = None
+                break
+            n = n.parent
+        if n is not None and n.id not in seen:
+            seen.add(n.id)
+            yield n
+
+
+def _upper_cased(pf: ParsedFile) -> set[str]:
+    """The variables ``pf`` upper-cases: the arguments of an upper-casing call
+    (``MOOSToUpper(m_var)``, ``transform(v.begin(), v.end(), v.begin(), ::toupper)``), what is
+    assigned its result (``m_var = toupper(value)``), and what is assigned a variable
+    upper-cased before it in the same block (``value = toupper(value); m_var = value;``)."""
+    from moos_lint.frontends.cpp.facts import UPPER_CASE_CALLS
+
+    upper: dict[str, list[Any]] = {}  # variable -> the upper-casing calls of it
+    for call in _upper_calls(pf):
+        fn, args = call.child_by_field_name("function"), call.child_by_field_name("arguments")
+        argv = args.named_children if args is not None else []
+        if callee(fn) not in UPPER_CASE_CALLS and not any(
+            short(text(a)) == "toupper" for a in argv
+        ):
+            continue
+        words = set()
+        in_place = callee(fn) in ("to_upper", "transform") or callee(fn) not in UPPER_CASE_CALLS
+        for a in argv if in_place else ():  # ``MOOSToUpper(v)`` and ``toupper(v)`` copy
+            a = strip_parens(a)
+            if a is not None and a.type == "call_expression":  # ``v.begin()``
+                inner = a.child_by_field_name("function")
+                if inner.type == "field_expression":
+                    a = inner.child_by_field_name("argument")
+            words.add(target_name(a) if a is not None else "")
+        if call.parent is not None and call.parent.type == "argument_list":
+            # a setter given the upper-cased value: ``setNonWhiteVarOnString(m_var, toupper(v))``
+            words.update(target_name(a) for a in call.parent.named_children)
+        asg = enclosing(call, ("assignment_expression", "init_declarator"))
+        if asg is not None and pf.function_of(asg) is pf.function_of(call):
+            words.add(
+                target_name(
+                    asg.child_by_field_name("left") or asg.child_by_field_name("declarator")
+                )
+            )
+        for w in words - {""}:
+            upper.setdefault(w, []).append(call)
+    out = set(upper)
+    for a in pf.asgs:
+        for call in upper.get(target_name(strip_parens(a.rhs)), ()):
+            block = enclosing(call, ("compound_statement",))  # the call's block holds `a`
+            if call.start_byte < a.node.start_byte and block is not None and _inside(a.node, block):
+                out.add(a.target)
+    return out
+
+
+#: a file that may name a NED z (``ned``, ``NED``, ``down`` as words or parts of names)
+_NED_BYTES = re.compile(
+    rb"(?<![A-Za-z])[Nn]ed(?![a-z])|(?<![A-Z])NED(?![a-z])|(?<![A-Za-z])down\b|_down\b|Down\b"
+)
 
 _TABLE_HINT = re.compile(rb'\]\s*=\s*\{\s*"')
 
@@ -397,6 +488,7 @@ class Extractor:
         self.tables = tables
         self.out = CppFile(path=pf.path)
         self.evaluator = evaluator
+        self._ned_file: bool | None = None  # whether the file may name a NED z
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
@@ -406,6 +498,8 @@ class Extractor:
         if val is None:
             name.suffix = self._suffix(strip_parens(n))
         name.config_key = self._config_key(strip_parens(n))
+        if name.config_key is not None:
+            name.config_upper = self.tables.upper_cased(self._config_member(strip_parens(n)))
         return name
 
     def _suffix(self, n: Any) -> str:
@@ -466,11 +560,15 @@ class Extractor:
 
     def _config_key(self, n: Any) -> str | None:
         """The configuration key that sets the member a name is built from."""
+        return self.tables.config_keys.get(self._config_member(n))
+
+    def _config_member(self, n: Any) -> str:
+        """The member a name is built from (``m_prefix`` of ``m_prefix + "_PITCH"``)."""
         while n is not None and n.type == "binary_expression":
             n = strip_parens(n.child_by_field_name("left"))
         if n is None or n.type not in ("identifier", "field_expression"):
-            return None
-        return self.tables.config_keys.get(target_name(n))
+            return ""
+        return target_name(n)
 
     def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
         n = strip_parens(n)
@@ -667,6 +765,12 @@ class Extractor:
                         function_name(a.fn),
                     )
                 )
+            elif a.op == "=" and a.fn is not None and self._ned_down(a):
+                value = self.value(a.rhs)
+                value.abstract = self.evaluator.of(pf, a.rhs)
+                out.ned_writes.append(
+                    Assignment(a.target, value, pf.spans.of(a.node), function_name(a.fn))
+                )
         for s in pf.strings:  # the literals that mention /dev/
             v = string_value(s)
             if v is not None and DEVICE_STRING.match(v):
@@ -694,6 +798,16 @@ class Extractor:
             elif "asio" in full:
                 out.io.append(IOUse("network", full, pf.spans.of(ns)))
         return out
+
+    def _ned_down(self, a: _Asg) -> bool:
+        """Whether ``a`` sets a NED z (:meth:`Evaluator.ned_down`)."""
+        if self.evaluator is None or a.node.type != "assignment_expression":
+            return False
+        if self._ned_file is None:
+            self._ned_file = bool(_NED_BYTES.search(self.pf.data))
+        if not self._ned_file:
+            return False
+        return bool(self.evaluator.ned_down(self.pf, a.node.child_by_field_name("left")))
 
     def _fn_of(self, n: Any) -> str:
         return self.pf.function_name_of(n)
@@ -751,7 +865,7 @@ class Extractor:
                     break
         elif name in BAUD_CALLS:
             out.io.append(IOUse("serial", name, spans.of(call)))
-        elif name in SOCKET_CALLS and fn.type == "identifier":
+        elif (name in SOCKET_CALLS and fn.type == "identifier") or name in VEHICLE_LINK_CALLS:
             out.io.append(IOUse("socket", name, spans.of(call)))
         elif name in STRCMP and len(argv) >= 2:
             lit = string_value(strip_parens(argv[1]))

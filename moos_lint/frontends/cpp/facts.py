@@ -94,3 +94,17 @@ PI_NAMES = {"M_PI": math.pi, "PI": math.pi, "pi": math.pi, "TWO_PI": 2 * math.pi
 #: ``radToDeg``): the name is the evidence.
 DEG2RAD_NAME = r"(?i)^(?:\w*_)?deg(?:rees?)?_?(?:2|to)_?rad(?:ians?)?$"
 RAD2DEG_NAME = r"(?i)^(?:\w*_)?rad(?:ians?)?_?(?:2|to)_?deg(?:rees?)?$"
+
+#: A constant named zero (``XsMath_zero``, ``ZERO``): 0, whatever its unit. Evidence: the
+#: Xsens SDK's ``XSMATHCONST XsReal XsMath_zero = 0.0`` (xstypes/xsmath.h), which its
+#: ``XsEuler_destruct`` writes to every angle.
+ZERO_NAME = r"(?i)(?:^|_)zero$"
+
+#: Calls that upper-case a string (an app that upper-cases a configured variable name
+#: publishes it in upper case, whatever the mission writes): MOOS's ``MOOSToUpper``
+#: (core-moos MOOSUtilityFunctions.h) and MOOS-IvP's ``toupper(string)`` (lib_mbutil
+#: MBUtils.h) return an upper-cased copy; Boost's ``to_upper`` and ``std::transform``
+#: with ``::toupper`` change their argument in place; ``to_upper_copy`` returns a copy.
+UPPER_CASE_CALLS = frozenset(
+    {"MOOSToUpper", "toupper", "to_upper", "to_upper_copy", "toUpper", "ToUpper", "upper"}
+)

@@ -31,6 +31,8 @@ class Name:
     suffix: str = ""
     #: the app's configuration key that may change the name (``prefix`` for ``m_prefix``)
     config_key: str | None = None
+    #: the app upper-cases the key's value before it publishes under it
+    config_upper: bool = False
 
     @property
     def last(self) -> str:
@@ -137,6 +139,8 @@ class CppFile:
     publications: list[Publication] = field(default_factory=list)
     subscriptions: list[Subscription] = field(default_factory=list)
     assignments: list[Assignment] = field(default_factory=list)
+    #: writes to a NED z (positive down), with the value's abstract value
+    ned_writes: list[Assignment] = field(default_factory=list)
     mail_keys: list[MailKey] = field(default_factory=list)
     config_params: list[ConfigParam] = field(default_factory=list)
     io: list[IOUse] = field(default_factory=list)
@@ -182,6 +186,10 @@ class AppModel:
     @property
     def assignments(self) -> list[Assignment]:
         return [a for f in self.files for a in f.assignments]
+
+    @property
+    def ned_writes(self) -> list[Assignment]:
+        return [a for f in self.files for a in f.ned_writes]
 
     @property
     def mail_keys(self) -> list[MailKey]:

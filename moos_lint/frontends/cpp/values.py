@@ -21,7 +21,7 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
-from moos_lint.frontends.cpp import facts
+from moos_lint.frontends.cpp import facts, fields
 from moos_lint.frontends.cpp.names import callee_name, mail_key_of, node_text, strip
 
 Range = tuple[float, float]
@@ -286,12 +286,23 @@ _RATE_DEG_NAME = re.compile(r"dps|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec", re.I
 _DEG_NAME = re.compile(r"(?:^|_)deg(?:ree)?s?(?:_|$)|[a-z0-9]Deg(?:ree)?s?(?:[A-Z_]|$)|degree")
 _HEADING_NAME = re.compile(r"heading|hdg|compass", re.I)
 _DEPTH_NAME = re.compile(r"depth", re.I)
+#: NED as a word of a name or type (``m_ned.z``, ``PoseNED``, ``local_position_ned_t``),
+#: not inside one (``planned``, ``aligned``)
+_NED_WORD = re.compile(r"(?<![A-Z])NED(?![a-z])|(?<![A-Za-z])[Nn]ed(?![a-z])")
 _SIGN_NAME = re.compile(r"polarity|(?:^|_)sign(?:_|$)|Sign$|(?:^|_)dir(?:ection)?(?:_|$)", re.I)
 _COMMENT_UNIT = re.compile(
     r"//.*?\b(deg(?:rees?)?\s*/\s*s(?:ec)?|rad(?:ians?)?\s*/\s*s(?:ec)?|"
     r"deg(?:rees?)?|rad(?:ians?)?)\b|//.*?(°)",
     re.I,
 )
+
+
+def ned_z_name(name: str) -> bool:
+    """``m_ned.z``, ``ned_down``, ``pos_down``: a NED z (positive down) by its name."""
+    return bool(
+        (_NED_WORD.search(name) or re.search(r"down", name, re.I))
+        and re.search(r"(?:^|[._>])(?:m_)?(?:pos_?)?(?:z|down|d)$", name, re.I)
+    )
 
 
 def name_hint(name: str) -> AbstractValue:
@@ -307,9 +318,7 @@ def name_hint(name: str) -> AbstractValue:
         return AbstractValue(unit="deg", sense="heading", hint=True, why=(why,))
     if _DEG_NAME.search(base):
         return AbstractValue(unit="deg", hint=True, why=(why,))
-    if re.search(r"ned|down", name, re.I) and re.search(
-        r"(?:^|[._>])(?:m_)?(?:pos_?)?(?:z|down|d)$", name, re.I
-    ):
+    if ned_z_name(name):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z, positive down",))
     if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
@@ -487,6 +496,19 @@ class Folder:
         self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None
         #: function id -> variable -> the calls passing it (:func:`_calls_passing`)
         self.passing: dict[int, dict[str, list[tuple[Any, str, int]]]] = {}
+        self._member_types: dict[str, str | None] | None = None
+
+    def member_type(self, name: str) -> str | None:
+        """The class a member or global ``name`` of the folder is declared of."""
+        if self._member_types is None:
+            self._member_types = {}
+            for pf in self.files:
+                for n, t in fields.declarations(pf.tree.root_node):
+                    cls = fields.type_name(t)
+                    if self._member_types.get(n, cls) != cls:
+                        cls = None  # declared of two classes: unknown
+                    self._member_types[n] = cls
+        return self._member_types.get(name)
 
     def printed(self) -> dict[tuple[int | None, str], list[tuple[str, str]]]:
         """(function id for a local or None, variable) -> the units its print labels name."""
@@ -502,6 +524,10 @@ class Folder:
                     )
                     where = fn.id if local else None
                     self._printed.setdefault((where, var), []).append((unit, why))
+                    copied = _copy_of(pf, fn, var) if local else None
+                    if copied is not None:  # ``double roll = m_roll; printf("%f deg", roll)``
+                        why = f"printed as {unit_label(unit)} through `{var}` at {at}"
+                        self._printed.setdefault((None, copied), []).append((unit, why))
         return self._printed
 
     def calls(self, name: str) -> list[tuple[Any, Any]]:
@@ -517,6 +543,21 @@ class Folder:
                         self._calls.setdefault(callee_name(fn), []).append((pf, n))
                     stack.extend(n.named_children)
         return self._calls.get(name, [])
+
+
+def _copy_of(pf: Any, fn: Any, var: str) -> str | None:
+    """The member or global that local ``var`` of ``fn`` is only ever a copy of."""
+    asgs = pf.local.get(fn.id, {}).get(var, [])
+    sources = set()
+    for a in asgs:
+        rhs = strip(a.rhs)
+        if a.op != "=" or rhs is None or rhs.type not in ("identifier", "field_expression"):
+            return None
+        src = _target(rhs)
+        if not src or src in pf.local.get(fn.id, {}) or _is_param(fn, src):
+            return None
+        sources.add(src)
+    return sources.pop() if len(sources) == 1 else None
 
 
 def _declared_local(pf: Any, a: Any) -> bool:
@@ -582,26 +623,41 @@ def _inside(n: Any, outer: Any) -> bool:
 class Evaluator:
     """Abstract values of expressions of one folder."""
 
-    def __init__(self, folder: Folder):
+    def __init__(self, folder: Folder, library: bool = False):
         self.folder = folder
         self._stack: set[tuple] = set()
+        #: reading a library file on its own: a field of its classes that the file never
+        #: writes is looked for where the repository writes it (:func:`_field_pending`)
+        self.library = library
 
     def of(self, pf: Any, node: Any, depth: int = 0) -> AbstractValue:
         try:
             v = settle(self._eval(pf, node, depth))
         except RecursionError:
             return UNKNOWN
+        if v.pending is not None and v.pending.startswith(".") and not v.ops and node is not None:
+            # a field: if the repository's writes say nothing, its name, comment or label
+            base = v.fallback if v.fallback is not None else UNKNOWN
+            h = self._hint(pf, node, base) if base.unit is None else None
+            return replace(v, fallback=h) if h is not None else v
         if v.unit is None and v.const is None and v.pending is None and node is not None:
-            row = node.start_point[0]
-            if row < len(pf.spans.lines):
-                line = pf.spans.lines[row].decode("utf-8", "replace")
-                h = comment_hint(line)
-                if h.known:
-                    return replace(h, range=v.range, sign=v.sign or h.sign)
-            printed = self._printed(pf, strip(node))
-            if printed is not None:
-                return replace(printed, range=v.range, sign=v.sign)
+            h = self._hint(pf, node, v)
+            if h is not None:
+                return h
         return v
+
+    def _hint(self, pf: Any, node: Any, v: AbstractValue) -> AbstractValue | None:
+        """The unit a same-line comment or a print label gives ``node``'s value."""
+        row = node.start_point[0]
+        if row < len(pf.spans.lines):
+            line = pf.spans.lines[row].decode("utf-8", "replace")
+            h = comment_hint(line)
+            if h.known:
+                return replace(h, range=v.range, sign=v.sign or h.sign)
+        printed = self._printed(pf, strip(node))
+        if printed is not None:
+            return replace(printed, range=v.range, sign=v.sign)
+        return None
 
     def _printed(self, pf: Any, n: Any) -> AbstractValue | None:
         """The unit a format string or a stream label gives the variable ``n`` where the app
@@ -803,7 +859,8 @@ class Evaluator:
                     if expr is None:
                         continue
                     v = settle(self._eval(pf, expr, depth + 1))
-                    if v.known and v.pending is None:
+                    field = v.pending is not None and v.pending.startswith(".")
+                    if (v.known and v.pending is None) or field:
                         v = v.because(f"{name}() returns {_clip(text(expr))} at {_at(pf, r)}")
                     yield v
 
@@ -832,6 +889,8 @@ class Evaluator:
             return UNKNOWN
         if key in facts.PI_NAMES:
             return constant(facts.PI_NAMES[key])
+        if re.search(facts.ZERO_NAME, key):
+            return constant(0.0)
         fnode = pf.function_of(n)
         if fnode is not None:
             local = self._local(pf, fnode, n, key, depth)
@@ -844,8 +903,51 @@ class Evaluator:
                 c = _define_const(d, self.folder.defines)
                 if c is not None:
                     return constant(c)
-            return name_hint(key)
+            return self._field_pending(pf, fnode, n, key) or name_hint(key)
         return v
+
+    def ned_down(self, pf: Any, left: Any) -> bool:
+        """Whether the left side of an assignment is a NED z (positive down): by its name
+        (``m_ned_z``, ``ned.down``) or as the ``z`` / ``down`` field of a NED type
+        (``mavlink_local_position_ned_t sp; sp.z``)."""
+        left = strip(left)
+        if left is None or left.type not in ("identifier", "field_expression"):
+            return False
+        if ned_z_name(_target(left)):
+            return True
+        if left.type != "field_expression":
+            return False
+        obj = strip(left.child_by_field_name("argument"))
+        field = text(left.child_by_field_name("field"))
+        if obj is None or obj.type != "identifier" or field.lower() not in ("z", "down", "d"):
+            return False
+        fnode = pf.function_of(left)
+        cls = fields.declared_type(fnode, text(obj)) or self.folder.member_type(text(obj))
+        return bool(cls and _NED_WORD.search(cls))
+
+    def _field_pending(self, pf: Any, fnode: Any, n: Any, key: str) -> AbstractValue | None:
+        """A struct field the folder never writes, to look for where the repository does:
+        ``att.yaw`` / ``p->yaw`` of a local, parameter or member declared of a class, and,
+        in a library file read alone, a bare field of the class whose method reads it."""
+        if n.type == "field_expression":
+            obj = strip(n.child_by_field_name("argument"))
+            if obj is None or obj.type != "identifier":
+                return None
+            cls = fields.declared_type(fnode, text(obj)) or self.folder.member_type(text(obj))
+            field = text(n.child_by_field_name("field"))
+        elif n.type == "identifier" and self.library:
+            cls, field = fields.enclosing_class(n), key
+        else:
+            return None
+        if not cls or not field:
+            return None
+        aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
+        hint = name_hint(key)
+        return AbstractValue(
+            pending=f".{cls}.{'|'.join(aliases)}",
+            why=(f"`{_clip(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
+            fallback=hint if hint.known else None,
+        )
 
     def _local(self, pf: Any, fnode: Any, use: Any, key: str, depth: int) -> AbstractValue | None:
         cands = pf.local.get(fnode.id, {}).get(key, [])
@@ -1308,6 +1410,13 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     if v.pending is None:
         return v
     base = resolver(v.pending)
+    if v.pending.startswith(".") and (base is None or not base.known):
+        # a field the repository never writes (or not in a way we can read): its name,
+        # or the comment or print label where the app reads it
+        first = v.pending.split("|")[0]
+        before = v.fallback if v.fallback is not None else name_hint(first)
+        out = apply_ops(before, v.ops)
+        return replace(out, why=(*out.why, *v.why[1:])) if out.known else UNKNOWN
     if "#" in v.pending and (base is None or not base.known):
         # an argument the function does not set (or one we cannot see): as before the call
         before = v.fallback if v.fallback is not None else UNKNOWN
@@ -1360,6 +1469,8 @@ class RepositoryResolver:
         self.cache: dict[str, AbstractValue | None] = {}
         self.parsed: dict[str, Any] = {}
         self._index: dict[bytes, list[int]] | None = None
+        #: class -> the files (and their bytes) that name it, for :meth:`_field`
+        self._naming: dict[str, list[tuple[str, bytes]]] = {}
 
     def _data(self, path: str) -> bytes:
         raw = self.read(path)
@@ -1387,6 +1498,9 @@ class RepositoryResolver:
         if name in self.cache:
             return self.cache[name]
         self.cache[name] = None  # recursion guard
+        if name.startswith("."):  # ``.Class.field|alias``: where the repository writes it
+            self.cache[name] = self._field(name)
+            return self.cache[name]
         fname, _, index = name.partition(
             "#"
         )  # ``getAttitude#2``: what it sets its third argument to
@@ -1404,18 +1518,60 @@ class RepositoryResolver:
             if not defs:
                 continue
             if index:
-                w = Evaluator(folder).out_param(name, defs, int(index), 0)
+                w = Evaluator(folder, library=True).out_param(name, defs, int(index), 0)
                 if w is None:
                     continue
                 v = w
             else:
-                v = Evaluator(folder)._returns(name, defs, 0)
+                v = Evaluator(folder, library=True)._returns(name, defs, 0)
             if v.pending is not None and v.pending != name:
                 v = resolve_pending(v, self)
             if v.known:
                 out = v if out is None else join(out, v)
         self.cache[f"{name}#{index}" if index else name] = out
         return out
+
+    def _field(self, pending: str) -> AbstractValue | None:
+        """What the repository writes to field ``.Class.name|alias`` (the join of every
+        write; None when it writes it nowhere we can read)."""
+        _, cls, names_text = pending.split(".", 2)
+        names = set(names_text.split("|"))
+        if cls not in self._naming:  # a file that never names the class cannot write its fields
+            key = cls.encode()
+            self._naming[cls] = [
+                (path, data)
+                for path in [*self.paths, *c_sources(self.paths)]
+                if key in (data := self._data(path))
+            ]
+        wrote = re.compile(rb"\b(?:%s)\s*=(?!=)" % b"|".join(re.escape(n.encode()) for n in names))
+        out: AbstractValue | None = None
+        for path, data in self._naming[cls]:
+            if not wrote.search(data):
+                continue
+            pf = self._parse(path, data)
+            if pf is None:
+                continue
+            ev = Evaluator(Folder([pf]), library=True)
+            for node, rhs in fields.field_writes(pf, cls, names):
+                v = settle(ev._eval(pf, rhs, 0))
+                copied = v.pending is not None and v.pending.startswith(f".{cls}.")
+                if copied and names & set(str(v.pending).split(".", 2)[2].split("|")):
+                    continue  # a copy from another object of the class
+                if v.pending is not None:
+                    v = resolve_pending(v, self)
+                if v.known:
+                    left = node.child_by_field_name("left")
+                    field = text(left.child_by_field_name("field") or left)
+                    first = names_text.split("|")[0]
+                    alias = f" (the storage of `{first}`)" if field != first else ""
+                    v = v.because(
+                        f"`{_clip(text(left), 30)}`{alias} set to {_clip(text(rhs))} "
+                        f"at {_at(pf, node)}"
+                    )
+                out = v if out is None else join(out, v)
+                if not out.known and out.const is None:
+                    return None  # a write we cannot read: the field stays unknown
+        return out if out is not None and out.known else None
 
     def _parse(self, path: str, data: bytes) -> Any:
         if path in self.parsed:
@@ -1433,6 +1589,26 @@ class RepositoryResolver:
             pf = None
         self.parsed[path] = pf
         return pf
+
+
+def c_sources(paths: list[str]) -> list[str]:
+    """The C files (``.c``) of the tree that holds ``paths``: a C++ app's device library is
+    often C (the Xsens SDK's ``xseuler.c``). Hidden folders are skipped; the files are only
+    read when a field's writes are looked for (:meth:`RepositoryResolver._field`)."""
+    import os
+
+    dirs = {os.path.dirname(p) for p in paths}
+    if not dirs:
+        return []
+    try:
+        root = os.path.commonpath(sorted(dirs))
+    except ValueError:
+        return []
+    out: list[str] = []
+    for here, subdirs, files in os.walk(root):
+        subdirs[:] = sorted(d for d in subdirs if not d.startswith("."))
+        out.extend(os.path.join(here, f) for f in sorted(files) if f.endswith(".c"))
+    return out
 
 
 def link_values(apps: list[Any], paths: list[str]) -> None:

@@ -6,13 +6,17 @@ the value is positive down without a minus sign: a depth (`m_depth`,
 `record.getDepth()`, `NAV_DEPTH` read by mail) or the z of a NED frame
 (`m_ned.z`); and of a variable whose last word is `DEPTH` published from
 `NAV_Z` as is. A frame used inside the process is free: only what is
-published counts.
+published counts, with one exception that is a sign error in any frame: a
+NED z (positive down: a field named so, `m_ned_down`, or the `z` of a NED
+type, `mavlink_set_position_target_local_ned_t sp; sp.z`) set from `NAV_Z`
+(positive up) without negation.
 
 The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in
-any method, and functions anywhere in the repository (a library getter);
+any method, functions anywhere in the repository (a library getter) and the
+fields of structs that the repository's code writes (also C files);
 another app of the repository that converts the variable from degrees on
 arrival counts as evidence too. The finding says why, as a chain. What the
 analysis cannot know is never reported.

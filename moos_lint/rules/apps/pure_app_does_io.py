@@ -6,8 +6,9 @@ code does device I/O: a serial-port class (`CMOOSSerialPort`,
 `boost::asio::serial_port`, ...), baud-rate setup through termios
 (`cfsetispeed`), a `/dev/tty*`, `/dev/can*` or `/dev/usb*` path, SocketCAN or
 libusb. A `p` app is also reported for socket I/O (`socket`, `connect`,
-`bind`, `recvfrom`, a socket class): a vehicle, a sensor or a service spoken
-to in a protocol that is not MOOS. The finding is on the first such use.
+`bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
+`add_any_connection`): a vehicle, a sensor or a service spoken to in a
+protocol that is not MOOS. The finding is on the first such use.
 
 ## Why is this bad?
 The MOOS conventions name processes by what they are: `i` for interface apps

@@ -44,6 +44,13 @@ concatenations of known parts, string constants and members assigned one
 literal, and `#define` string macros. Names built at run time are never
 reported.
 
+A name that a mission gives through a configuration key of one of the
+repository's apps (`servo_var = servo_3` where the C++ publishes
+`Notify(m_servo_var, ...)` and reads `m_servo_var` from `servo_var`) is checked
+at the mission's line, unless the app upper-cases the value itself
+(`m_servo_var = toupper(value)`, `MOOSToUpper`, `boost::to_upper`): many apps do,
+and then any case is right.
+
 ## Why is this bad?
 MOOS variable names are case-sensitive: `Deploy` and `DEPLOY` are two
 variables, and a subscriber waiting for one never sees the other. The MOOS
@@ -94,6 +101,7 @@ def check(ctx):
         yield from cpp_check(ctx)
         return
     allow = [str(a) for a in ctx.options.get("allow", [])]
+    seen = set()
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if bare is None:
@@ -112,7 +120,30 @@ def check(ctx):
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
+        seen.add((ref.span.line, ref.name))
         yield ctx.report(ref.span, message, line=ref.line, subject=subject)
+    if ctx.moos is not None:
+        yield from _configured(ctx, allow, seen)
+
+
+def _configured(ctx, allow, seen):
+    """``KEY = name`` lines naming a variable an app of the repository publishes, unless
+    the app upper-cases the value itself."""
+    from moos_lint.semantics.mission_model import configured_publications
+
+    for c in configured_publications(ctx.run, ctx.moos):
+        if c.published.upper or _UPPER.fullmatch(c.name) or (c.span.line, c.name) in seen:
+            continue
+        if any(fnmatch.fnmatchcase(c.name, a) for a in allow):
+            continue
+        seen.add((c.span.line, c.name))
+        subject = Subject(variable=c.name, app=c.app.name, key=c.key.lower())
+        yield ctx.report(
+            c.span,
+            f"MOOS variable `{c.name}` is not UPPER_SNAKE_CASE: {c.says()}, as written",
+            line=c.line,
+            subject=subject,
+        )
 
 
 def cpp_check(ctx):

@@ -20,7 +20,8 @@ The value is read by moos-lint's value analysis of C++ (unit, sense, range
 and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
 inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
 names and comments that state a unit, followed through locals, members set in
-any method, and functions anywhere in the repository (a library getter);
+any method, functions anywhere in the repository (a library getter) and the
+fields of structs that the repository's code writes (also C files);
 another app of the repository that converts the variable from degrees on
 arrival counts as evidence too. The finding says why, as a chain. What the
 analysis cannot know is never reported.

@@ -73,6 +73,8 @@ class PublishedKey:
     suffix: str = ""
     #: what is known of the value published under it (``degrees``, ``radians``), or ""
     value: str = ""
+    #: the app upper-cases the key's value (``toupper``) before publishing under it
+    upper: bool = False
 
 
 @dataclass
@@ -461,7 +463,9 @@ def _published_keys(app: AppModel) -> dict[str, tuple[PublishedKey, ...]]:
         v = p.value.abstract if p.value is not None else None
         unit = getattr(v, "unit", None) if v is not None and not getattr(v, "hint", False) else None
         where = f"{os.path.basename(p.name_span.path)}:{p.name_span.line}"
-        pub = PublishedKey(name, where, suffix, _UNIT_WORDS.get(unit or "", ""))
+        pub = PublishedKey(
+            name, where, suffix, _UNIT_WORDS.get(unit or "", ""), p.name.config_upper
+        )
         out.setdefault(key.lower(), {}).setdefault(suffix, pub)
     return {k: tuple(v.values()) for k, v in out.items()}
 
