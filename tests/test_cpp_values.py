@@ -368,3 +368,23 @@ def test_ned_is_a_word_of_a_name_not_letters_inside_one():
     assert ned_z_name("m_ned.z") and ned_z_name("poseNED.z") and ned_z_name("ned_down")
     assert not ned_z_name("m_planned.z") and not ned_z_name("aligned_z")
     assert not ned_z_name("PLANNED_Z")
+
+
+def test_a_raw_reading_scaled_by_a_resolution_named_in_degrees_is_degrees():
+    v = published(
+        """
+        #define EULER_DIV_DEG (16.0)
+        #define EULER_DIV_RAD (900.0)
+        #define DEG_TO_RAD (0.01745329)
+        bool A::Iterate() {
+          m_Comms.Notify("IMU_PITCH", raw_pitch / EULER_DIV_DEG);
+          m_Comms.Notify("IMU_ROLL", raw_roll / EULER_DIV_RAD);
+          m_Comms.Notify("IMU_YAW", raw_yaw * DEG_TO_RAD);
+          return true;
+        }
+        """
+    )
+    assert v["IMU_PITCH"].unit == "deg" and "EULER_DIV_DEG" in v["IMU_PITCH"].explanation
+    assert v["IMU_ROLL"].unit == "rad"
+    # a conversion constant is no resolution: the arithmetic decides (radians from degrees)
+    assert v["IMU_YAW"].unit != "deg"

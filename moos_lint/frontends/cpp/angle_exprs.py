@@ -11,6 +11,7 @@ import math
 import re
 
 from moos_lint.frontends.cpp.extract import WRAP_2PI, WRAP_PI
+from moos_lint.frontends.cpp.names import axis_word
 
 PI = r"(?:M_PI|\bPI\b|\bpi\b|3\.14\d*)"
 #: heading-ish identifiers (a word of the name)
@@ -47,11 +48,11 @@ def last_word(name: str) -> str:
 
 
 def is_yaw_var(name: str) -> bool:
-    return last_word(name) == "YAW"
+    return axis_word(name) == "YAW"
 
 
 def is_heading_var(name: str) -> bool:
-    return last_word(name) in ("HEADING", "HDG")
+    return axis_word(name) in ("HEADING", "HDG")
 
 
 def is_z_var(name: str) -> bool:
@@ -63,7 +64,7 @@ def is_latlong_var(name: str) -> bool:
 
 
 def is_other_angle_var(name: str) -> bool:
-    return last_word(name) in ("ROLL", "PITCH")
+    return axis_word(name) in ("ROLL", "PITCH")
 
 
 def is_depth_var(name: str) -> bool:

@@ -38,9 +38,29 @@ def last_word(name: str) -> str:
     return w[-1].upper() if w else ""
 
 
+#: the axes of an Euler triple by their short names (``IMU_EULER_P``, ``EULER_PSI``)
+_EULER_AXES = {
+    "R": "ROLL",
+    "P": "PITCH",
+    "Y": "YAW",
+    "H": "HEADING",
+    "PHI": "ROLL",
+    "THETA": "PITCH",
+    "PSI": "YAW",
+}
+
+
+def axis_word(name: str) -> str:
+    """The last word of ``name``, an Euler axis spelled out: ``PITCH`` for ``IMU_EULER_P``."""
+    w = [x.upper() for x in words(name)]
+    if len(w) >= 2 and w[-2] == "EULER" and w[-1] in _EULER_AXES:
+        return _EULER_AXES[w[-1]]
+    return w[-1] if w else ""
+
+
 def valued_name(name: str) -> bool:
     """Whether the analysis computes the value published under ``name`` (by its last word)."""
-    return last_word(name) in _VALUED_WORDS or any(x.upper() in _RATE_WORDS for x in words(name))
+    return axis_word(name) in _VALUED_WORDS or any(x.upper() in _RATE_WORDS for x in words(name))
 
 
 def node_text(n: Any) -> str:

@@ -285,6 +285,23 @@ _RAD_NAME = re.compile(r"(?:^|_)rads?(?:_|$)|[a-z0-9]Rads?(?:[A-Z_]|$)|radian", 
 _RATE_DEG_NAME = re.compile(r"dps|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec", re.I)
 _DEG_NAME = re.compile(r"(?:^|_)deg(?:ree)?s?(?:_|$)|[a-z0-9]Deg(?:ree)?s?(?:[A-Z_]|$)|degree")
 _HEADING_NAME = re.compile(r"heading|hdg|compass", re.I)
+#: the words of a device's resolution constant (``EULER_DIV_DEG``, ``LSB_PER_RAD``)
+_SCALE_WORDS = {"DIV", "PER", "LSB", "SCALE", "RES", "RESOLUTION", "COUNTS"}
+_UNIT_WORDS = {"DEG": "deg", "DEGS": "deg", "DEGREE": "deg", "DEGREES": "deg"}
+_UNIT_WORDS.update({"RAD": "rad", "RADS": "rad", "RADIAN": "rad", "RADIANS": "rad"})
+
+
+def _scale_unit(name: str) -> str | None:
+    """The angle unit a raw reading is scaled to by a resolution constant named like
+    ``BNO055_EULER_DIV_DEG`` (16 counts a degree): a scale word, then the unit last.
+    A conversion constant (``DEG_TO_RAD``) has no scale word and is not one."""
+    words = re.findall(r"[A-Z]+[a-z0-9]*|[a-z0-9]+", name.rsplit("::", 1)[-1])
+    upper = [w.upper() for w in words]
+    if len(upper) < 2 or not _SCALE_WORDS & set(upper[:-1]):
+        return None
+    return _UNIT_WORDS.get(upper[-1])
+
+
 _DEPTH_NAME = re.compile(r"depth", re.I)
 #: NED as a word of a name or type (``m_ned.z``, ``PoseNED``, ``local_position_ned_t``),
 #: not inside one (``planned``, ``aligned``)
@@ -745,6 +762,15 @@ class Evaluator:
                     unit="deg/s",
                     hint=True,
                     why=(f"scaled by `{rname}` (degrees per second) at {_at(pf, n)}",),
+                )
+            # a raw reading scaled by a resolution named in degrees (``raw / EULER_DIV_DEG``)
+            unit = _scale_unit(rname) if rname else None
+            if unit is not None:
+                label = "degrees" if unit == "deg" else "radians"
+                return AbstractValue(
+                    unit=unit,
+                    hint=True,
+                    why=(f"scaled by `{rname}` ({label}) at {_at(pf, n)}",),
                 )
         if op in ("+", "-"):
             return add(left, right, op == "-")

@@ -10,10 +10,12 @@ behavior-file `initialize`). Yaw itself is `yaw-in-degrees`. A fix replaces
 the literal with its radian value (value·π/180, wrapped to ±π, 4 decimals).
 
 
-In C++, it reports `Notify` of a ROLL or PITCH variable with a degree
-value (a literal above 2π, a radians-to-degrees conversion, a library getter
-or device value in degrees, an angle read from the same device array as one
-a consumer converts from degrees), and of an angular rate (`*_GYRO_*`,
+In C++, it reports `Notify` of a ROLL or PITCH variable (also the axes of an
+Euler triple: `IMU_EULER_P`, `EULER_THETA`) with a degree value (a literal
+above 2π, a radians-to-degrees conversion, a library getter or device value
+in degrees, a raw count over a resolution named in degrees such as
+`EULER_DIV_DEG`, an angle read from the same device array as one a consumer
+converts from degrees), and of an angular rate (`*_GYRO_*`,
 `YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a
 `*_DPS` scale).
 
