@@ -339,7 +339,30 @@ def test_a_struct_filled_by_reference_in_another_file():
     }
     """
     v = published(code)["AHRS_PITCH"]
-    assert v.pending == ".Attitude.pitch"
+    # what the call that fills it sets the field to, else what any writer of the field does
+    assert v.pending == "readAttitude#0.pitch"
+    assert v.fallback is not None and v.fallback.pending == ".Attitude.pitch"
+
+
+def test_the_call_that_fills_a_struct_decides_among_its_fields_writers(tmp_path):
+    v = published(
+        """
+        bool A::Iterate() {
+          orient_euler_deg(&m_e);
+          Notify("IMU_EULER_P", m_e.p);
+          return true;
+        }
+        """
+    )["IMU_EULER_P"]
+    c_file = """
+    #define DIV_DEG (16.0)
+    #define DIV_RAD (900.0)
+    struct orient_euler_t { double p; };
+    int orient_euler_deg(struct orient_euler_t *e) { e->p = raw_p() / DIV_DEG; return 0; }
+    int orient_euler_rad(struct orient_euler_t *e) { e->p = raw_p() / DIV_RAD; return 0; }
+    """
+    out = _resolve_in(tmp_path, {"lib/orient.c": c_file}, v)
+    assert out.unit == "deg" and "orient_euler_deg() sets `e->p`" in out.explanation
 
 
 def test_a_member_printed_through_a_local_copy_takes_its_label():

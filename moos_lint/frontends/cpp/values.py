@@ -965,15 +965,37 @@ class Evaluator:
             cls, field = fields.enclosing_class(n), key
         else:
             return None
-        if not cls or not field:
+        if not field:
             return None
-        aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
         hint = name_hint(key)
-        return AbstractValue(
-            pending=f".{cls}.{'|'.join(aliases)}",
-            why=(f"`{_clip(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
-            fallback=hint if hint.known else None,
-        )
+        anywhere: AbstractValue | None = hint if hint.known else None
+        if cls:
+            aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
+            anywhere = AbstractValue(
+                pending=f".{cls}.{'|'.join(aliases)}",
+                why=(f"`{_clip(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
+                fallback=anywhere,
+            )
+        if n.type == "field_expression":
+            # ``read_euler_deg(&e); ... e.pitch``: what that call sets the field to, before
+            # what any writer of the class's field may set it to
+            setter = self._field_setter(fnode, n, text(obj))
+            if setter is not None:
+                call, name, index = setter
+                return AbstractValue(
+                    pending=f"{name}#{index}.{field}",
+                    why=(f"{_clip(text(call))} at {_at(pf, call)}",),
+                    fallback=anywhere,
+                )
+        return anywhere if cls else None
+
+    def _field_setter(self, fnode: Any, use: Any, obj: str) -> tuple[Any, str, int] | None:
+        """The last call before ``use`` in ``fnode`` that is handed ``obj`` (``&obj``, or
+        ``obj`` by reference) to fill in, with its callee and the argument's index."""
+        for call, name, index in reversed(_calls_passing(fnode, obj, self.folder.passing)):
+            if call.end_byte <= use.start_byte and name and name not in _NOT_SETTERS:
+                return call, name, index
+        return None
 
     def _local(self, pf: Any, fnode: Any, use: Any, key: str, depth: int) -> AbstractValue | None:
         cands = pf.local.get(fnode.id, {}).get(key, [])
@@ -1093,6 +1115,24 @@ class Evaluator:
                     yield settle(v).because(f"{step} at {_at(pf, last.node)}")
 
         return self._once(("out", name, index), lambda: _join_all(values()), on_cycle=None)
+
+    def out_field(self, name: str, defs: list[tuple[Any, Any]], index: int, field: str, depth: int):
+        """What function ``name`` sets field ``field`` of its ``index``-th argument to
+        (``p->yaw = ...`` for a pointer, ``s.yaw = ...`` for a reference), or None."""
+
+        def values() -> Iterator[AbstractValue]:
+            for pf, fn in defs:
+                found = _out_param(fn, index)
+                if found is None:
+                    continue
+                pname = found[0]
+                for node, rhs in _param_field_writes(fn, pname, field):
+                    yield settle(self._eval(pf, rhs, depth + 1)).because(
+                        f"{name}() sets `{_clip(text(node.child_by_field_name('left')), 30)}` "
+                        f"to {_clip(text(rhs))} at {_at(pf, rhs)}"
+                    )
+
+        return self._once(("field", name, index, field), lambda: _join_all(values()), on_cycle=None)
 
     def _param(self, fnode: Any, key: str, depth: int) -> AbstractValue:
         """A parameter: what the folder's calls of the function pass for it."""
@@ -1320,6 +1360,30 @@ def _pointer_writes(fn: Any, pname: str) -> list[Any]:
     return out
 
 
+def _param_field_writes(fn: Any, pname: str, field: str) -> list[tuple[Any, Any]]:
+    """``(assignment, right side)`` of ``pname->field = x`` and ``pname.field = x`` in ``fn``."""
+    out = []
+    body = fn.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+            continue
+        if x.type == "assignment_expression" and text(x.child_by_field_name("operator")) == "=":
+            left = strip(x.child_by_field_name("left"))
+            if left is not None and left.type == "field_expression":
+                obj = strip(left.child_by_field_name("argument"))
+                if obj is not None and obj.type == "pointer_expression":
+                    obj = strip(obj.child_by_field_name("argument"))  # ``(*p).yaw``
+                named = text(left.child_by_field_name("field"))
+                if obj is not None and obj.type == "identifier" and text(obj) == pname:
+                    if named == field:
+                        out.append((x, x.child_by_field_name("right")))
+        stack.extend(x.named_children)
+    out.sort(key=lambda w: w[0].start_byte)
+    return out
+
+
 def _returns_of(fn: Any) -> list[Any]:
     body = fn.child_by_field_name("body")
     out = []
@@ -1497,6 +1561,14 @@ class RepositoryResolver:
         self._index: dict[bytes, list[int]] | None = None
         #: class -> the files (and their bytes) that name it, for :meth:`_field`
         self._naming: dict[str, list[tuple[str, bytes]]] = {}
+        self._all: list[str] | None = None
+
+    @property
+    def all_paths(self) -> list[str]:
+        """The C++ files, then the C files of the same tree (device libraries are often C)."""
+        if self._all is None:
+            self._all = [*self.paths, *c_sources(self.paths)]
+        return self._all
 
     def _data(self, path: str) -> bytes:
         raw = self.read(path)
@@ -1508,17 +1580,18 @@ class RepositoryResolver:
         if _WORD.fullmatch(key) is None:  # not a plain word: search every file's bytes
             pattern = re.compile(_DEF_TEMPLATE % re.escape(key))
             out: list[tuple[str, bytes | None]] = []
-            for path in self.paths:
+            for path in self.all_paths:
                 data = self._data(path)
                 if key in data and pattern.search(data):
                     out.append((path, data))
             return out
+        paths = self.all_paths
         if self._index is None:
             self._index = {}
-            for i, path in enumerate(self.paths):
+            for i, path in enumerate(paths):
                 for n in defined_names(self._data(path)):
                     self._index.setdefault(n, []).append(i)
-        return [(self.paths[i], None) for i in self._index.get(key, [])]
+        return [(paths[i], None) for i in self._index.get(key, [])]
 
     def __call__(self, name: str) -> AbstractValue | None:
         if name in self.cache:
@@ -1544,7 +1617,12 @@ class RepositoryResolver:
             if not defs:
                 continue
             if index:
-                w = Evaluator(folder, library=True).out_param(name, defs, int(index), 0)
+                at, _, field = index.partition(".")  # ``read#0.p``: the field ``p`` it sets
+                ev = Evaluator(folder, library=True)
+                if field:
+                    w = ev.out_field(name, defs, int(at), field, 0)
+                else:
+                    w = ev.out_param(name, defs, int(at), 0)
                 if w is None:
                     continue
                 v = w
@@ -1566,7 +1644,7 @@ class RepositoryResolver:
             key = cls.encode()
             self._naming[cls] = [
                 (path, data)
-                for path in [*self.paths, *c_sources(self.paths)]
+                for path in self.all_paths
                 if key in (data := self._data(path))
             ]
         wrote = re.compile(rb"\b(?:%s)\s*=(?!=)" % b"|".join(re.escape(n.encode()) for n in names))
