@@ -992,6 +992,8 @@ class Evaluator:
     def _field_setter(self, fnode: Any, use: Any, obj: str) -> tuple[Any, str, int] | None:
         """The last call before ``use`` in ``fnode`` that is handed ``obj`` (``&obj``, or
         ``obj`` by reference) to fill in, with its callee and the argument's index."""
+        if fnode is None:  # (an expression outside any function)
+            return None
         for call, name, index in reversed(_calls_passing(fnode, obj, self.folder.passing)):
             if call.end_byte <= use.start_byte and name and name not in _NOT_SETTERS:
                 return call, name, index
@@ -1376,9 +1378,9 @@ def _param_field_writes(fn: Any, pname: str, field: str) -> list[tuple[Any, Any]
                 if obj is not None and obj.type == "pointer_expression":
                     obj = strip(obj.child_by_field_name("argument"))  # ``(*p).yaw``
                 named = text(left.child_by_field_name("field"))
-                if obj is not None and obj.type == "identifier" and text(obj) == pname:
-                    if named == field:
-                        out.append((x, x.child_by_field_name("right")))
+                ours = obj is not None and obj.type == "identifier" and text(obj) == pname
+                if ours and named == field:
+                    out.append((x, x.child_by_field_name("right")))
         stack.extend(x.named_children)
     out.sort(key=lambda w: w[0].start_byte)
     return out
@@ -1643,9 +1645,7 @@ class RepositoryResolver:
         if cls not in self._naming:  # a file that never names the class cannot write its fields
             key = cls.encode()
             self._naming[cls] = [
-                (path, data)
-                for path in self.all_paths
-                if key in (data := self._data(path))
+                (path, data) for path in self.all_paths if key in (data := self._data(path))
             ]
         wrote = re.compile(rb"\b(?:%s)\s*=(?!=)" % b"|".join(re.escape(n.encode()) for n in names))
         out: AbstractValue | None = None
