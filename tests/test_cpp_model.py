@@ -129,6 +129,19 @@ def test_directory_discovery_takes_cpp(tmp_path):
     assert found == [os.path.join(str(tmp_path), "App.cpp")]
 
 
+def test_discovery_leaves_pantlers_copy_of_a_mission_beside_it(tmp_path):
+    from moos_lint.files.discovery import discover
+
+    (tmp_path / "alpha.moos").write_text("ServerPort = 9000\n")
+    (tmp_path / "alpha.moos++").write_text("ServerPort = 9000\n")  # written by pAntler
+    (tmp_path / "kept.moos++").write_text("ServerPort = 9000\n")  # no source beside it
+    found = discover([tmp_path], [], str(tmp_path)).files
+    assert [os.path.basename(f) for f in found] == ["alpha.moos", "kept.moos++"]
+    # named on the command line, it is linted
+    named = discover([tmp_path / "alpha.moos++"], [], str(tmp_path)).files
+    assert [os.path.basename(f) for f in named] == ["alpha.moos++"]
+
+
 @pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"])
 def test_positions_hold_for_every_line_ending(tmp_path, newline):
     app = tmp_path / "pFoo"

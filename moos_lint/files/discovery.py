@@ -93,7 +93,8 @@ def discover(
 ) -> Discovered:
     """Walk ``paths``; directories are searched, files given by name are always taken.
 
-    With ``respect_gitignore``, what git ignores is not linted (see
+    A ``mission.moos++`` beside ``mission.moos`` is pAntler's expanded copy of it, not
+    linted a second time. With ``respect_gitignore``, what git ignores is not linted (see
     :mod:`moos_lint.files.gitignore`). A file named on the command line is linted even when
     git ignores it, as ruff does; a folder named there is walked, and what is
     ignored below it is left out.
@@ -155,9 +156,12 @@ def discover(
             dirnames[:] = keep
             if frame is not None and keep:
                 frames[dirpath] = frame
+            present = set(filenames)
             for f in filenames:
                 if kind_of(f) is None:
                     continue
+                if f.endswith("++") and f[:-2] in present:
+                    continue  # pAntler's copy of the mission beside it (``clean.sh`` removes it)
                 rel = prefix + f
                 if _excluded(rel, f, patterns):
                     continue
