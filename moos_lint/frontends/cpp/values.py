@@ -1564,6 +1564,8 @@ class RepositoryResolver:
         #: class -> the files (and their bytes) that name it, for :meth:`_field`
         self._naming: dict[str, list[tuple[str, bytes]]] = {}
         self._all: list[str] | None = None
+        #: classes whose fields are waited for (see :meth:`expect`)
+        self._expected: set[str] = set()
 
     @property
     def all_paths(self) -> list[str]:
@@ -1589,11 +1591,33 @@ class RepositoryResolver:
             return out
         paths = self.all_paths
         if self._index is None:
-            self._index = {}
-            for i, path in enumerate(paths):
-                for n in defined_names(self._data(path)):
-                    self._index.setdefault(n, []).append(i)
+            self._read_all()
+        assert self._index is not None
         return [(paths[i], None) for i in self._index.get(key, [])]
+
+    def expect(self, values: Iterable[AbstractValue]) -> None:
+        """Note the classes whose fields ``values`` wait for, so that the one read of
+        every file that indexes the functions also finds the files naming them."""
+        for v in values:
+            while v is not None:
+                if v.pending and v.pending.startswith("."):
+                    self._expected.add(v.pending.split(".", 2)[1])
+                v = v.fallback if isinstance(v.fallback, AbstractValue) else None
+
+    def _read_all(self) -> None:
+        """One read of every file: the names it may define a function of, and whether it
+        names each expected class (those files' bytes are kept for :meth:`_field`)."""
+        self._index = {}
+        classes = [(c, c.encode()) for c in sorted(self._expected - set(self._naming))]
+        for cls, _ in classes:
+            self._naming[cls] = []
+        for i, path in enumerate(self.all_paths):
+            data = self._data(path)
+            for n in defined_names(data):
+                self._index.setdefault(n, []).append(i)
+            for cls, key in classes:
+                if key in data:
+                    self._naming[cls].append((path, data))
 
     def __call__(self, name: str) -> AbstractValue | None:
         if name in self.cache:
@@ -1642,6 +1666,9 @@ class RepositoryResolver:
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
         names = set(names_text.split("|"))
+        if cls not in self._naming and self._index is None:
+            self._expected.add(cls)
+            self._read_all()
         if cls not in self._naming:  # a file that never names the class cannot write its fields
             key = cls.encode()
             self._naming[cls] = [
@@ -1730,15 +1757,22 @@ def link_values(apps: list[Any], paths: list[str]) -> None:
         for f in app.files:
             for var, span, helper in f.consumed_degrees:
                 consumers.setdefault(var, (app.folder, span, helper))
+    waiting = [
+        pub.value.abstract
+        for app in apps
+        for pub in app.publications
+        if pub.value is not None and pub.value.abstract and pub.value.abstract.pending
+    ]
     resolver: RepositoryResolver | None = None
+    if waiting:
+        resolver = RepositoryResolver(sorted(paths), read_bytes)
+        resolver.expect(waiting)
     for app in apps:
         for pub in app.publications:
             v = pub.value.abstract if pub.value is not None else None
             if v is None:
                 continue
-            if v.pending is not None:
-                if resolver is None:
-                    resolver = RepositoryResolver(sorted(paths), read_bytes)
+            if v.pending is not None and resolver is not None:
                 v = resolve_pending(v, resolver)
             if v.unit is None and v.const is None and pub.name.text in consumers:
                 folder, span, helper = consumers[pub.name.text]
