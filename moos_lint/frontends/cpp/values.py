@@ -1598,7 +1598,8 @@ class RepositoryResolver:
     def expect(self, values: Iterable[AbstractValue]) -> None:
         """Note the classes whose fields ``values`` wait for, so that the one read of
         every file that indexes the functions also finds the files naming them."""
-        for v in values:
+        for first in values:
+            v: AbstractValue | None = first
             while v is not None:
                 if v.pending and v.pending.startswith("."):
                     self._expected.add(v.pending.split(".", 2)[1])
