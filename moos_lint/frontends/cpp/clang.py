@@ -1,11 +1,14 @@
-"""libclang deep mode (``--cpp-backend clang``): types, constant folding, ``#ifdef`` as compiled.
+"""libclang deep mode (``--cpp-backend clang``): ``#ifdef`` as compiled, constants, types.
 
-It refines the tree-sitter model, never replaces it: only the translation units
-the fast path found relevant are parsed (with their flags from a
-``compile_commands.json``), and the cursor is looked up at each call position
-tree-sitter found (``Cursor.from_location``); whole ASTs are never walked in
-Python. When libclang, the compilation database or the system headers are
-missing, moos-lint says so once on stderr and keeps the tree-sitter results.
+It sharpens the tree-sitter reading, never replaces it (:func:`sharpen`): the
+translation units of the apps that publish or register are parsed with their
+flags from a ``compile_commands.json``, and each such app is read again with
+what libclang knows of its files (:mod:`moos_lint.frontends.cpp.clang_facts`):
+the regions the preprocessor skipped are blanked before tree-sitter parses, and
+the value analysis asks for constants and types at the positions tree-sitter
+found (``Cursor.from_location``); whole ASTs are never walked in Python. When
+libclang, the compilation database or the headers are missing, moos-lint says
+so once on stderr and keeps the tree-sitter results.
 """
 
 from __future__ import annotations
