@@ -29,6 +29,7 @@ from moos_lint.frontends.cpp.model import AppModel, CppFile
 if TYPE_CHECKING:
     from moos_lint.core.config import Settings
     from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.cpp.clang_facts import ClangFacts
 
 _warned: set[str] = set()
 
@@ -218,12 +219,18 @@ def _parser(ci: Any, db: Any, inc: str | None, within: Callable[[str], bool]):
                 "so C++ is read with tree-sitter where libclang cannot see the code",
             )
             return None
-        return Unit(ci, path, tu, within)
+        try:
+            return Unit(ci, path, tu, within)
+        except Exception as exc:  # a unit whose includes or skipped regions cannot be read
+            warn_once("tu:" + path, f"libclang could not read {path} ({exc}); using tree-sitter")
+            return None
 
     return parse
 
 
-def sharpen(apps: list[AppModel], sources: dict[str, SourceFile], settings: Settings):
+def sharpen(
+    apps: list[AppModel], sources: dict[str, SourceFile], settings: Settings
+) -> ClangFacts | None:
     """Read the apps again as compiled, with what libclang knows (skipped regions,
     constants, types), and return those facts for the rest of the value analysis.
 
@@ -288,7 +295,7 @@ def sharpen(apps: list[AppModel], sources: dict[str, SourceFile], settings: Sett
     return facts
 
 
-def _keep_compiled_out(f: CppFile, first: CppFile | None, facts: Any) -> None:
+def _keep_compiled_out(f: CppFile, first: CppFile | None, facts: ClangFacts) -> None:
     """The publications and subscriptions of the tree-sitter reading that the compiler
     skipped, kept as inactive (no rule sees them)."""
     if first is None:

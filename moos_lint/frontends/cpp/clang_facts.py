@@ -184,6 +184,12 @@ class ClangFacts:
     def constant(self, path: str, row: int, col: int, name: str) -> tuple[float, str] | None:
         """The value of the constant ``name`` used at (``row``, ``col``), and where it is
         defined; None when it is not a constant (a variable, a function-like macro)."""
+        try:
+            return self._constant(path, row, col, name)
+        except Exception:  # a cursor kind these bindings do not know, a broken unit
+            return None
+
+    def _constant(self, path: str, row: int, col: int, name: str) -> tuple[float, str] | None:
         c = self._cursor(path, row, col)
         if c is None or c.spelling != name:
             return None
@@ -193,19 +199,16 @@ class ClangFacts:
         ck = self.ci.CursorKind
         value: float | None = None
         shown = ""
-        try:
-            if ref.kind == ck.ENUM_CONSTANT_DECL:
-                value = float(ref.enum_value)
-                shown = f"{value:g}"
-            elif ref.kind == ck.VAR_DECL and ref.type.is_const_qualified():
-                value = self.evaluate.number(ref)
-                words = [t.spelling for t in ref.get_tokens()]
-                shown = " ".join(words[words.index("=") + 1 :]) if "=" in words else ""
-            elif ref.kind == ck.MACRO_DEFINITION:
-                shown = _object_macro(ref)
-                value = define_const(shown, {}) if shown else None
-        except Exception:
-            return None
+        if ref.kind == ck.ENUM_CONSTANT_DECL:
+            value = float(ref.enum_value)
+            shown = f"{value:g}"
+        elif ref.kind == ck.VAR_DECL and ref.type.is_const_qualified():
+            value = self.evaluate.number(ref)
+            words = [t.spelling for t in ref.get_tokens()]
+            shown = " ".join(words[words.index("=") + 1 :]) if "=" in words else ""
+        elif ref.kind == ck.MACRO_DEFINITION and not _builtin(self.ci, ref):
+            shown = _object_macro(ref)
+            value = define_const(shown, {}) if shown else None
         if value is None:
             return None
         loc = ref.location
@@ -223,18 +226,27 @@ class ClangFacts:
     ) -> tuple[str | None, float | None]:
         """The type (integer, floating, string, bool) and folded value of argument
         ``index`` of the call whose ``(`` is at (``row``, ``col``)."""
-        c = self._cursor(path, row, col)
-        ci = self.ci
-        if c is None or c.kind != ci.CursorKind.CALL_EXPR:
-            return None, None
         try:
+            c = self._cursor(path, row, col)
+            if c is None or c.kind != self.ci.CursorKind.CALL_EXPR:
+                return None, None
             args = list(c.get_arguments())
             if index >= len(args):
                 return None, None
-            arg = args[index]
-            return _kind(ci, arg), self.evaluate.number(arg)
-        except Exception:
+            return _kind(self.ci, args[index]), self.evaluate.number(args[index])
+        except Exception:  # a cursor kind these bindings do not know, a broken unit
             return None, None
+
+
+def _builtin(ci: Any, ref: Any) -> bool:
+    """A macro the compiler predefines (``__DBL_MAX__``): no file, and no -D flag either."""
+    lib = ci.conf.lib
+    f = getattr(lib, "clang_Cursor_isMacroBuiltin", None)
+    if f is None:
+        return False
+    f.argtypes = [ci.Cursor]
+    f.restype = ctypes.c_uint
+    return bool(f(ref))
 
 
 def _object_macro(ref: Any) -> str:
