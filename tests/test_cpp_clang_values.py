@@ -19,7 +19,12 @@ from moos_lint.core.engine import lint_files
 
 ROOT = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "clang_values"
 FILES = sorted(str(p) for p in ROOT.rglob("*") if p.suffix in (".cpp", ".h"))
-APPS = (("iCompass", "Compass.cpp"), ("iAttitude", "Attitude.cpp"), ("iTypes", "Types.cpp"))
+APPS = (
+    ("iCompass", "Compass.cpp"),
+    ("iAttitude", "Attitude.cpp"),
+    ("iTypes", "Types.cpp"),
+    ("lib_filter", "Filter.cpp"),
+)
 RULES = ["yaw-in-degrees", "angle-in-degrees", "yaw-heading-sign", "angle-not-wrapped"]
 SCALE = "-DOUTPUT_SCALE=57.29577951"  # a conversion factor given by the build
 
@@ -29,7 +34,10 @@ def _db(tmp_path: Path, *flags: str, include: str = "-I../common") -> Path:
         {
             "directory": str(ROOT / app),
             "file": str(ROOT / app / src),
-            "arguments": ["c++", "-std=c++17", include, "-I.", *flags, "-c", src, "-o", "x.o"],
+            "arguments": [
+                *("c++", "-std=c++17", include, "-I../lib_filter", "-I."),
+                *(*flags, "-c", src, "-o", "x.o"),
+            ],
         }
         for app, src in APPS
     ]
@@ -101,7 +109,7 @@ def test_clang_reads_ifdef_as_compiled(clang, tmp_path):
 
 def test_clang_folds_constants_defined_elsewhere(clang):
     msgs = {d.span.line: d.message for d in clang.diagnostics if "iAttitude" in d.span.path}
-    assert sorted(msgs) == [6, 7, 8, 9]  # lines 11-13 stay quiet
+    assert sorted(msgs) == [6, 7, 8, 9]  # lines 11-13 stay quiet, and so does 15
     assert "`kRadToDeg` is 180.0 / M_PI, defined at common/Units.h:5" in msgs[6]
     assert "`HALF_TURN_DEG` is 180, defined at common/Units.h:7" in msgs[7]
     assert "`RAD2DEG_FACTOR` is (180.0 / M_PI), defined at common/Units.h:8" in msgs[8]
@@ -111,6 +119,17 @@ def test_clang_folds_constants_defined_elsewhere(clang):
     assert pubs["ATT_NAV_YAW"].unit == "rad"  # degrees times kDegToRad
     assert pubs["ATT_FILTERED_YAW"].unit is None  # a gain of 2: no conversion
     assert pubs["ATT_DISPLAY_YAW"].unit is None  # not const: never folded
+
+
+def test_clang_reads_a_library_the_value_flow_reaches_as_compiled(clang, tmp_path):
+    """``lib_filter`` never mentions MOOS: its unit is parsed only because
+    ``m_filter.yaw()`` is published, and its ``#ifdef`` is read as the database builds it."""
+    assert not [d for d in clang.diagnostics if d.span.line == 15]
+    built = _lint("clang", _db(tmp_path, SCALE, "-DFILTER_DEGREES"))
+    got = [d for d in built.diagnostics if "iAttitude" in d.span.path and d.span.line == 15]
+    assert [d.code for d in got] == ["U001"]
+    assert "yaw() returns m_yaw * kRadToDeg at lib_filter/Filter.cpp:7" in got[0].message
+    assert "defined at common/Units.h:5" in got[0].message
 
 
 def test_clang_knows_types_and_judges_only_numbers(clang):
