@@ -276,6 +276,7 @@ def sharpen(
     for app in apps:
         if not any(f.publications or f.subscriptions for f in app.files):
             continue
+        facts.focus([])  # the last app's units go before this app's are parsed
         units = [u for f in app.files if is_cpp_source(f.path) for u in [facts.parse(f.path)] if u]
         if not units:
             continue
