@@ -186,3 +186,60 @@ def test_blanking_keeps_directives_and_every_other_byte():
         b"z = 1;",
         b"",
     ]
+
+
+# ------------------------------------------------- every value rule, on the model alone
+
+VALUE_CHECKS = (
+    "yaw_heading_sign",
+    "heading_in_radians",
+    "depth_z_sign",
+    "latlong_in_radians",
+    "yaw_in_degrees",
+    "angle_not_wrapped",
+    "angle_in_degrees",
+)
+
+
+def _model(active: bool, type_: str | None):
+    """One app publishing a break of every value rule, each as ``active`` and ``type_``."""
+    import math
+
+    from moos_lint.files.diagnostics import Span
+    from moos_lint.frontends.cpp.model import AppModel, CppFile, Name, Publication, Value
+    from moos_lint.frontends.cpp.values import AbstractValue
+
+    breaks = {
+        "NAV_YAW": AbstractValue(unit="deg"),
+        "GPS_YAW": AbstractValue(unit="rad", sense="heading"),
+        "NAV_HEADING": AbstractValue(unit="rad"),
+        "NAV_Z": AbstractValue(sign="down"),
+        "NAV_LAT": AbstractValue(unit="rad"),
+        "NAV_ROLL": AbstractValue(unit="rad", range=(0.0, 2 * math.pi)),
+        "NAV_PITCH": AbstractValue(unit="deg"),
+    }
+    span = Span("App.cpp", 1, 1, 1, 2)
+    pubs = [
+        Publication(
+            name=Name(source=f'"{n}"', text=n),
+            value=Value(text="v", expanded="v", span=span, type=type_, abstract=v),
+            span=span,
+            name_span=span,
+            function="App::Iterate",
+            active=active,
+        )
+        for n, v in breaks.items()
+    ]
+    return AppModel(folder=".", files=[CppFile(path="App.cpp", publications=pubs)])
+
+
+@pytest.mark.parametrize("check", VALUE_CHECKS)
+def test_every_value_rule_skips_compiled_out_and_non_numeric_values(check):
+    from moos_lint.semantics import cpp_checks
+
+    run = getattr(cpp_checks, check)
+    assert list(run(_model(True, None))), "the model holds a break of this rule"
+    assert list(run(_model(True, "integer"))) and list(run(_model(True, "floating")))
+    assert not list(run(_model(False, None)))  # compiled out
+    assert not list(run(_model(True, "string")))
+    assert not list(run(_model(True, "bool")))
