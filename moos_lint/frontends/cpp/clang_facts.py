@@ -27,6 +27,7 @@ import re
 from collections.abc import Callable, Iterable
 from typing import Any
 
+from moos_lint.files.suffixes import is_cpp_source
 from moos_lint.frontends.cpp.values import define_const, place
 
 #: the conditional directives a skipped region starts and ends with (kept when blanking)
@@ -99,14 +100,13 @@ class ClangFacts:
         self.ci = ci
         self.evaluate = evaluate  # :class:`moos_lint.frontends.cpp.clang._Eval`
         self.parse = parse
-        self.units: list[Unit] = []
         self.scope: list[Unit] = []
         self._own: dict[str, Unit | None] = {}  # a source's own unit, parsed on demand
         #: what the units parsed so far skipped, by file: kept after the units are let go
         self._skipped: dict[str, list[set[int]]] = {}
 
     def add(self, unit: Unit) -> None:
-        self.units.append(unit)
+        """Note what ``unit`` skipped, for the files read out of any app's scope."""
         for f in unit.files:
             self._skipped.setdefault(f, []).append(unit.skipped.get(f, set()))
 
@@ -117,11 +117,12 @@ class ClangFacts:
                 u.tu = None  # a unit's AST is large: keep only the app's being read
         self.scope = units
 
-    def knows(self, path: str) -> bool:
-        return any(_key(path) in u.files for u in self.scope) or _key(path) in self._skipped
-
     # -- the code as compiled
     def skipped_lines(self, path: str) -> set[int]:
+        """The lines of ``path`` the preprocessor skipped (1-based), as compiled into the
+        app in scope; else in every unit parsed so far that includes the file (a
+        library source no unit includes is parsed on its own, when it is in the
+        database)."""
         key = _key(path)
         mine = [u.skipped.get(key, set()) for u in self.scope if key in u.files]
         if not mine:
@@ -153,8 +154,6 @@ class ClangFacts:
         return own.tu if own is not None else None
 
     def _own_unit(self, path: str) -> Unit | None:
-        from moos_lint.files.suffixes import is_cpp_source
-
         key = _key(path)
         if key not in self._own:
             self._own[key] = None
