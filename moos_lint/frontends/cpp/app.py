@@ -70,7 +70,7 @@ def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[C
     tables = collect_tables(parsed)
     from moos_lint.frontends.cpp.values import Evaluator, Folder
 
-    evaluator = Evaluator(Folder(parsed), compiled)
+    evaluator = Evaluator(Folder(parsed), compiled=compiled)
     return [Extractor(pf, tables, evaluator).run() for pf in parsed]
 
 
