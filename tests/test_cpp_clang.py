@@ -56,7 +56,7 @@ def _clang_app(tmp_path):
 def test_clang_adds_types_folds_constants_and_follows_ifdef(tmp_path):
     result, app = _clang_app(tmp_path)
     pubs = {p.name.text: p for f in app.files for p in f.publications}
-    assert pubs["COMPASS_YAW"].value.type == "double"
+    assert pubs["COMPASS_YAW"].value.type == "floating"
     assert pubs["COMPASS_YAW"].value.number == pytest.approx(400 * 3.141592653589793 / 180)
     assert pubs["COMPASS_STATUS"].value.type == "string"
     assert pubs["COMPASS_debug"].active is False  # COMPASS_DEBUG is not defined

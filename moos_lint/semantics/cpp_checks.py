@@ -89,11 +89,17 @@ def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     )
 
 
+#: what a value's type may be for the unit rules to judge it (None: not known)
+NUMERIC = (None, "integer", "floating")
+
+
 def _valued(app: AppModel, pred) -> Iterator[tuple[Publication, Any]]:
-    """Publications whose name (or its known last word) ``pred`` accepts, with their values."""
+    """Publications of numbers whose name (or its known last word) ``pred`` accepts, with
+    their values. A string or a bool (its type known with ``--cpp-backend clang``) carries
+    no unit; a publication compiled out is not in ``app.publications``."""
     for p in app.publications:
         name = p.name.last
-        if name and p.value is not None and pred(name):
+        if name and p.value is not None and p.value.type in NUMERIC and pred(name):
             yield p, p.value.abstract
 
 

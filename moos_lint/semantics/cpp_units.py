@@ -1,7 +1,8 @@
 """C++ files as lint units: one unit per folder (an app), carrying its :class:`AppModel`.
 
 :func:`build_cpp_units` parses the files, joins what crosses folders (base
-classes) and runs the libclang deep mode when it is asked for.
+classes), reads them again as compiled with libclang when the deep mode is asked for,
+and finishes the value analysis across the repository.
 """
 
 from __future__ import annotations
@@ -39,14 +40,15 @@ def build_cpp_units(
         linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
         link_apps(linked)
         apps = {a.folder: a for a in linked}
+    compiled = None
+    if run.settings.cpp_backend == "clang" and apps:
+        from moos_lint.frontends.cpp.clang import sharpen
+
+        compiled = sharpen(list(apps.values()), sources, run.settings)
     if apps:
         from moos_lint.frontends.cpp.values import link_values
 
-        link_values(list(apps.values()), paths)
-    if run.settings.cpp_backend == "clang" and apps:
-        from moos_lint.frontends.cpp.clang import enrich
-
-        enrich(list(apps.values()), run.settings)
+        link_values(list(apps.values()), paths, compiled)
     units = []
     folders: dict[str, list[str]] = {}
     for p in paths:

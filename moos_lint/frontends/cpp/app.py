@@ -47,8 +47,13 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
 _read_memo: dict[str, tuple[bytes, SourceFile | None]] = {}
 
 
-def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
-    """Parse the files of one folder and extract their facts."""
+def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[CppFile]:
+    """Parse the files of one folder and extract their facts.
+
+    ``compiled`` (``--cpp-backend clang``: :class:`~moos_lint.frontends.cpp.clang_facts.ClangFacts`)
+    is what libclang knows of the files: what the compiler skipped is blanked before
+    the parse, and the value analysis asks it for constants and types.
+    """
     from moos_lint.frontends.cpp.extract import Extractor, ParsedFile, collect_tables
     from moos_lint.frontends.cpp.parse import backend
 
@@ -58,12 +63,14 @@ def parse_folder(sources: dict[str, SourceFile]) -> list[CppFile]:
         # a bare CR ends a line for moos-lint (and for the spans), not for tree-sitter
         text = src.text.replace("\r\n", "\n").replace("\r", "\n")
         data = text.encode("utf-8", "replace")
+        if compiled is not None:
+            data = compiled.live(path, data)
         tree, matches = _parse(be, path, data)
         parsed.append(ParsedFile(path, data, tree, matches))
     tables = collect_tables(parsed)
     from moos_lint.frontends.cpp.values import Evaluator, Folder
 
-    evaluator = Evaluator(Folder(parsed))
+    evaluator = Evaluator(Folder(parsed), compiled=compiled)
     return [Extractor(pf, tables, evaluator).run() for pf in parsed]
 
 

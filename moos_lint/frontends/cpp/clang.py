@@ -1,11 +1,14 @@
-"""libclang deep mode (``--cpp-backend clang``): types, constant folding, ``#ifdef`` as compiled.
+"""libclang deep mode (``--cpp-backend clang``): ``#ifdef`` as compiled, constants, types.
 
-It refines the tree-sitter model, never replaces it: only the translation units
-the fast path found relevant are parsed (with their flags from a
-``compile_commands.json``), and the cursor is looked up at each call position
-tree-sitter found (``Cursor.from_location``); whole ASTs are never walked in
-Python. When libclang, the compilation database or the system headers are
-missing, moos-lint says so once on stderr and keeps the tree-sitter results.
+It sharpens the tree-sitter reading, never replaces it (:func:`sharpen`): the
+translation units of the apps that publish or register are parsed with their
+flags from a ``compile_commands.json``, and each such app is read again with
+what libclang knows of its files (:mod:`moos_lint.frontends.cpp.clang_facts`):
+the regions the preprocessor skipped are blanked before tree-sitter parses, and
+the value analysis asks for constants and types at the positions tree-sitter
+found (``Cursor.from_location``); whole ASTs are never walked in Python. When
+libclang, the compilation database or the headers are missing, moos-lint says
+so once on stderr and keeps the tree-sitter results.
 """
 
 from __future__ import annotations
@@ -15,15 +18,18 @@ import os
 import shutil
 import subprocess
 import sys
+from collections.abc import Callable
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from moos_lint.files.project import is_within
 from moos_lint.files.suffixes import is_cpp_source
-from moos_lint.frontends.cpp.model import AppModel, Publication, Subscription
+from moos_lint.frontends.cpp.model import AppModel, CppFile
 
 if TYPE_CHECKING:
     from moos_lint.core.config import Settings
+    from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.cpp.clang_facts import ClangFacts
 
 _warned: set[str] = set()
 
@@ -181,65 +187,30 @@ class _Eval:
             self.lib.clang_EvalResult_dispose(res)
 
 
-def _byte_col(line_text: str, col: int) -> int:
-    return len(line_text[: col - 1].encode("utf-8")) + 1
+def _parser(ci: Any, db: Any, inc: str | None, within: Callable[[str], bool]):
+    """A function parsing one source of the compile database into a :class:`Unit`, or
+    None (not in the database, or libclang cannot read it: said once)."""
+    from moos_lint.frontends.cpp.clang_facts import Unit
 
-
-def enrich(apps: list[AppModel], settings: Settings) -> None:
-    """Refine the app models with libclang; warn once and keep them as they are on failure."""
-    ci = load_cindex()
-    if ci is None:
-        return
-    folders = [a.folder for a in apps]
-    db_dir = find_compile_commands(settings, folders)
-    if db_dir is None:
-        warn_once(
-            "no-db",
-            "--cpp-backend clang needs a compile_commands.json (give it with --compile-commands "
-            "or configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON); "
-            "reading C++ with tree-sitter only",
-        )
-        return
-    try:
-        db = ci.CompilationDatabase.fromDirectory(db_dir)
-    except ci.CompilationDatabaseError:
-        warn_once("no-db", f"cannot read {db_dir}/compile_commands.json; using tree-sitter only")
-        return
-    inc = system_include()
-    if inc is None:
-        warn_once(
-            "no-headers",
-            "no system compiler include folder found (gcc -print-file-name=include): "
-            "libclang may not find <stddef.h>",
-        )
     index = ci.Index.create()
-    ev = _Eval(ci)
-    for app in apps:
-        _enrich_app(ci, index, db, inc, ev, app)
+    options = ci.TranslationUnit.PARSE_DETAILED_PROCESSING_RECORD  # for the skipped regions
+    tried: set[str] = set()
 
-
-def _enrich_app(ci: Any, index: Any, db: Any, inc: str | None, ev: _Eval, app: AppModel) -> None:
-    calls: dict[str, list[Publication | Subscription]] = {}
-    for f in app.files:
-        items: list[Publication | Subscription] = [*f.publications, *f.subscriptions]
-        if items:
-            calls[f.path] = items
-    if not calls:
-        return
-    done: set[str] = set()
-    units = [f.path for f in app.files if is_cpp_source(f.path)]
-    for path in units:
+    def parse(path: str) -> Unit | None:
+        if path in tried:
+            return None
+        tried.add(path)
         cmds = db.getCompileCommands(path)
         if not cmds:
-            continue
+            return None
         args = _args(cmds[0], path)
         if inc:
             args += ["-isystem", inc]
         try:
-            tu = index.parse(path, args)
+            tu = index.parse(path, args, options=options)
         except ci.TranslationUnitLoadError:
             warn_once("tu:" + path, f"libclang could not parse {path}; using tree-sitter for it")
-            continue
+            return None
         fatal = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Fatal]
         if fatal:
             warn_once(
@@ -247,54 +218,97 @@ def _enrich_app(ci: Any, index: Any, db: Any, inc: str | None, ev: _Eval, app: A
                 f"libclang: {fatal[0].spelling} in {fatal[0].location.file}: headers are missing, "
                 "so C++ is read with tree-sitter where libclang cannot see the code",
             )
+            return None
+        try:
+            return Unit(ci, path, tu, within)
+        except Exception as exc:  # a unit whose includes or skipped regions cannot be read
+            warn_once("tu:" + path, f"libclang could not read {path} ({exc}); using tree-sitter")
+            return None
+
+    return parse
+
+
+def sharpen(
+    apps: list[AppModel], sources: dict[str, SourceFile], settings: Settings
+) -> ClangFacts | None:
+    """Read the apps again as compiled, with what libclang knows (skipped regions,
+    constants, types), and return those facts for the rest of the value analysis.
+
+    Only apps that publish or subscribe are compiled, each from its own sources in the
+    compile database. An app none of whose units libclang can parse keeps its
+    tree-sitter reading, untouched; without libclang or a database every app does
+    (said once on stderr), and None is returned.
+    """
+    from moos_lint.frontends.cpp.app import link_apps, parse_folder
+    from moos_lint.frontends.cpp.clang_facts import ClangFacts
+
+    ci = load_cindex()
+    if ci is None:
+        return None
+    db_dir = find_compile_commands(settings, [a.folder for a in apps])
+    if db_dir is None:
+        warn_once(
+            "no-db",
+            "--cpp-backend clang needs a compile_commands.json (give it with --compile-commands "
+            "or configure with -DCMAKE_EXPORT_COMPILE_COMMANDS=ON); "
+            "reading C++ with tree-sitter only",
+        )
+        return None
+    try:
+        db = ci.CompilationDatabase.fromDirectory(db_dir)
+    except ci.CompilationDatabaseError:
+        warn_once("no-db", f"cannot read {db_dir}/compile_commands.json; using tree-sitter only")
+        return None
+    inc = system_include()
+    if inc is None:
+        warn_once(
+            "no-headers",
+            "no system compiler include folder found (gcc -print-file-name=include): "
+            "libclang may not find <stddef.h>",
+        )
+    root = os.path.realpath(settings.project_root or settings.root)
+
+    def within(name: str) -> bool:
+        return is_within(os.path.realpath(name), root)
+
+    facts = ClangFacts(ci, _Eval(ci), _parser(ci, db, inc, within))
+    changed = False
+    for app in apps:
+        if not any(f.publications or f.subscriptions for f in app.files):
             continue
+        facts.focus([])  # the last app's units go before this app's are parsed
+        units = [u for f in app.files if is_cpp_source(f.path) for u in [facts.parse(f.path)] if u]
+        if not units:
+            continue
+        for u in units:
+            facts.add(u)
+        facts.focus(units)
+        before = {f.path: f for f in app.files}
+        mine = {p: s for p, s in sources.items() if p in before}
+        app.files = parse_folder(mine, facts)
+        for f in app.files:
+            _keep_compiled_out(f, before.get(f.path), facts)
         app.backend = "clang"
-        for fpath, items in calls.items():
-            if fpath in done:
-                continue
-            cf = tu.get_file(fpath)
-            if cf is None:
-                continue
-            done.add(fpath)
-            try:
-                with open(fpath, encoding="utf-8", errors="replace") as fh:
-                    lines = fh.read().split("\n")
-            except OSError:
-                continue
-            for item in items:
-                _lookup(ci, tu, cf, lines, item, ev)
+        changed = True
+    facts.focus([])
+    if changed:
+        link_apps(apps)
+    return facts
 
 
-def _lookup(ci: Any, tu: Any, cf: Any, lines: list[str], item: Any, ev: _Eval) -> None:
-    span = item.name_span
-    if span.line > len(lines):
+def _keep_compiled_out(f: CppFile, first: CppFile | None, facts: ClangFacts) -> None:
+    """The publications and subscriptions of the tree-sitter reading that the compiler
+    skipped, kept as inactive (no rule sees them)."""
+    if first is None:
         return
-    text = lines[span.line - 1]
-    paren = text.rfind("(", 0, span.col - 1)
-    if paren < 0:
+    dead = facts.skipped_lines(f.path)
+    if not dead:
         return
-    loc = ci.SourceLocation.from_position(tu, cf, span.line, _byte_col(text, paren + 1))
-    cursor = ci.Cursor.from_location(tu, loc)
-    if cursor is None:
-        return
-    if cursor.kind in (ci.CursorKind.COMPOUND_STMT, ci.CursorKind.TRANSLATION_UNIT):
-        item.active = False  # compiled out by #if / #ifdef
-        return
-    if cursor.kind != ci.CursorKind.CALL_EXPR or not isinstance(item, Publication):
-        return
-    args = list(cursor.get_arguments())
-    if len(args) < 2 or item.value is None:
-        return
-    decl = cursor.referenced
-    if decl is not None:
-        params = list(decl.get_arguments())
-        if len(params) >= 2:
-            spelled = params[1].type.get_canonical().spelling
-            item.value.type = (
-                "string"
-                if "basic_string" in spelled or "char" in spelled
-                else (spelled.replace("const ", "").strip())
-            )
-    number = ev.number(args[1])
-    if number is not None and item.value.number is None:
-        item.value.number = number
+    for p in first.publications:
+        if p.span.line in dead:
+            p.active = False
+            f.publications.append(p)
+    for s in first.subscriptions:
+        if s.span.line in dead:
+            s.active = False
+            f.subscriptions.append(s)

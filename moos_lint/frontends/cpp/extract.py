@@ -825,6 +825,8 @@ class Extractor:
             names = names or [pub_name]
             value = self.value(argv[1]) if len(argv) > 1 else None
             valued = any(valued_name(n.last) for n in names)
+            if value is not None and self._compiled_argument(args, 1, value) in ("string", "bool"):
+                valued = False  # not a number: no unit, sense or range to know
             if value is not None and self.evaluator is not None and valued:
                 value.abstract = self.evaluator.of(self.pf, argv[1])
             for each in names:
@@ -894,7 +896,11 @@ class Extractor:
         if not suffix or not valued_name(suffix):
             return
         value = self.value(argv[0])
-        if self.evaluator is not None:
+        numeric = self._compiled_argument(call.child_by_field_name("arguments"), 0, value) not in (
+            "string",
+            "bool",
+        )
+        if self.evaluator is not None and numeric:
             value.abstract = self.evaluator.of(self.pf, argv[0])
         self.out.publications.append(
             Publication(
@@ -905,6 +911,19 @@ class Extractor:
                 function=self._fn_of(call),
             )
         )
+
+    def _compiled_argument(self, args: Any, index: int, value: Value) -> str | None:
+        """With libclang's facts: the type of the call's ``index``-th argument (integer,
+        floating, string, bool) set on ``value``, with its folded number."""
+        compiled = self.evaluator.compiled if self.evaluator is not None else None
+        if compiled is None or args is None:
+            return None
+        row, col = args.start_point  # the call's ``(``
+        kind, number = compiled.argument(self.pf.path, row, col, index)
+        value.type = kind
+        if value.number is None and kind in ("integer", "floating"):
+            value.number = number
+        return kind
 
     def _comparison(self, cmp: Any, left: Any, right: Any) -> None:
         lit = string_value(right)

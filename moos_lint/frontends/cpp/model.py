@@ -60,7 +60,9 @@ class Value:
     expanded: str
     span: Span
     number: float | None = None  # a numeric constant, when the value is one
-    type: str | None = None  # "double" | "string" | ... (libclang deep mode)
+    #: "integer" | "floating" | "string" | "bool", as written before the call converts it
+    #: (libclang deep mode; None: not known)
+    type: str | None = None
     #: unit, sense, range and sign (:mod:`moos_lint.frontends.cpp.values`), for published angles,
     #: headings, positions and depths
     abstract: Any = None

@@ -19,7 +19,7 @@ import math
 import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, Protocol
 
 from moos_lint.frontends.cpp import facts, fields
 from moos_lint.frontends.cpp.names import callee_name, mail_key_of, node_text, strip
@@ -637,11 +637,27 @@ def _inside(n: Any, outer: Any) -> bool:
     return outer.start_byte <= n.start_byte and n.end_byte <= outer.end_byte
 
 
-class Evaluator:
-    """Abstract values of expressions of one folder."""
+class Compiled(Protocol):
+    """What a compiler front end knows that the tree-sitter reading does not
+    (:class:`moos_lint.frontends.cpp.clang_facts.ClangFacts`)."""
 
-    def __init__(self, folder: Folder, library: bool = False):
+    def constant(self, path: str, row: int, col: int, name: str) -> tuple[float, str] | None:
+        """The folded value of the constant ``name`` used at (``row``, byte ``col``), with
+        where it is defined; None when it is no constant."""
+        ...
+
+    def live(self, path: str, data: bytes) -> bytes:
+        """``data`` with what the compiler skipped blanked."""
+        ...
+
+
+class Evaluator:
+    """Abstract values of expressions of one folder. ``compiled`` (libclang's facts, or
+    None) resolves the constants the folder does not define."""
+
+    def __init__(self, folder: Folder, library: bool = False, compiled: Compiled | None = None):
         self.folder = folder
+        self.compiled = compiled
         self._stack: set[tuple] = set()
         #: reading a library file on its own: a field of its classes that the file never
         #: writes is looked for where the repository writes it (:func:`_field_pending`)
@@ -787,13 +803,13 @@ class Evaluator:
                         rng = (-m, m)
                     return replace(o, sense=None, sign=None, range=rng)
             if right.const is not None:
-                return _scaled(left, right.const)
+                return _scaled(left, right.const, right.why)
             if left.const is not None:
-                return _scaled(right, left.const)
+                return _scaled(right, left.const, left.why)
             return UNKNOWN  # a product of two quantities: no unit we can name
         if op == "/":
             if right.const is not None and right.const != 0:
-                return _scaled(left, 1.0 / right.const)
+                return _scaled(left, 1.0 / right.const, right.why)
             if left.const is not None and right.const is not None:
                 return UNKNOWN
             return UNKNOWN
@@ -926,9 +942,13 @@ class Evaluator:
         if not v.known and v.const is None and v.pending is None:
             d = self.folder.defines.get(key)
             if d is not None:
-                c = _define_const(d, self.folder.defines)
+                c = define_const(d, self.folder.defines)
                 if c is not None:
                     return constant(c)
+            if self.compiled is not None:
+                found = self._compiled_constant(pf, n, key)
+                if found is not None:
+                    return found
             return self._field_pending(pf, fnode, n, key) or name_hint(key)
         return v
 
@@ -998,6 +1018,20 @@ class Evaluator:
             if call.end_byte <= use.start_byte and name and name not in _NOT_SETTERS:
                 return call, name, index
         return None
+
+    def _compiled_constant(self, pf: Any, n: Any, key: str) -> AbstractValue | None:
+        """A constant defined where tree-sitter does not look (another folder's header, a
+        ``-D`` flag), as the compiler folds it."""
+        at = n
+        if n.type == "field_expression":
+            at = n.child_by_field_name("field")
+        elif n.type == "qualified_identifier":
+            at = n.child_by_field_name("name")
+        if at is None or self.compiled is None:
+            return None
+        row, col = at.start_point
+        found = self.compiled.constant(pf.path, row, col, key)
+        return constant(found[0], found[1]) if found is not None else None
 
     def _local(self, pf: Any, fnode: Any, use: Any, key: str, depth: int) -> AbstractValue | None:
         cands = pf.local.get(fnode.id, {}).get(key, [])
@@ -1177,7 +1211,7 @@ class Evaluator:
         if op in ("+", "-"):
             return add(base, rhs, op == "-")
         if op in ("*", "/") and rhs.const is not None and rhs.const != 0:
-            return settle(_scaled(base, rhs.const if op == "*" else 1 / rhs.const))
+            return settle(_scaled(base, rhs.const if op == "*" else 1 / rhs.const, rhs.why))
         return UNKNOWN
 
     def _member(self, key: str, depth: int) -> AbstractValue:
@@ -1221,10 +1255,13 @@ def _clip(s: str, n: int = 48) -> str:
     return s if len(s) <= n else s[: n - 1] + "…"
 
 
-def _scaled(v: AbstractValue, c: float) -> AbstractValue:
+def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractValue:
+    """``v`` times ``c``; ``why``: where ``c`` comes from (a constant libclang folded)."""
     if v.const is not None:
-        return constant(v.const * c)
-    return replace(v, scale=v.scale * c)
+        out = constant(v.const * c)
+        return replace(out, why=(*v.why, *why)) if v.why or why else out
+    out = replace(v, scale=v.scale * c)
+    return replace(out, why=(*out.why, *why)) if why else out
 
 
 def _target(n: Any) -> str:
@@ -1472,7 +1509,7 @@ def _wrap_step(
     )
 
 
-def _define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | None:
+def define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | None:
     """The number a ``#define`` stands for: a literal, π, or π/180 and 180/π forms."""
     v = val.strip()
     while v.startswith("(") and v.endswith(")"):
@@ -1484,11 +1521,11 @@ def _define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | 
     if v in facts.PI_NAMES:
         return facts.PI_NAMES[v]
     if v in defines and depth < 4:
-        return _define_const(defines[v], defines, depth + 1)
+        return define_const(defines[v], defines, depth + 1)
     m = re.fullmatch(r"\(?\s*([\w.]+)\s*\)?\s*([*/])\s*\(?\s*([\w.]+)\s*\)?", v)
     if m:
-        a = _define_const(m.group(1), defines, depth + 1)
-        b = _define_const(m.group(3), defines, depth + 1)
+        a = define_const(m.group(1), defines, depth + 1)
+        b = define_const(m.group(3), defines, depth + 1)
         if a is not None and b is not None:
             return a * b if m.group(2) == "*" else (a / b if b else None)
     return None
@@ -1555,9 +1592,10 @@ class RepositoryResolver:
     the files' bytes.
     """
 
-    def __init__(self, paths: list[str], read: Any):
+    def __init__(self, paths: list[str], read: Any, compiled: Compiled | None = None):
         self.paths = paths
         self.read = read
+        self.compiled = compiled
         self.cache: dict[str, AbstractValue | None] = {}
         self.parsed: dict[str, Any] = {}
         self._index: dict[bytes, list[int]] | None = None
@@ -1645,7 +1683,7 @@ class RepositoryResolver:
                 continue
             if index:
                 at, _, field = index.partition(".")  # ``read#0.p``: the field ``p`` it sets
-                ev = Evaluator(folder, library=True)
+                ev = Evaluator(folder, library=True, compiled=self.compiled)
                 if field:
                     w = ev.out_field(name, defs, int(at), field, 0)
                 else:
@@ -1654,7 +1692,7 @@ class RepositoryResolver:
                     continue
                 v = w
             else:
-                v = Evaluator(folder, library=True)._returns(name, defs, 0)
+                v = Evaluator(folder, library=True, compiled=self.compiled)._returns(name, defs, 0)
             if v.pending is not None and v.pending != name:
                 v = resolve_pending(v, self)
             if v.known:
@@ -1683,7 +1721,7 @@ class RepositoryResolver:
             pf = self._parse(path, data)
             if pf is None:
                 continue
-            ev = Evaluator(Folder([pf]), library=True)
+            ev = Evaluator(Folder([pf]), library=True, compiled=self.compiled)
             for node, rhs in fields.field_writes(pf, cls, names):
                 v = settle(ev._eval(pf, rhs, 0))
                 copied = v.pending is not None and v.pending.startswith(f".{cls}.")
@@ -1715,6 +1753,8 @@ class RepositoryResolver:
         try:
             text_ = data.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
             blob = text_.encode("utf-8")
+            if self.compiled is not None:
+                blob = self.compiled.live(path, blob)
             tree = be.parse(blob)
             pf = ParsedFile(path, blob, tree, be.matches(tree))
         except Exception:
@@ -1743,13 +1783,14 @@ def c_sources(paths: list[str]) -> list[str]:
     return out
 
 
-def link_values(apps: list[Any], paths: list[str]) -> None:
+def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = None) -> None:
     """Finish the values the apps publish with what only the repository knows.
 
     Calls to functions defined outside an app's folder are resolved by name across
     ``paths`` (a file is parsed only when it may define one), and a variable that
     another app converts from degrees on arrival (``MOOSDeg2Rad(msg.GetDouble())``)
     is taken to be published in degrees when its producer's value is unknown.
+    ``compiled``: libclang's facts (:class:`Compiled`), for the files it parsed.
     """
     from moos_lint.files.source import read_bytes
 
@@ -1766,7 +1807,7 @@ def link_values(apps: list[Any], paths: list[str]) -> None:
     ]
     resolver: RepositoryResolver | None = None
     if waiting:
-        resolver = RepositoryResolver(sorted(paths), read_bytes)
+        resolver = RepositoryResolver(sorted(paths), read_bytes, compiled)
         resolver.expect(waiting)
     for app in apps:
         for pub in app.publications:

@@ -15,7 +15,13 @@ any method, functions anywhere in the repository (a library getter) and the
 fields of structs that the repository's code writes (also C files);
 another app of the repository that converts the variable from degrees on
 arrival counts as evidence too. The finding says why, as a chain. What the
-analysis cannot know is never reported.
+analysis cannot know is never reported. With `--cpp-backend clang` and a
+compile database, the same analysis reads the code as compiled (a conversion
+inside an `#ifdef` the build leaves out does not count), folds the constants
+only the compiler sees (a `const` or `constexpr` variable or an enum value in
+another folder's header, a macro from a header or a `-D` flag, named in the
+chain with where it is defined), and judges numbers only: a published string
+or bool is never an angle.
 
 ## Why is this bad?
 In MOOS and MOOS-IvP a heading is in degrees, clockwise from north: the helm,
