@@ -34,6 +34,8 @@ SCRIPT_SUFFIXES = (".py", ".sh", ".bash", ".pl", ".rb", ".js", ".lua", ".jar")
 
 def script_stem(program: str) -> str | None:
     """``iSonar`` for a script ``iSonar.py`` (no folder); None for any other program."""
+    if "." not in program:  # (most programs: one test)
+        return None
     low = program.lower()
     for suffix in SCRIPT_SUFFIXES:
         if low.endswith(suffix) and len(program) > len(suffix):
