@@ -3,14 +3,16 @@
 from __future__ import annotations
 
 import os
+import re
 import threading
 from collections import OrderedDict
 from collections.abc import Iterable
 from typing import Any
 
+from moos_lint.files.diagnostics import Span
 from moos_lint.files.source import SourceFile, decode, read_bytes
 from moos_lint.frontends.cpp.cmake import executable_name
-from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile
+from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile, IOUse
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
 
@@ -39,6 +41,44 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
                 _read_memo[path] = (data, src)
         if src is not None:
             out[path] = src
+    return out
+
+
+_INCLUDE_LINE = re.compile(rb'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\r\n]+)[>"]', re.M)
+_LINK_CALL = re.compile(rb"\b(add_(?:any|udp|tcp|serial)_connection)[ \t]*\(")
+
+
+def helper_io(paths: Iterable[str]) -> list[tuple[SourceFile, CppFile]]:
+    """The I/O of an app's own C++ files that never mention the MOOS API: a helper class
+    that opens the serial port, the socket or the autopilot link. Read from the bytes
+    (the headers they include, MAVSDK's ``add_*_connection`` calls), never parsed; only
+    the files that hold such I/O are returned, each with the :class:`CppFile` of it."""
+    from moos_lint.frontends.cpp.extract import include_io
+
+    out = []
+    for path in paths:
+        data = read_bytes(path)
+        if not isinstance(data, bytes) or (b"include" not in data and b"_connection" not in data):
+            continue
+        found: list[tuple[int, int, str, str]] = []
+        for m in _INCLUDE_LINE.finditer(data):
+            kind = include_io(m.group(1).decode("utf-8", "replace").strip())
+            if kind:
+                found.append((m.start(1), m.end(1), kind, m.group(1).decode("utf-8", "replace")))
+        for m in _LINK_CALL.finditer(data):
+            found.append((m.start(1), m.end(1), "socket", m.group(1).decode("ascii")))
+        if not found:
+            continue
+        src = decode(data, path)
+        if not isinstance(src, SourceFile):
+            continue
+        f = CppFile(path=path)
+        for start, end, kind, detail in sorted(found):
+            line = data.count(b"\n", 0, start) + 1
+            col = start - (data.rfind(b"\n", 0, start) + 1) + 1
+            span = Span(path, line, col, line, col + (end - start))
+            f.io.append(IOUse(kind, detail, span))
+        out.append((src, f))
     return out
 
 

@@ -777,7 +777,7 @@ class Extractor:
                 out.io.append(IOUse("device", v, pf.spans.of(s)))
         for inc in pf.includes:
             path = text(inc).strip('<>"')
-            kind = _include_io(path)
+            kind = include_io(path)
             if kind:
                 out.io.append(IOUse(kind, path, pf.spans.of(inc)))
         for t in pf.types:
@@ -1072,7 +1072,8 @@ def _is_moos_call(fn: Any) -> bool:
     return fn.type in ("identifier", "field_expression", "qualified_identifier")
 
 
-def _include_io(path: str) -> str:
+def include_io(path: str) -> str:
+    """The kind of I/O an included header gives (``sys/socket.h``: socket), or ''."""
     low = path.lower()
     if low in ("termios.h", "sys/termios.h"):
         return "termios"

@@ -10,6 +10,11 @@ libusb. A `p` app is also reported for socket I/O (`socket`, `connect`,
 `add_any_connection`): a vehicle, a sensor or a service spoken to in a
 protocol that is not MOOS. The finding is on the first such use.
 
+The app's own helper files count too: a C++ file of the app's folder that
+never names the MOOS API (a class that opens the port or the link) is read for
+the I/O headers it includes (`sys/socket.h`, `termios.h`, a serial-port
+library, SocketCAN, libusb) and for MAVSDK links, without being parsed.
+
 ## Why is this bad?
 The MOOS conventions name processes by what they are: `i` for interface apps
 (the apps that have I/O with a device, or non-MOOS communications), `p` for
