@@ -1599,8 +1599,9 @@ class RepositoryResolver:
         self.cache: dict[str, AbstractValue | None] = {}
         self.parsed: dict[str, Any] = {}
         self._index: dict[bytes, list[int]] | None = None
-        #: class -> the files (and their bytes) that name it, for :meth:`_field`
-        self._naming: dict[str, list[tuple[str, bytes]]] = {}
+        #: class -> the files that name it, for :meth:`_field` (read again when asked: a
+        #: class many files name would otherwise keep all their bytes)
+        self._naming: dict[str, list[str]] = {}
         self._all: list[str] | None = None
         #: classes whose fields are waited for (see :meth:`expect`)
         self._expected: set[str] = set()
@@ -1645,7 +1646,7 @@ class RepositoryResolver:
 
     def _read_all(self) -> None:
         """One read of every file: the names it may define a function of, and whether it
-        names each expected class (those files' bytes are kept for :meth:`_field`)."""
+        names each expected class (for :meth:`_field`)."""
         self._index = {}
         classes = [(c, c.encode()) for c in sorted(self._expected - set(self._naming))]
         for cls, _ in classes:
@@ -1656,7 +1657,7 @@ class RepositoryResolver:
                 self._index.setdefault(n, []).append(i)
             for cls, key in classes:
                 if key in data:
-                    self._naming[cls].append((path, data))
+                    self._naming[cls].append(path)
 
     def __call__(self, name: str) -> AbstractValue | None:
         if name in self.cache:
@@ -1710,13 +1711,12 @@ class RepositoryResolver:
             self._read_all()
         if cls not in self._naming:  # a file that never names the class cannot write its fields
             key = cls.encode()
-            self._naming[cls] = [
-                (path, data) for path in self.all_paths if key in (data := self._data(path))
-            ]
+            self._naming[cls] = [path for path in self.all_paths if key in self._data(path)]
         wrote = re.compile(rb"\b(?:%s)\s*=(?!=)" % b"|".join(re.escape(n.encode()) for n in names))
         out: AbstractValue | None = None
-        for path, data in self._naming[cls]:
-            if not wrote.search(data):
+        for path in self._naming[cls]:
+            data = self._data(path) if path not in self.parsed else b""
+            if path not in self.parsed and not wrote.search(data):
                 continue
             pf = self._parse(path, data)
             if pf is None:
