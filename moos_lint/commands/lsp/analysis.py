@@ -181,6 +181,8 @@ def analyse(
         # mission, in the behavior files its helm reads: only those units are checked.
         if unit.path == path or path in unit.expansion.sources:
             return True
+        if unit.cpp is not None and any(f.path == path for f in unit.cpp.files):
+            return True  # a C++ app reports in any of its files
         return is_bhv and unit.moos is not None and unit.moos.is_mission
 
     reader = FileCache(reader=memory_reader(texts, seen), store=_EXPANSIONS)
