@@ -148,3 +148,49 @@ def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
     except OSError:
         return None
     return frozenset(m.group(1).decode("ascii", "replace").lower() for m in _QUOTED.finditer(data))
+
+
+_REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
+_RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
+
+
+def made_by_scripts(folder: str) -> frozenset[str]:
+    """The names of the files the folder's shell scripts write (``> obstacles.txt``) or
+    clean away (``rm -f obstacles.txt``): files that a launch makes, absent at rest.
+    The scripts are read as text, never run."""
+    try:
+        names = sorted(n for n in os.listdir(folder) if n.endswith(".sh"))
+    except OSError:
+        return frozenset()
+    stamps = []
+    for n in names:
+        path = os.path.join(folder, n)
+        try:
+            st = os.stat(path)
+        except OSError:
+            continue
+        stamps.append((path, st.st_mtime_ns, st.st_size))
+    return _made_by(tuple(stamps))
+
+
+@functools.lru_cache(maxsize=256)
+def _made_by(scripts: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
+    out: set[str] = set()
+    for path, _mtime, _size in scripts:
+        try:
+            with open(path, "rb") as fh:
+                text = fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")
+        except OSError:
+            continue
+        for line in text.splitlines():
+            code = line.split("#", 1)[0]
+            out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
+            for m in _RM.finditer(code):
+                for word in m.group(1).split():
+                    word = word.strip("\"'")
+                    if word and not word.startswith(("-", "$")) and "*" not in word:
+                        out.add(os.path.basename(word))
+    out.discard("")
+    out.discard("/dev/null")
+    out.discard("null")
+    return frozenset(out)

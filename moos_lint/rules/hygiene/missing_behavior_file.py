@@ -42,6 +42,9 @@ MOOS-IvP caveats, deliberately not reported:
   same extension sits in the same folder: MOOS-IvP launch scripts generate
   the `targ_` files from the `meta_` templates with nsplug
   (`nsplug meta_vehicle.bhv targ_$VNAME.bhv`), so the file appears at launch;
+- a file that a shell script of those folders writes (`gen_obstacles ... >
+  obstacles.txt`) or removes (`rm -f obstacles.txt` in `clean.sh`): the launch
+  makes it, so it is absent at rest (the scripts are read as text, never run);
 - pMarineViewer's `tiff_file`: the viewer looks for it in the MOOS-IvP data
   folder and in IVP_IMAGE_DIRS, not only next to the mission.
 """
@@ -50,7 +53,7 @@ import glob
 import os
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.launch import find_relative, launch_folders, project_folder
+from moos_lint.files.launch import find_relative, launch_folders, made_by_scripts, project_folder
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import app_of, exclusive, names_match
 from moos_lint.rules.kit.declare import Scope, rule
@@ -108,6 +111,8 @@ def check(ctx):
                     continue
                 if find_relative(name, folders) or any(_generated(f, name) for f in folders):
                     continue
+                if any(os.path.basename(name) in made_by_scripts(f) for f in folders):
+                    continue  # a launch script writes it (and the clean script removes it)
                 where = "next to the mission"
                 if len(folders) > 1:
                     where += (
