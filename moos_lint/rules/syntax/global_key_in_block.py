@@ -7,9 +7,10 @@ or `LongOrigin` set inside a block.
 ## Why is this bad?
 There is no syntactic global section in a `.moos` file: every app reads these
 keys with a lookup that returns the *first* matching line anywhere in the
-file, blocks included. A `MOOSTimeWarp = 7` inside one app's block therefore
-sets the time warp of every app and of the MOOSDB, shadowing the real line
-at the top of the file.
+file, blocks included. A `MOOSTimeWarp = 7` inside one app's block that comes
+before the line at the top of the file therefore sets the time warp of every
+app and of the MOOSDB; one that comes after it is read by no app at all, and
+only misleads whoever reads the block. The message says which.
 
 ## Example
 ```moos
@@ -27,19 +28,36 @@ warp use its `moos_time_warp` parameter.
 None.
 """
 
+import os
+
 from moos_lint.files.diagnostics import Severity
-from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS
+from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, Param
 from moos_lint.rules.kit.declare import Scope, rule
 
 
 @rule(code="R009", name="global-key-in-block", severity=Severity.ERROR, scope=Scope.FILE)
 def check(ctx):
+    order = {id(line): i for i, line in enumerate(ctx.moos.lines)}
+    first: dict[str, tuple[int, Param]] = {}  # key -> the first line MOOS finds it on
+    for p in (*ctx.moos.globals, *(q for b in ctx.moos.blocks for q in b.params)):
+        if p.lkey in GLOBAL_KEYS:
+            at = order.get(id(p.line), len(order))
+            if p.lkey not in first or at < first[p.lkey][0]:
+                first[p.lkey] = (at, p)
     for block in ctx.moos.blocks:
         for p in block.params:
-            if p.lkey in GLOBAL_KEYS:
-                yield ctx.report(
-                    p.key_span,
-                    f"`{p.key}` inside block `{block.name}` is read by every app in the "
-                    "mission: it shadows the global setting",
-                    line=p.line,
-                )
+            if p.lkey not in GLOBAL_KEYS:
+                continue
+            winner = first[p.lkey][1]
+            if winner is p:
+                why = "is read by every app in the mission: it comes first, so it shadows any "
+                why += f"`{p.key}` line of the file"
+            else:
+                line = winner.line
+                where = f"line {line.lineno}"
+                if line.path != p.line.path:
+                    where = f"{os.path.basename(line.path)}:{line.lineno}"
+                why = f"is read by no app: every app reads the first `{winner.key}` line of "
+                why += f"the file ({where}), so this one only misleads"
+            msg = f"`{p.key}` inside block `{block.name}` {why}"
+            yield ctx.report(p.key_span, msg, line=p.line)
