@@ -39,8 +39,10 @@ from moos_lint.rules.kit.declare import Scope, rule
 def check(ctx):
     order = {id(line): i for i, line in enumerate(ctx.moos.lines)}
     first: dict[str, tuple[int, Param]] = {}  # key -> the first line MOOS finds it on
+    lines: dict[str, int] = {}  # key -> how many lines set it
     for p in (*ctx.moos.globals, *(q for b in ctx.moos.blocks for q in b.params)):
         if p.lkey in GLOBAL_KEYS:
+            lines[p.lkey] = lines.get(p.lkey, 0) + 1
             at = order.get(id(p.line), len(order))
             if p.lkey not in first or at < first[p.lkey][0]:
                 first[p.lkey] = (at, p)
@@ -49,9 +51,11 @@ def check(ctx):
             if p.lkey not in GLOBAL_KEYS:
                 continue
             winner = first[p.lkey][1]
-            if winner is p:
-                why = "is read by every app in the mission: it comes first, so it shadows any "
-                why += f"`{p.key}` line of the file"
+            if winner is p and lines[p.lkey] == 1:
+                why = "is read by every app in the mission, as if it stood at the top of the file"
+            elif winner is p:
+                why = "is read by every app in the mission: it comes first, so it shadows the "
+                why += f"other `{p.key}` lines of the file"
             else:
                 line = winner.line
                 where = f"line {line.lineno}"
