@@ -7,21 +7,10 @@ Reports `Notify` of a variable whose last word is `HEADING` or `HDG`
 `NAV_YAW` read by mail or a `*_rad` name, with no conversion back to degrees
 (`MOOSRad2Deg`, `radToDegrees`, `radToHeading`, `*180/M_PI`).
 
-The value is read by moos-lint's value analysis of C++ (unit, sense, range
-and sign): the conversion helpers of MOOS and MOOS-IvP, `π/180` arithmetic,
-inverse trigonometry, wraps, the variables read by mail, NMEA fields, and
-names and comments that state a unit, followed through locals, members set in
-any method, functions anywhere in the repository (a library getter) and the
-fields of structs that the repository's code writes (also C files);
-another app of the repository that converts the variable from degrees on
-arrival counts as evidence too. The finding says why, as a chain. What the
-analysis cannot know is never reported. With `--cpp-backend clang` and a
-compile database, the same analysis reads the code as compiled (a conversion
-inside an `#ifdef` the build leaves out does not count), folds the constants
-only the compiler sees (a `const` or `constexpr` variable or an enum value in
-another folder's header, a macro from a header or a `-D` flag, named in the
-chain with where it is defined), and judges numbers only: a published string
-or bool is never an angle.
+The value comes from moos-lint's value analysis of C++, which follows it
+through locals, members, functions anywhere in the repository and struct fields
+(README, "C++ apps"). The finding says why, as a chain; what the analysis
+cannot know is never reported.
 
 ## Why is this bad?
 In MOOS and MOOS-IvP a heading is in degrees, clockwise from north: the helm,
