@@ -295,7 +295,7 @@ class ConfiguredPublication:
 def configured_publications(run: RunView, moos: MoosFile) -> list[ConfiguredPublication]:
     """The variables a mission's blocks name through keys that rename an app's publication."""
     cat = catalogue_for(run)
-    programs = {r.name.lower(): r.binary.replace("\\", "/").rsplit("/", 1)[-1] for r in moos.runs}
+    programs = {r.name.lower(): r.program for r in moos.runs}
     found: list[ConfiguredPublication] = []
     for block in moos.blocks:
         app = cat.app(programs.get(block.lname, block.name))
@@ -410,7 +410,7 @@ class _Builder:
         for run in m.moos.runs:
             if not run.name or has_macro(run.name) or has_macro(run.binary):
                 continue
-            binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1].strip()
+            binary = run.program.strip()
             if run.name.lower() in seen:
                 continue
             seen.add(run.name.lower())

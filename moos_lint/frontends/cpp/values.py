@@ -1370,8 +1370,9 @@ def _out_param(fn: Any, index: int) -> tuple[str, bool] | None:
     return (text(d), pointer) if d is not None else None
 
 
-def _pointer_writes(fn: Any, pname: str) -> list[Any]:
-    """Right sides of ``*p = x`` and ``p[0] = x`` in ``fn``."""
+def _assignments(fn: Any) -> list[Any]:
+    """The plain ``x = y`` assignments in ``fn``'s own body (not in a lambda or a nested
+    function or class), in source order."""
     out = []
     body = fn.child_by_field_name("body")
     stack = [body] if body is not None else []
@@ -1380,46 +1381,42 @@ def _pointer_writes(fn: Any, pname: str) -> list[Any]:
         if x.type in ("lambda_expression", "function_definition", "class_specifier"):
             continue
         if x.type == "assignment_expression" and text(x.child_by_field_name("operator")) == "=":
-            left = strip(x.child_by_field_name("left"))
-            target = None
-            if (
-                left is not None
-                and left.type == "pointer_expression"
-                and text(left).startswith("*")
-            ):
-                target = strip(left.child_by_field_name("argument"))
-            elif left is not None and left.type == "subscript_expression":
-                idx = left.child_by_field_name("indices") or left.child_by_field_name("index")
-                if idx is not None and text(idx).strip("[] ") == "0":
-                    target = strip(left.child_by_field_name("argument"))
-            if target is not None and target.type == "identifier" and text(target) == pname:
-                out.append(x.child_by_field_name("right"))
+            out.append(x)
         stack.extend(x.named_children)
-    out.sort(key=lambda r: r.start_byte)
+    out.sort(key=lambda a: a.start_byte)
+    return out
+
+
+def _pointer_writes(fn: Any, pname: str) -> list[Any]:
+    """Right sides of ``*p = x`` and ``p[0] = x`` in ``fn``."""
+    out = []
+    for x in _assignments(fn):
+        left = strip(x.child_by_field_name("left"))
+        target = None
+        if left is not None and left.type == "pointer_expression" and text(left).startswith("*"):
+            target = strip(left.child_by_field_name("argument"))
+        elif left is not None and left.type == "subscript_expression":
+            idx = left.child_by_field_name("indices") or left.child_by_field_name("index")
+            if idx is not None and text(idx).strip("[] ") == "0":
+                target = strip(left.child_by_field_name("argument"))
+        if target is not None and target.type == "identifier" and text(target) == pname:
+            out.append(x.child_by_field_name("right"))
     return out
 
 
 def _param_field_writes(fn: Any, pname: str, field: str) -> list[tuple[Any, Any]]:
     """``(assignment, right side)`` of ``pname->field = x`` and ``pname.field = x`` in ``fn``."""
     out = []
-    body = fn.child_by_field_name("body")
-    stack = [body] if body is not None else []
-    while stack:
-        x = stack.pop()
-        if x.type in ("lambda_expression", "function_definition", "class_specifier"):
+    for x in _assignments(fn):
+        left = strip(x.child_by_field_name("left"))
+        if left is None or left.type != "field_expression":
             continue
-        if x.type == "assignment_expression" and text(x.child_by_field_name("operator")) == "=":
-            left = strip(x.child_by_field_name("left"))
-            if left is not None and left.type == "field_expression":
-                obj = strip(left.child_by_field_name("argument"))
-                if obj is not None and obj.type == "pointer_expression":
-                    obj = strip(obj.child_by_field_name("argument"))  # ``(*p).yaw``
-                named = text(left.child_by_field_name("field"))
-                ours = obj is not None and obj.type == "identifier" and text(obj) == pname
-                if ours and named == field:
-                    out.append((x, x.child_by_field_name("right")))
-        stack.extend(x.named_children)
-    out.sort(key=lambda w: w[0].start_byte)
+        obj = strip(left.child_by_field_name("argument"))
+        if obj is not None and obj.type == "pointer_expression":
+            obj = strip(obj.child_by_field_name("argument"))  # ``(*p).yaw``
+        ours = obj is not None and obj.type == "identifier" and text(obj) == pname
+        if ours and text(left.child_by_field_name("field")) == field:
+            out.append((x, x.child_by_field_name("right")))
     return out
 
 

@@ -154,6 +154,11 @@ class RunLine:
             return self.alias_from_params
         if self.alias:
             return self.alias
+        return self.program
+
+    @property
+    def program(self) -> str:
+        """The program pAntler starts, without its folder."""
         return self.binary.replace("\\", "/").rsplit("/", 1)[-1]
 
     @property

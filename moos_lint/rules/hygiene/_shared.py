@@ -81,10 +81,5 @@ def names_match(a: str, b: str) -> bool:
     return bool(has_macro(b) and _pattern(b).fullmatch(a))
 
 
-def app_of(binary: str) -> str:
-    """The program a Run line starts, without its folder."""
-    return binary.replace("\\", "/").rsplit("/", 1)[-1]
-
-
 def where(line: Line) -> str:
     return f"{os.path.basename(line.path)}:{line.lineno}"

@@ -55,7 +55,7 @@ import os
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import find_relative, launch_folders, made_by_scripts, project_folder
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import app_of, exclusive, names_match
+from moos_lint.rules.hygiene._shared import exclusive, names_match
 from moos_lint.rules.kit.declare import Scope, rule
 
 FILE_PARAMS = ["pHelmIvP:behaviors", "uFldObstacleSim:obstacle_file"]
@@ -92,7 +92,7 @@ def check(ctx):
     folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
     seen: set[int] = set()
     for run in ctx.moos.runs:
-        keys = wanted.get(app_of(run.binary).lower())
+        keys = wanted.get(run.program.lower())
         if not keys or not run.name or has_macro(run.name):
             continue
         for block in ctx.moos.blocks:

@@ -61,7 +61,7 @@ a match: in the branch that launches the process, the block is missing.
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import app_of, exclusive, names_match
+from moos_lint.rules.hygiene._shared import exclusive, names_match
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.semantics.catalogue import catalogue_for
 
@@ -98,7 +98,7 @@ def check(ctx):
             continue
         if not run.has_at and "~" in run.param.value:
             continue  # not a program pAntler can start: run-alias-without-at
-        program = app_of(run.binary)
+        program = run.program
         if exempt is not None:
             if program.lower() in exempt:
                 continue

@@ -170,7 +170,7 @@ def check(ctx):
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
     globals_known += sorted(_repo_globals(ctx.run))
     if any(b.text_format for b in moos.blocks) or any(
-        text_format_app(r.binary.replace("\\", "/").rsplit("/", 1)[-1]) for r in moos.runs
+        text_format_app(r.program) for r in moos.runs
     ):
         # goby's apps also read some top-of-file keys (`log_path`, `modem_id`)
         globals_known += list(text_format_schema().moos_globals)

@@ -89,14 +89,21 @@ from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_f
 _FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
 
 
+def _programs(moos) -> dict[str, str]:
+    """Lower-case block name -> the program the mission starts to read it (a script's
+    block is the script's, not the block's namesake app's)."""
+    out: dict[str, str] = {}
+    for run in moos.runs:
+        if run.name and not has_macro(run.name):
+            for name in run.block_names:
+                out.setdefault(name.lower(), run.program)
+    return out
+
+
 def block_apps(ctx):
     """(block, AppInfo) for each ProcessConfig block of an app the catalogue knows."""
     cat = catalogue_for(ctx.run)
-    aliases: dict[str, str] = {}
-    for run in ctx.moos.runs:
-        if run.name and not has_macro(run.name):
-            for name in run.block_names:  # (a script's block is the script's, not an app's)
-                aliases.setdefault(name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    aliases = _programs(ctx.moos)
     scripts = scripts_beside(ctx.path)
     for block in ctx.moos.blocks:
         if block.lname == "antler" or has_macro(block.name):
@@ -110,11 +117,7 @@ def block_apps(ctx):
 
 def text_blocks(ctx):
     """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
-    aliases: dict[str, str] = {}
-    for run in ctx.moos.runs:
-        if run.name and not has_macro(run.name):
-            for name in run.block_names:  # (a script's block is the script's, not an app's)
-                aliases.setdefault(name.lower(), run.binary.replace("\\", "/").rsplit("/", 1)[-1])
+    aliases = _programs(ctx.moos)
     for block in ctx.moos.blocks:
         if not block.text_format or has_macro(block.name):
             continue

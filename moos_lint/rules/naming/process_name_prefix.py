@@ -102,7 +102,7 @@ def check(ctx):
     launched: set[str] = set()
     aliases: set[str] = set()
     for run in ctx.moos.runs:
-        program = run.binary.replace("\\", "/").rsplit("/", 1)[-1]
+        program = run.program
         launched.add(run.name.lower())
         if program and not has_macro(program) and not conforms(program, exempt):
             yield ctx.report(

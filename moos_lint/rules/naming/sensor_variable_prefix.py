@@ -95,9 +95,7 @@ def check(ctx):
     if ctx.unit.kind is Kind.CPP:
         yield from _cpp(ctx, cats, good)
         return
-    programs = {
-        r.name.lower(): r.binary.replace("\\", "/").rsplit("/", 1)[-1] for r in ctx.moos.runs
-    }
+    programs = {r.name.lower(): r.program for r in ctx.moos.runs}
     from moos_lint.semantics.mission_model import configured_publications
 
     configured: dict[str, list] = {}

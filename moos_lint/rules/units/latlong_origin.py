@@ -192,7 +192,7 @@ def _missing(ctx, lats, lons):
     wanted = None if given is None else {str(name).lower() for name in given}
     cat = catalogue_for(ctx.run)
     for run in ctx.moos.runs:
-        binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1]
+        binary = run.program
         if has_macro(binary):
             continue
         if wanted is not None:

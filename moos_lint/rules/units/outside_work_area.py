@@ -78,7 +78,7 @@ def _app_names(moos) -> dict[str, str]:
     """Block name (lower case) -> the binary launched under that name."""
     out: dict[str, str] = {}
     for run in moos.runs:
-        binary = run.binary.replace("\\", "/").rsplit("/", 1)[-1]
+        binary = run.program
         out[run.name.lower()] = binary.lower()
     return out
 
