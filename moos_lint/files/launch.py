@@ -1,4 +1,4 @@
-"""The folders a mission may be launched from.
+"""The folders a mission may be launched from, and what the scripts beside it say.
 
 pAntler, the helm and every MOOS app open relative paths (``behaviors =
 targs/targ_abe.bhv``, ``obstacle_file = ...``) from the folder they were started
@@ -154,14 +154,14 @@ _REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
 _RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
 
 
-def made_by_scripts(folder: str) -> frozenset[str]:
-    """The names of the files the folder's shell scripts write (``> obstacles.txt``) or
-    clean away (``rm -f obstacles.txt``): files that a launch makes, absent at rest.
-    The scripts are read as text, never run."""
+def shell_scripts(folder: str) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each shell script (``*.sh``) of ``folder``, by name: read as
+    text, never run, and kept while every script keeps its (mtime, size) (the language
+    server asks again at each edit of a mission of the folder)."""
     try:
         names = sorted(n for n in os.listdir(folder) if n.endswith(".sh"))
     except OSError:
-        return frozenset()
+        return ()
     stamps = []
     for n in names:
         path = os.path.join(folder, n)
@@ -170,18 +170,31 @@ def made_by_scripts(folder: str) -> frozenset[str]:
         except OSError:
             continue
         stamps.append((path, st.st_mtime_ns, st.st_size))
-    return _made_by(tuple(stamps))
+    return _read_scripts(tuple(stamps))
 
 
 @functools.lru_cache(maxsize=256)
-def _made_by(scripts: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
-    out: set[str] = set()
-    for path, _mtime, _size in scripts:
+def _read_scripts(stamps: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, str], ...]:
+    out = []
+    for path, _mtime, _size in stamps:
         try:
             with open(path, "rb") as fh:
-                text = fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")
+                out.append((path, fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")))
         except OSError:
             continue
+    return tuple(out)
+
+
+def made_by_scripts(folder: str) -> frozenset[str]:
+    """The names of the files the folder's shell scripts write (``> obstacles.txt``) or
+    clean away (``rm -f obstacles.txt``): files that a launch makes, absent at rest."""
+    return _made_by(shell_scripts(folder))
+
+
+@functools.lru_cache(maxsize=256)
+def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
+    out: set[str] = set()
+    for _path, text in scripts:
         for line in text.splitlines():
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))

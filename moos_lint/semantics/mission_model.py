@@ -35,6 +35,7 @@ pairs that a ``uPokeDB`` command in a shell script beside the mission posts.
 
 from __future__ import annotations
 
+import functools
 import glob
 import os
 import re
@@ -44,8 +45,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from moos_lint.files.diagnostics import Span
-from moos_lint.files.launch import launch_folders, project_folder
-from moos_lint.files.stamps import file_stamp
+from moos_lint.files.launch import launch_folders, project_folder, shell_scripts
 from moos_lint.frontends.nsplug import Expansion, Line, derived, parsed
 from moos_lint.frontends.parsers.bhv import parse_bhv
 from moos_lint.frontends.parsers.moos import parse_moos
@@ -235,34 +235,18 @@ def behavior_paths(value: str, folder: str, *parents: str) -> tuple[list[str], b
 
 
 def _pokes(folder: str) -> dict[str, str]:
-    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``.
+    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``."""
+    return _poked(shell_scripts(folder))
 
-    Kept while the scripts keep their (mtime, size): the language server asks
-    again at every edit of a mission of the folder.
-    """
-    scripts = sorted(glob.glob(os.path.join(glob.escape(folder), "*.sh")))
-    stamp = tuple((s, file_stamp(s)) for s in scripts)
-    kept = _POKES_SEEN.get(folder)
-    if kept is not None and kept[0] == stamp:
-        return kept[1]
+
+@functools.lru_cache(maxsize=256)
+def _poked(scripts: tuple[tuple[str, str], ...]) -> dict[str, str]:
     out: dict[str, str] = {}
-    for script in scripts:
-        try:
-            with open(script, encoding="utf-8", errors="replace") as fh:
-                text = fh.read(200_000)
-        except OSError:
-            continue
+    for script, text in scripts:
         for m in _POKE.finditer(text):
             for pair in _PAIR.finditer(m.group(1)):
                 out.setdefault(pair.group(1), os.path.basename(script))
-    if len(_POKES_SEEN) > 256:
-        _POKES_SEEN.clear()
-    _POKES_SEEN[folder] = (stamp, out)
     return out
-
-
-#: folder -> (each script's (mtime, size), what its scripts poke)
-_POKES_SEEN: dict[str, tuple[tuple, dict[str, str]]] = {}
 
 
 _CONFIG_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
