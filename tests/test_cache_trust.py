@@ -86,7 +86,7 @@ class World:
         return proc
 
     def entries(self) -> list[Path]:
-        return sorted(p for p in self.cache.rglob("*.json"))
+        return sorted(p for p in self.cache.rglob("*") if p.suffix in (".json", ".rec"))
 
 
 @pytest.fixture
@@ -188,7 +188,7 @@ def test_a_crafted_replay_entry_forges_no_report_and_writes_no_file(world, monke
         "status": 0,
     }
     with_file = dict(forged, output_file=str(victim))
-    body = json.dumps(forged).encode()
+    body = replay.encode(**forged)
     attempts = [
         body,  # not sealed
         seal(os.urandom(32), name, body),  # sealed under a key of the attacker's

@@ -12,9 +12,10 @@ pytest.importorskip("lsprotocol")
 from lsprotocol import types as lsp
 
 from moos_lint.commands.lsp import features
-from moos_lint.commands.lsp.analysis import analyse, settings_for
+from moos_lint.commands.lsp.analysis import Collector, _may_include, analyse, settings_for
 from moos_lint.commands.lsp.catalogue import Catalogue, Component, ParamInfo, from_app_catalogue
 from moos_lint.commands.lsp.documents import (
+    DiskReads,
     DocumentStore,
     memory_reader,
     path_to_uri,
@@ -183,6 +184,79 @@ def test_memory_reader_prefers_editor_text_but_keeps_disk_facts(tmp_path: Path):
     edited = memory_reader({str(f): "name = cafe\n"})(f)
     assert edited.text == "name = cafe\n" and edited.encoding == "utf-8"
     assert seen == {str(f)}
+
+
+def test_disk_reads_are_kept_only_while_the_file_is_unchanged(tmp_path: Path):
+    import os
+
+    f = tmp_path / "plug.moos"
+    f.write_text("a = 1\n")
+    disk = DiskReads(size=2)
+    first = disk.read(f)
+    assert isinstance(first, SourceFile) and disk.read(f) is first  # unchanged: kept
+    st = f.stat()
+    f.write_text("a = 2\n")  # same size, and the mtime put back: the ctime still moves
+    os.utime(f, ns=(st.st_atime_ns, st.st_mtime_ns))
+    again = disk.read(f)
+    assert again is not first and again.text == "a = 2\n"
+    for name in ("b.moos", "c.moos"):  # the oldest read leaves when the size is reached
+        (tmp_path / name).write_text("x\n")
+        disk.read(tmp_path / name)
+    assert disk.read(f) is not again
+    f.unlink()  # a file gone is a read problem, as the engine reports it
+    assert not isinstance(disk.read(f), SourceFile)
+
+
+@pytest.mark.parametrize(
+    ("text", "may"),
+    [
+        ("#include plug.moos\n", True),
+        ("  #include <plug.moos> // the vehicle\n", True),
+        ("#include $(PLUG)\n", True),  # a macro may name it
+        ("#include %(PLUG)\n", True),
+        ("#include other.moos\n", False),
+        ("// #include plug.moos\n", False),  # not a directive
+        ("x = 1\r#include plug.moos\r", True),  # old Mac line ends
+        ("#include other.moos\nname = plug.moos\n", False),
+        ("", False),
+    ],
+)
+def test_a_neighbour_is_linted_with_a_mission_file_only_when_it_may_include_it(
+    tmp_path: Path, text: str, may: bool
+):
+    f = tmp_path / "mission.moos"
+    f.write_text(text)
+    assert _may_include(str(f), "plug.moos") is may
+
+
+def test_unreadable_neighbours_are_kept(tmp_path: Path):
+    assert _may_include(str(tmp_path / "gone.moos"), "plug.moos") is True
+
+
+def test_the_collector_waits_for_every_running_lint():
+    import gc
+
+    collector = Collector()
+    assert gc.isenabled()
+    try:
+        with collector.linting():
+            assert not gc.isenabled()
+            with collector.linting():  # a second document's lint, on another thread
+                assert not collector.idle()
+            assert not gc.isenabled() and not collector.idle()
+
+        class Node:
+            pass
+
+        a, b = Node(), Node()
+        a.other, b.other = b, a
+        gone = __import__("weakref").ref(a)
+        del a, b
+        assert gone() is not None  # a cycle: reference counting does not free it
+        assert collector.idle() and gc.isenabled()
+        assert gone() is None
+    finally:
+        gc.enable()
 
 
 def test_uris_and_store():

@@ -161,6 +161,18 @@ def _model(path: Path):
     return model_of(run, unit.path, unit.moos)
 
 
+def test_a_missions_whole_model_is_let_go_once_its_rules_ran():
+    path = FIXTURES / "unpublished-subscription" / "quiet" / "meta_vehicle.moos"
+    run = LintRun(Settings(root=str(path.parent)), select_rules(["M005"], [], []))
+    unit = run.build_unit(str(path))
+    run.units.append(unit)
+    model = model_of(run, unit.path, unit.moos)
+    assert model_of(run, unit.path, unit.moos) is model  # once per run, while its rules run
+    run.run_rules(unit)
+    assert run.memos.mission_models == {}  # only its own rules read it
+    assert os.path.normpath(str(path)) in run.memos.mission_cores  # the siblings' share stays
+
+
 def test_model_joins_processes_behaviors_and_siblings():
     m = _model(FIXTURES / "unpublished-subscription" / "quiet" / "meta_vehicle.moos")
     assert [p.name for p in m.processes][:3] == ["MOOSDB", "uSimMarineV22", "pHelmIvP"]

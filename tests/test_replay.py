@@ -22,8 +22,10 @@ from moos_lint.core import engine
 from moos_lint.speed import replay
 from tests.test_performance import BEHAVIORS, MISSION, PLUG
 
-#: modules the replay must not load (json and the built-in SHA-256 it may)
+#: modules the replay must not load (the built-in SHA-256 it may)
 HEAVY = (
+    "json",
+    "re",
     "argparse",
     "pathlib",
     "pickle",
@@ -50,7 +52,7 @@ def tree(tmp_path, monkeypatch):
 
 
 def replay_entries(tree: Path) -> list[Path]:
-    return list((tree.parent / "user-cache" / "moos-lint" / "replay").glob("replay-*.json"))
+    return list((tree.parent / "user-cache" / "moos-lint" / "replay").glob("replay-*.rec"))
 
 
 def _run(argv: list[str], capsys) -> tuple[int, str]:
@@ -191,18 +193,26 @@ def test_a_corrupt_unsealed_or_misshapen_entry_is_a_miss(tree, capsys):
     data = entry.read_bytes()
     head, _, body = data.partition(b"\n")
     key = user_key(create=False)
-    misshapen = json.loads(body)
-    misshapen["status"] = "0"
+    fields = body.split(b"\0")
+    assert fields[1] == b"1"  # the status
+    misshapen = [
+        b"\0".join([fields[0], b"2", *fields[2:]]),  # a status the run never gives
+        b"\0".join([*fields[:2], b"-1", *fields[3:]]),  # a negative count
+        b"\0".join([*fields[:2], b"x", *fields[3:]]),  # a count that is no number
+        b"\0".join(fields[:-3] + fields[-1:]),  # a stamp short
+        b"\0".join([b"[]", *fields[1:]]),  # another identity
+        json.dumps({"identity": [], "files": [], "text": "R0", "status": 1}).encode(),
+        b"[1, 2]",
+    ]
     for broken in (
         b"",
         data[: len(data) // 2],
-        b"not json",
+        b"not an entry",
         b"\xe9\x00",
-        body,  # the JSON without its seal
+        body,  # the entry without its seal
         head + b"\n" + body.replace(b"R0", b"X0"),  # text changed after sealing
         seal(b"k" * 32, entry.name, body),  # sealed under another key
-        seal(key, entry.name, json.dumps(misshapen).encode()),  # sealed, but not the layout
-        seal(key, entry.name, b"[1, 2]"),
+        *(seal(key, entry.name, m) for m in misshapen),  # sealed, but not the layout
     ):
         entry.write_bytes(broken)
         assert _replayed(argv, capsys) is None
@@ -234,12 +244,12 @@ def test_the_entry_is_found_from_the_cache_dir_option_and_the_environment(
     store = tmp_path / "store"
     argv = ["check", ".", "--cache-dir", str(store)]
     before = _run(argv, capsys)
-    assert list(store.glob("replay-*.json"))
+    assert list(store.glob("replay-*.rec"))
     assert _replayed(argv, capsys) == before
     monkeypatch.setenv("MOOS_LINT_CACHE_DIR", str(tmp_path / "env-store"))
     argv = ["check", "."]
     before = _run(argv, capsys)
-    assert list(Path(tmp_path / "env-store").glob("replay-*.json"))
+    assert list(Path(tmp_path / "env-store").glob("replay-*.rec"))
     assert _replayed(argv, capsys) == before
 
 

@@ -233,6 +233,7 @@ class LintRun:
             except Exception as exc:  # a rule bug must not stop the run
                 errors += 1
                 out.append(internal_error(unit.path, f"in rule {r.code} ({r.name})", exc))
+        self.memos.checked(unit.path)
         return out, errors
 
 

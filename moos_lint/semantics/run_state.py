@@ -16,6 +16,7 @@ so that none of them imports the engine.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -49,6 +50,14 @@ class RunMemos:
     repo_cpp_stems: frozenset[str] | None = None
     #: top-of-file keys the run's own C++ apps read with ``GetValue``
     repo_globals: frozenset[str] | None = None
+
+    def checked(self, path: str) -> None:
+        """The rules are done with the unit at ``path``: drop what only its rules read.
+
+        A mission's whole model is read only by the rules of that mission; its
+        core stays (the models of the missions beside it are made from it).
+        """
+        self.mission_models.pop(os.path.normpath(os.path.abspath(path)), None)
 
 
 class RunView(Protocol):

@@ -1,12 +1,12 @@
 """The files of moos-lint's caches: where they live, and how each entry is sealed.
 
 Both caches (the result cache, :mod:`moos_lint.speed.cache`, and the replay of an
-unchanged run, :mod:`moos_lint.speed.replay`) keep their entries as JSON text:
-data that no loader turns into code. Each entry is also sealed with an
-HMAC-SHA256 under a key that belongs to the user and lives outside every
-repository, so an entry that a repository brings along (committed into a
-cache folder, or crafted in one it can write) is never believed: it is a
-cache miss, like a corrupt, partial or old entry.
+unchanged run, :mod:`moos_lint.speed.replay`) keep their entries as text (JSON,
+and the replay's NUL-separated fields): data that no loader turns into code.
+Each entry is also sealed with an HMAC-SHA256 under a key that belongs to
+the user and lives outside every repository, so an entry that a repository
+brings along (committed into a cache folder, or crafted in one it can write)
+is never believed: it is a cache miss, like a corrupt, partial or old entry.
 
 **Where the caches live.**
 
@@ -28,7 +28,7 @@ with mode 0600 on first use. A key file that is not a regular file owned by
 the user and private to them is never used, and then neither is any cache.
 
 **An entry file** is one line ``moos-lint-entry VERSION MAC`` followed by the
-JSON text; MAC is the HMAC-SHA256 of the file's name, a NUL and the text. A
+entry's text; MAC is the HMAC-SHA256 of the file's name, a NUL and the text. A
 file that git tracks is never read (its name is looked up in the checkout's
 index, :mod:`moos_lint.files.gitindex`), nor written.
 
@@ -319,7 +319,7 @@ def prune(folder: str, keep: int = KEEP) -> None:
         return
     for name in names:
         kind = name.split("-", 1)[0]
-        if kind in KINDS and name.endswith(".json"):
+        if kind in KINDS and name.endswith((".json", ".rec")):
             try:
                 mtime = os.stat(os.path.join(folder, name)).st_mtime_ns
             except OSError:

@@ -36,13 +36,15 @@ work itself, so a run never waits forever.
 from __future__ import annotations
 
 import contextlib
-import multiprocessing
 import os
 import sys
 import threading
 from collections.abc import Iterator
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import TYPE_CHECKING, Any
+
+# ``multiprocessing`` and ``concurrent.futures`` (with the sockets, pickling, logging and
+# temporary files they load: a tenth of a mission run's start) are imported only
+# when workers start.
 
 if TYPE_CHECKING:  # the engine starts the workers: this module does not import it
     from moos_lint.commands.progress import Progress
@@ -77,7 +79,7 @@ def busy_cpus() -> int:
 
 
 def can_fork() -> bool:
-    return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
+    return sys.platform.startswith("linux") and hasattr(os, "fork")
 
 
 def effective_jobs(jobs: int | None, n_files: int) -> int:
@@ -94,6 +96,9 @@ def effective_jobs(jobs: int | None, n_files: int) -> int:
 def pool(jobs: int) -> Any:
     """Forked workers. A worker that dies (a crash in a parser) breaks the pool, which the
     callers notice: the work is then done in this process, never waited for forever."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
     return ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork"))
 
 
@@ -145,6 +150,8 @@ def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
 def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
     """The results; the folders no worker has started yet are taken here, smallest first,
     so that this process (done with the missions) shares the tail of the work."""
+    from concurrent.futures import as_completed
+
     try:
         for i in range(len(futures) - 1, -1, -1):
             if not futures[i].cancel():  # a worker has it (or had it)
@@ -219,6 +226,8 @@ def run_rules_parallel(
     _REPORTED.clear()
     _REPORTED.update(run.cache.paths())
     workers = pool(jobs)
+    from concurrent.futures import as_completed
+
     from moos_lint.files.source import merge_journal
 
     try:

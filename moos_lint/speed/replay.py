@@ -10,12 +10,22 @@ entry*: the exact command line, working folder and environment it answered,
 the (mtime, size) of every file it depends on and the mtime of every folder
 whose listing it depends on, and the text and exit status. The next
 identical command checks those with ``os.stat`` and prints the text; it
-imports only ``json`` and the built-in SHA-256.
+imports only the built-in SHA-256 (not even ``json``, whose import alone, with
+the ``re`` and ``enum`` it pulls in, costs a third of a warm run).
 
-**Trust.** A replay entry is JSON data sealed with an HMAC-SHA256 under the
+**Trust.** A replay entry is plain text sealed with an HMAC-SHA256 under the
 user's key (:mod:`moos_lint.speed.cache_files`); an entry that is not sealed under
 that key, that git tracks, or that is not laid out as this version writes
-it is ignored, and the normal run decides. The report goes where the
+it is ignored, and the normal run decides. No loader turns the text into
+anything but strings: fields separated by NUL (which no path holds),
+
+    repr(identity) NUL status NUL #files NUL #folders NUL #presences
+    (NUL path NUL "mtime size" or "-")...      every file, or "-" for absent
+    (NUL path NUL "mtime" or "-")...           every folder
+    (NUL path NUL "1" or "0")...               every presence
+    NUL text                                   the report (it may hold NULs)
+
+and the identity is compared as the ``repr`` of the one this run computes. The report goes where the
 command line sends it: to stdout, or to the file ``-o``/``--output-file``
 names on that command line; an entry names no file.
 
@@ -49,11 +59,11 @@ import sys
 import moos_lint
 from moos_lint import __version__
 from moos_lint.files.markers import CONFIG_FILES, VCS_MARKERS
-from moos_lint.files.stamps import file_stamp, folder_mtime, package_stamps
+from moos_lint.files.stamps import file_stamp, package_stamps
 from moos_lint.speed.cache_files import ENV_VAR, Folder, open_folder, prune, replay_folder
 
 #: bump when the entry layout changes
-FORMAT = 2
+FORMAT = 3
 #: the environment variables a check run reads
 ENV = (
     "GITHUB_ACTIONS",
@@ -67,7 +77,8 @@ ENV = (
 _PACKAGE = os.path.dirname(os.path.abspath(moos_lint.__file__))
 #: replay entries kept in a folder (every project's share the user's replay folder)
 KEEP = 64
-_KEYS = {"identity", "files", "dirs", "exist", "text", "status"}
+#: the fields before the stamps: identity, status and the three counts
+_HEAD = 5
 
 
 def identity(argv: list[str]) -> list:
@@ -89,7 +100,7 @@ def entry_name(argv: list[str]) -> str:
     from moos_lint.speed.cache_files import _sha256
 
     data = "\0".join([os.getcwd(), *argv]).encode("utf-8", "surrogatepass")
-    return f"replay-{_sha256(data).hexdigest()[:32]}.json"
+    return f"replay-{_sha256(data).hexdigest()[:32]}.rec"
 
 
 def _folder_path(argv: list[str]) -> str | None:
@@ -154,56 +165,102 @@ def replay(argv: list[str]) -> int | None:
         if entry is None or not _holds(entry, argv):
             return None
         if target is None:
-            sys.stdout.write(entry["text"])
+            sys.stdout.write(entry.text)
         else:  # written as the normal run writes it
             with open(target, "w", encoding="utf-8") as fh:
-                fh.write(entry["text"])
-        return entry["status"]
+                fh.write(entry.text)
+        return entry.status
     except Exception:  # a corrupt or foreign entry, an unclear command line: the normal run
         return None
 
 
-def _entry(folder: Folder, argv: list[str]) -> dict | None:
+def encode(
+    identity: list,
+    files: list[tuple[str, tuple[int, int] | None]],
+    dirs: list[tuple[str, int | None]],
+    exist: list[tuple[str, bool]],
+    text: str,
+    status: int,
+) -> bytes:
+    """An entry's body, laid out as the module's docstring says."""
+    fields = [repr(identity), str(status), str(len(files)), str(len(dirs)), str(len(exist))]
+    for path, stamp in files:
+        fields += (path, "-" if stamp is None else f"{stamp[0]} {stamp[1]}")
+    for path, mtime in dirs:
+        fields += (path, "-" if mtime is None else str(mtime))
+    for path, there in exist:
+        fields += (path, "1" if there else "0")
+    fields.append(text)
+    return "\0".join(fields).encode("utf-8", "surrogatepass")
+
+
+class _Entry:
+    """A decoded entry: its paths and stamps still the bytes the file holds (``os.stat``
+    takes bytes paths, and the stamps are compared as the text they are written as)."""
+
+    __slots__ = ("counts", "fields", "identity", "status", "text")
+
+    def __init__(self, identity: bytes, status: int, fields: list, counts: tuple, text: str):
+        self.identity = identity
+        self.status = status
+        self.fields = fields
+        self.counts = counts
+        self.text = text
+
+
+def _entry(folder: Folder, argv: list[str]) -> _Entry | None:
     """The sealed entry for ``argv``, when it has the layout this version writes."""
     body = folder.read(entry_name(argv))
     if body is None:
         return None
-    import json
-
-    entry = json.loads(body)
-    if not isinstance(entry, dict) or set(entry) != _KEYS:
+    head = body.split(b"\0", _HEAD)
+    if len(head) != _HEAD + 1 or head[1] not in (b"0", b"1"):
         return None
-    ok = (
-        isinstance(entry["text"], str)
-        and entry["status"] in (0, 1)
-        and type(entry["status"]) is int
-        and all(isinstance(entry[k], list) for k in ("files", "dirs", "exist"))
-    )
-    return entry if ok else None
+    counts = tuple(int(n) for n in head[2:_HEAD])  # (ValueError: a miss, as any exception)
+    if min(counts) < 0:
+        return None
+    stamps = 2 * sum(counts)
+    fields = head[_HEAD].split(b"\0", stamps) if stamps else [head[_HEAD]]
+    if len(fields) != stamps + 1:
+        return None
+    text = fields.pop().decode("utf-8", "surrogatepass")
+    return _Entry(head[0], int(head[1]), fields, counts, text)
 
 
-def _holds(entry: dict, argv: list[str]) -> bool:
-    """Whether every file, folder and presence the entry records is as it was (a value
-    of the wrong type never compares equal)."""
-    if entry["identity"] != identity(argv):
+def _holds(entry: _Entry, argv: list[str]) -> bool:
+    """Whether every file, folder and presence the entry records is as it was."""
+    if entry.identity != repr(identity(argv)).encode("utf-8", "surrogatepass"):
         return False
+    fields = entry.fields
+    nfiles, ndirs, nexist = entry.counts
     stat = os.stat  # (``file_stamp``, inlined: this loop runs over thousands of files)
-    for path, want in entry["files"]:
+    end = 2 * nfiles
+    for i in range(0, end, 2):
+        want = fields[i + 1]
         try:
-            st = stat(path)
+            st = stat(fields[i])
         except OSError:
-            if want is not None:
+            if want != b"-":
                 return False
             continue
-        if want is None or st.st_mtime_ns != want[0] or st.st_size != want[1]:
+        if want != b"%d %d" % (st.st_mtime_ns, st.st_size):
             return False
-    for path, want in entry["dirs"]:
-        if folder_mtime(path) != want:
+    start, end = end, end + 2 * ndirs
+    for i in range(start, end, 2):
+        want = fields[i + 1]
+        try:
+            mtime = stat(fields[i]).st_mtime_ns
+        except OSError:
+            if want != b"-":
+                return False
+            continue
+        if want != b"%d" % mtime:
             return False
     exists = os.path.exists
-    return all(want is True or want is False for _, want in entry["exist"]) and all(
-        exists(path) == want for path, want in entry["exist"]
-    )
+    for i in range(end, end + 2 * nexist, 2):
+        if fields[i + 1] != (b"1" if exists(fields[i]) else b"0"):
+            return False
+    return True
 
 
 def _settings_inputs(paths: list[str]) -> tuple[dict, dict]:
@@ -251,17 +308,15 @@ def remember(
             files[os.path.abspath(p)] = file_stamp(p)
         files.update(watch["files"])
         dirs = {**own_dirs, **watch["dirs"]}
-        entry = {
-            "identity": identity(argv),
-            "files": sorted(files.items()),
-            "dirs": sorted(dirs.items()),
-            "exist": sorted(exist.items()),
-            "text": text,
-            "status": status,
-        }
-        import json
-
-        folder.write(entry_name(argv), json.dumps(entry).encode())
+        body = encode(
+            identity(argv),
+            sorted(files.items()),
+            sorted(dirs.items()),
+            sorted(exist.items()),
+            text,
+            status,
+        )
+        folder.write(entry_name(argv), body)
         prune(folder.path, KEEP)
     except Exception:
         return

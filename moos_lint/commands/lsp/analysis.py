@@ -10,18 +10,21 @@ shown on the ``#include`` line that pulls it in.
 
 from __future__ import annotations
 
+import gc
 import os
-from collections.abc import Callable, Sequence
+import threading
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from moos_lint.commands.lsp.documents import memory_reader, norm
+from moos_lint.commands.lsp.documents import DiskReads, memory_reader, norm
 from moos_lint.core.config import ConfigError, Settings, resolve_settings
 from moos_lint.core.engine import Unit, lint_files
 from moos_lint.files.diagnostics import Diagnostic, IncludeSite, Span
 from moos_lint.files.discovery import DEFAULT_EXCLUDE, _excluded, kind_of
 from moos_lint.files.project import project_root
-from moos_lint.files.source import read_bytes
+from moos_lint.files.source import SourceFile
 from moos_lint.frontends.cpp import app as cpp_app
 from moos_lint.frontends.nsplug import ExpansionStore, FileCache
 
@@ -32,9 +35,56 @@ cpp_app.PARSE_MEMO_SIZE = 96  # a document and its neighbours (MAX_NEIGHBOURS)
 MAX_NEIGHBOURS = 64
 #: re-linting a document re-expands only the files that changed (see ExpansionStore)
 _EXPANSIONS = ExpansionStore(size=2 * MAX_NEIGHBOURS)
+#: ... and reads again only the files that changed
+_DISK = DiskReads(size=8 * MAX_NEIGHBOURS)
 
 
 _SETTLED = False
+
+
+class Collector:
+    """Cyclic garbage is collected between lints, never in the middle of one.
+
+    A re-lint leaves reference cycles behind (expansions, units and models
+    point at each other), and they survive while the lint runs, so only a full
+    collection frees them: one walk of the tens of thousands of objects that
+    a few re-lints leave, about 25 ms, landing in whichever re-lint is running
+    then. So while any lint runs (:meth:`linting`) the cyclic collector is off, as
+    it is for a whole ``moos-lint check``, and the server calls :meth:`idle` once
+    a lint's diagnostics are published: when no other lint is running, the
+    garbage is collected then, and the collector turned on again until the
+    next lint. The next edit waits the debounce anyway, so the collection
+    delays no diagnostics. Reference counting frees everything else as usual.
+    """
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._running = 0
+
+    @contextmanager
+    def linting(self) -> Iterator[None]:
+        with self._lock:
+            if self._running == 0:
+                gc.disable()
+            self._running += 1
+        try:
+            yield
+        finally:
+            with self._lock:
+                self._running -= 1
+
+    def idle(self) -> bool:
+        """Collect, when no lint is running; whether it did."""
+        with self._lock:
+            if self._running:
+                return False
+            gc.collect()
+            gc.enable()
+            return True
+
+
+#: the server's collector (one per process: the cyclic collector is)
+COLLECTOR = Collector()
 
 
 def settle() -> None:
@@ -132,17 +182,22 @@ def neighbours(path: str, settings: Settings) -> list[str]:
     return out
 
 
-def _may_include(path: str, name: bytes) -> bool:
+def _may_include(path: str, name: str) -> bool:
     """Whether the file at ``path`` may ``#include`` a file called ``name`` (by name, or
     through a macro); a file that cannot be read is kept (the engine reports it)."""
-    data = read_bytes(Path(path))
-    if not isinstance(data, bytes):
+    src = _DISK.read(Path(path))
+    if not isinstance(src, SourceFile):
         return True
-    for line in data.splitlines():
-        if line.lstrip().startswith(b"#include") and (
-            name in line or b"$(" in line or b"%(" in line
-        ):
-            return True
+    text = src.text
+    at = text.find("#include")
+    while at >= 0:
+        start = max(text.rfind("\n", 0, at), text.rfind("\r", 0, at)) + 1
+        if not text[start:at].strip():  # the directive starts its line
+            ends = [e for e in (text.find("\n", at), text.find("\r", at)) if e >= 0]
+            line = text[at : min(ends)] if ends else text[at:]
+            if name in line or "$(" in line or "%(" in line:
+                return True
+        at = text.find("#include", at + 8)
     return False
 
 
@@ -168,7 +223,7 @@ def analyse(
     nearby = neighbours(path, settings)
     if kind_of(path) == "moos":
         # only a file that includes a mission file can change what is found in it
-        name = os.path.basename(path).encode("utf-8", "surrogateescape")
+        name = os.path.basename(path)
         nearby = [p for p in nearby if p in texts or _may_include(p, name)]
     for other in [*includers, *nearby]:
         if other not in files:
@@ -185,7 +240,7 @@ def analyse(
             return True  # a C++ app reports in any of its files
         return is_bhv and unit.moos is not None and unit.moos.is_mission
 
-    reader = FileCache(reader=memory_reader(texts, seen), store=_EXPANSIONS)
+    reader = FileCache(reader=memory_reader(texts, seen, _DISK.read), store=_EXPANSIONS)
     result = lint_files(files, settings, cache=reader, checked=can_report_here, stop=stop)
     out.reads = seen | {path}
     for unit in result.units:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import os
 import threading
+from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -53,6 +54,44 @@ class Document:
     reads: set[str] = field(default_factory=set)
     #: the files its own nsplug expansion pulled in with ``#include``
     includes: set[str] = field(default_factory=set)
+
+
+class DiskReads:
+    """The files read from disk, kept while they are unchanged: a re-lint reads the
+    mission files beside a document again at every edit, and almost all of them
+    are as they were.
+
+    A kept read is served while the file's (mtime, ctime, size, inode) are those
+    taken just before it was read (any write changes the ctime, even one that
+    puts the mtime back); the file is stat'ed at each call, never trusted
+    without. Only decoded text is kept, never a read that failed.
+    """
+
+    def __init__(self, size: int = 512) -> None:
+        self.size = size
+        self._lock = threading.Lock()
+        self._kept: OrderedDict[str, tuple[tuple[int, int, int, int], SourceFile]] = OrderedDict()
+
+    def read(self, path: Path) -> SourceFile | ReadProblem:
+        key = os.fspath(path)
+        try:
+            st = os.stat(key)
+        except OSError:
+            return read_source(path)  # (the problem, as the engine reports it)
+        stamp = (st.st_mtime_ns, st.st_ctime_ns, st.st_size, st.st_ino)
+        with self._lock:
+            hit = self._kept.get(key)
+            if hit is not None and hit[0] == stamp:
+                self._kept.move_to_end(key)
+                return hit[1]
+        src = read_source(path)
+        if isinstance(src, SourceFile):
+            with self._lock:
+                self._kept[key] = (stamp, src)
+                self._kept.move_to_end(key)
+                while len(self._kept) > self.size:
+                    self._kept.popitem(last=False)
+        return src
 
 
 def memory_reader(

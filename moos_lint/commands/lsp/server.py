@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import functools
 import logging
 import os
 import threading
@@ -29,7 +28,7 @@ from pygls.protocol import LanguageServerProtocol
 
 from moos_lint import __version__
 from moos_lint.commands.lsp import features
-from moos_lint.commands.lsp.analysis import Analysis, analyse, settle
+from moos_lint.commands.lsp.analysis import COLLECTOR, Analysis, analyse, settle
 from moos_lint.commands.lsp.catalogue import EMPTY, Catalogue, default_catalogue
 from moos_lint.commands.lsp.documents import DocumentStore, uri_to_path
 from moos_lint.core.config import CONFIG_FILES
@@ -195,7 +194,10 @@ class MoosLintServer(LanguageServer):
             def stop() -> bool:
                 return stopped.is_set() or time.monotonic() > deadline
 
-            work = functools.partial(analyse, path, texts, includers, stop=stop)
+            def work() -> Analysis:
+                with COLLECTOR.linting():
+                    return analyse(path, texts, includers, stop=stop)
+
             try:
                 result = await loop.run_in_executor(self.executor, work)
             except LintStopped:
@@ -225,6 +227,8 @@ class MoosLintServer(LanguageServer):
             self._stops.pop(path, None)
             if path in self._again:
                 self.schedule(path, 0.0, self._again.pop(path))
+            elif not self._running:
+                COLLECTOR.idle()  # (the diagnostics are out: see Collector)
 
     def _over_budget(self, path: str, version: int | None) -> None:
         """Tell the editor the document was not linted: it took longer than the budget."""

@@ -146,20 +146,15 @@ class RunLine:
     options: dict[str, str]
     alias: str | None
     alias_from_params: str | None = None  # ``--alias=`` given through ExtraProcessParams
+    #: the program pAntler starts, without its folder
+    program: str = field(init=False)
+    #: the MOOS name the process connects as, and the block it reads
+    name: str = field(init=False)
 
-    @property
-    def name(self) -> str:
-        """The MOOS name the process connects as, and the block it reads."""
-        if self.alias_from_params:
-            return self.alias_from_params
-        if self.alias:
-            return self.alias
-        return self.program
-
-    @property
-    def program(self) -> str:
-        """The program pAntler starts, without its folder."""
-        return self.binary.replace("\\", "/").rsplit("/", 1)[-1]
+    def __post_init__(self) -> None:
+        # (read at every turn by the rules and the models: worked out once)
+        self.program = self.binary.replace("\\", "/").rsplit("/", 1)[-1]
+        self.name = self.alias_from_params or self.alias or self.program
 
     @property
     def script_block(self) -> str | None:
@@ -276,7 +271,7 @@ def parse_run(param: Param, block: Block) -> RunLine:
             options[_squeeze(k).lower()] = _squeeze(v)
     alias = _squeeze(alias_text.split(",", 1)[0]) or None if has_at else None
     binary = _squeeze(binary)  # pAntler reads lines with every space removed
-    run = RunLine(param, binary, has_at, options, alias)
+    alias_from_params = None
     extra = options.get("extraprocessparams")
     if extra:
         for p in block.params:
@@ -284,8 +279,8 @@ def parse_run(param: Param, block: Block) -> RunLine:
                 for token in p.value.split(","):
                     token = _squeeze(token)
                     if token.startswith("--alias="):
-                        run.alias_from_params = token[len("--alias=") :] or None
-    return run
+                        alias_from_params = token[len("--alias=") :] or None
+    return RunLine(param, binary, has_at, options, alias, alias_from_params)
 
 
 def antler_runs(block: Block) -> list[RunLine]:
