@@ -335,8 +335,10 @@ class _Builder:
         #: (value, folder, paths found, ok) and each behavior file's expansion
         self.behavior_lookups: list[tuple[str, tuple[str, ...], tuple[list[str], bool]]] = []
         self.behavior_expansions: list[tuple[str, Expansion]] = []
-        #: the core's publishers, whose lists a whole model shares until it adds to them
-        self._shared: dict[str, list[Publisher]] | None = None
+        #: in a whole model, the publisher lists it made itself (by id); every other list
+        #: is shared (with its core, or with what a sibling publishes) and copied before
+        #: it is added to. None while the core is built: it owns every list.
+        self._owned: set[int] | None = None
 
     def add(
         self, var: str, who: str, how: str, line: Line | None = None, process: str | None = None
@@ -346,16 +348,25 @@ class _Builder:
             self._put(*found)
 
     def _put(self, key: str, pub: Publisher) -> None:
-        """Add a publisher of ``key``; a list the model shares with its core is copied
-        first (a model copies only the lists it adds to)."""
+        """Add a publisher of ``key``; a shared list is copied first (a model copies
+        only the lists it adds to)."""
+        self._put_all(key, [pub])
+
+    def _put_all(self, key: str, pubs: list[Publisher], share: bool = False) -> None:
+        """Add publishers of ``key``, in order; ``share``: ``pubs`` itself may become the
+        model's list (it is never changed: a later addition copies it)."""
         publishers = self.m.publishers
+        owned = self._owned
         found = publishers.get(key)
         if found is None:
-            publishers[key] = [pub]
-        elif self._shared is not None and found is self._shared.get(key):
-            publishers[key] = [*found, pub]
+            publishers[key] = found = pubs if share else list(pubs)
+            if owned is not None and not share:
+                owned.add(id(found))
+        elif owned is None or id(found) in owned:
+            found.extend(pubs)
         else:
-            found.append(pub)
+            publishers[key] = found = [*found, *pubs]
+            owned.add(id(found))
 
     def build(self) -> MissionModel:
         """The whole model: the mission's own part (:func:`_core`, shared with the
@@ -375,7 +386,7 @@ class _Builder:
             dynamic_apps=core.dynamic_apps,
             ref_process=core.ref_process,
         )
-        self._shared = core.publishers
+        self._owned = set()
         folder = os.path.dirname(m.path)
         pokes = self.run.memos.pokes
         if folder not in pokes:
@@ -473,8 +484,8 @@ class _Builder:
     def _siblings(self, folder: str) -> None:
         pre = self.run.preprocessor
         me = _norm(self.m.path)
-        for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos"))):
-            if _norm(cand) == me or os.path.basename(cand).startswith("targ_"):
+        for cand in _missions_beside(self.run, folder):
+            if cand == me:
                 continue
             exp = pre.expand(cand)
             if exp.read_problem is not None:
@@ -482,9 +493,23 @@ class _Builder:
             moos = parsed(exp, parse_moos)
             if not moos.is_mission:
                 continue
-            self.m.sibling_missions.append(_norm(cand))
-            for key, pub in _external_publishers(self.run, _norm(cand), moos):
-                self._put(key, pub)
+            self.m.sibling_missions.append(cand)
+            for key, pubs in _external_publishers(self.run, cand, moos).items():
+                self._put_all(key, pubs, share=True)
+
+
+def _missions_beside(run: RunView, folder: str) -> list[str]:
+    """The ``.moos`` files of ``folder`` that may be missions (normalised, sorted), once
+    per run: the missions of a folder all look at the same ones."""
+    memo = run.memos.mission_files
+    found = memo.get(folder)
+    if found is None:
+        found = memo[folder] = [
+            _norm(cand)
+            for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos")))
+            if not os.path.basename(cand).startswith("targ_")
+        ]
+    return found
 
 
 def _app_publishers(run: RunView, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:
@@ -499,10 +524,10 @@ def _app_publishers(run: RunView, app: AppInfo, process: str) -> list[tuple[str,
     return found
 
 
-def _external_publishers(run: RunView, path: str, moos: MoosFile) -> list[tuple[str, Publisher]]:
-    """What another mission of the folder publishes, as (key, publisher) in the order a
-    mission's model takes them; once per run (models are only read, so they share them),
-    and kept across runs while all it was made from is unchanged (see :class:`_Kept`)."""
+def _external_publishers(run: RunView, path: str, moos: MoosFile) -> dict[str, list[Publisher]]:
+    """What another mission of the folder publishes, by key, in the order a mission's
+    model takes them; once per run (models are only read, so they share them), and
+    kept across runs while all it was made from is unchanged (see :class:`_Kept`)."""
     memo = run.memos.external_publishers
     if path in memo:
         return memo[path]
@@ -540,7 +565,7 @@ class _Kept:
         moos: MoosFile,
         catalogue: tuple[object, ...],
         builder: _Builder,
-        publishers: list[tuple[str, Publisher]],
+        publishers: dict[str, list[Publisher]],
     ):
         self.moos = moos
         self.catalogue = catalogue
@@ -562,8 +587,8 @@ _KEPT_SIZE = 64
 _KEPT_LOCK = threading.Lock()
 
 
-def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
-    """A sibling's model's publishers, as the missions beside it see them."""
+def _publishers_of(path: str, sub: MissionModel) -> dict[str, list[Publisher]]:
+    """A sibling's model's publishers, as the missions beside it see them, by key."""
     who = f"{os.path.basename(path)} (another community)"
     found: list[tuple[str, Publisher] | None] = []
     for var, pubs in sub.publishers.items():
@@ -581,7 +606,11 @@ def _publishers_of(path: str, sub: MissionModel) -> list[tuple[str, Publisher]]:
             found.extend(
                 _publisher("*" + suf, who, "external") for suf in proc.app.publish_suffixes
             )
-    return [f for f in found if f is not None]
+    grouped: dict[str, list[Publisher]] = {}
+    for f in found:
+        if f is not None:
+            grouped.setdefault(f[0], []).append(f[1])
+    return grouped
 
 
 class _RuleContext(Protocol):

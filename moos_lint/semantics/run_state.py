@@ -5,8 +5,8 @@ Each field is filled, and read, only by the module that owns it, through its
 typed accessor:
 
 - ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
-- ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``:
-  :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
+- ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``,
+  ``mission_files``: :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
 - ``repo_cpp_stems``: :func:`moos_lint.rules.mission._behaviors.repo_classes`;
 - ``repo_globals``: :func:`moos_lint.rules.hygiene.unknown_key._repo_globals`.
 
@@ -44,8 +44,10 @@ class RunMemos:
     pokes: dict[str, dict[str, str]] = field(default_factory=dict)
     #: (id of the app's catalogue entry, process name) -> (key, publisher) pairs
     app_publishers: dict[tuple[int, str], list[tuple[str, Publisher]]] = field(default_factory=dict)
-    #: normalised sibling mission path -> what it publishes, as (key, publisher) pairs
-    external_publishers: dict[str, list[tuple[str, Publisher]]] = field(default_factory=dict)
+    #: normalised sibling mission path -> what it publishes, by key
+    external_publishers: dict[str, dict[str, list[Publisher]]] = field(default_factory=dict)
+    #: folder -> the normalised paths of the ``.moos`` files there that may be missions
+    mission_files: dict[str, list[str]] = field(default_factory=dict)
     #: lower-case names of the C++ files and classes of the project
     repo_cpp_stems: frozenset[str] | None = None
     #: top-of-file keys the run's own C++ apps read with ``GetValue``
