@@ -148,6 +148,27 @@ def test_a_change_sends_the_run_back_to_the_normal_path(tree, capsys, change):
     assert _replayed(argv, capsys) == after  # and the fresh report is kept in its turn
 
 
+def test_a_file_whose_name_is_not_utf8_is_watched_and_shown_by_its_own_name(tree, capsysbinary):
+    odd = os.path.join(os.fsencode(tree), b"plug_caf\xe9.moos")  # a Latin-1 name
+    with open(odd, "wb") as fh:
+        fh.write(b"ProcessConfig = uXMS\n{\n}\n}\n")  # a stray brace: a finding there
+    argv = ["check", "."]
+
+    def lint():
+        status = main(list(argv))
+        return status, capsysbinary.readouterr().out
+
+    before = lint()
+    assert b"plug_caf\xe9.moos:4" in before[1]  # the name as the file system holds it
+    status = replay.replay(list(argv))
+    assert (status, capsysbinary.readouterr().out) == before  # watched by its own bytes
+    with open(odd, "ab") as fh:
+        fh.write(b"}\n")  # a second stray brace
+    assert replay.replay(list(argv)) is None
+    after = lint()
+    assert b"plug_caf\xe9.moos:5" in after[1]
+
+
 def test_a_touched_file_is_checked_by_content_then_replayed_again(tree, capsys):
     argv = ["check", "."]
     before = _run(argv, capsys)

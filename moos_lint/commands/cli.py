@@ -577,10 +577,12 @@ class _CyclicGCPaused:
 def _emit(path: Path | None, text: str) -> int | None:
     """Write a report to ``path`` (stdout when None); an exit status when that fails."""
     if path is None:
-        sys.stdout.write(text)
+        from moos_lint.files.streams import write_stdout
+
+        write_stdout(text)
         return None
     try:
-        path.write_text(text, encoding="utf-8")
+        path.write_text(text, encoding="utf-8", errors="surrogateescape")
     except OSError as exc:
         return _usage_error(f"cannot write {path}: {exc.strerror or exc}")
     return None

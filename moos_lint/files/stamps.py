@@ -20,7 +20,7 @@ def file_stamp(path: str) -> tuple[int, int] | None:
     return st.st_mtime_ns, st.st_size
 
 
-def folder_mtime(path: str) -> int | None:
+def folder_mtime(path: str | bytes) -> int | None:
     try:
         return os.stat(path).st_mtime_ns
     except OSError:

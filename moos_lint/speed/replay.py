@@ -25,9 +25,10 @@ anything but strings: fields separated by NUL (which no path holds),
     (NUL path NUL "1" or "0")...               every presence
     NUL text                                   the report (it may hold NULs)
 
-and the identity is compared as the ``repr`` of the one this run computes. The report goes where the
-command line sends it: to stdout, or to the file ``-o``/``--output-file``
-names on that command line; an entry names no file.
+and the identity is compared as the ``repr`` of the one this run computes.
+Paths are written as the file system's bytes (``os.fsencode``), the rest as
+UTF-8. The report goes where the command line sends it: to stdout, or to the
+file ``-o``/``--output-file`` names on that command line; an entry names no file.
 
 **What an entry depends on**, beyond what the run entry records (every file
 the lint read, the folders they sit in, the folders discovery walked): the
@@ -59,7 +60,8 @@ import sys
 import moos_lint
 from moos_lint import __version__
 from moos_lint.files.markers import CONFIG_FILES, VCS_MARKERS
-from moos_lint.files.stamps import file_stamp, package_stamps
+from moos_lint.files.stamps import file_stamp, folder_mtime, package_stamps
+from moos_lint.files.streams import write_stdout
 from moos_lint.speed.cache_files import ENV_VAR, Folder, open_folder, prune, replay_folder
 
 #: bump when the entry layout changes
@@ -165,9 +167,9 @@ def replay(argv: list[str]) -> int | None:
         if entry is None or not _holds(entry, argv):
             return None
         if target is None:
-            sys.stdout.write(entry.text)
+            write_stdout(entry.text)
         else:  # written as the normal run writes it
-            with open(target, "w", encoding="utf-8") as fh:
+            with open(target, "w", encoding="utf-8", errors="surrogateescape") as fh:
                 fh.write(entry.text)
         return entry.status
     except Exception:  # a corrupt or foreign entry, an unclear command line: the normal run
@@ -183,15 +185,21 @@ def encode(
     status: int,
 ) -> bytes:
     """An entry's body, laid out as the module's docstring says."""
-    fields = [repr(identity), str(status), str(len(files)), str(len(dirs)), str(len(exist))]
+
+    def utf8(value: str) -> bytes:
+        return value.encode("utf-8", "surrogatepass")
+
+    head = [repr(identity), str(status), str(len(files)), str(len(dirs)), str(len(exist))]
+    fields = [utf8(f) for f in head]
+    fsencode = os.fsencode  # (a path's own bytes, even one that is not UTF-8)
     for path, stamp in files:
-        fields += (path, "-" if stamp is None else f"{stamp[0]} {stamp[1]}")
+        fields += (fsencode(path), b"-" if stamp is None else b"%d %d" % stamp)
     for path, mtime in dirs:
-        fields += (path, "-" if mtime is None else str(mtime))
+        fields += (fsencode(path), b"-" if mtime is None else b"%d" % mtime)
     for path, there in exist:
-        fields += (path, "1" if there else "0")
-    fields.append(text)
-    return "\0".join(fields).encode("utf-8", "surrogatepass")
+        fields += (fsencode(path), b"1" if there else b"0")
+    fields.append(utf8(text))
+    return b"\0".join(fields)
 
 
 class _Entry:
@@ -247,14 +255,8 @@ def _holds(entry: _Entry, argv: list[str]) -> bool:
             return False
     start, end = end, end + 2 * ndirs
     for i in range(start, end, 2):
-        want = fields[i + 1]
-        try:
-            mtime = stat(fields[i]).st_mtime_ns
-        except OSError:
-            if want != b"-":
-                return False
-            continue
-        if want != b"%d" % mtime:
+        mtime = folder_mtime(fields[i])
+        if fields[i + 1] != (b"-" if mtime is None else b"%d" % mtime):
             return False
     exists = os.path.exists
     for i in range(end, end + 2 * nexist, 2):

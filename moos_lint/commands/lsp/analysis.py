@@ -188,17 +188,13 @@ def _may_include(path: str, name: str) -> bool:
     src = _DISK.read(Path(path))
     if not isinstance(src, SourceFile):
         return True
-    text = src.text
-    at = text.find("#include")
-    while at >= 0:
-        start = max(text.rfind("\n", 0, at), text.rfind("\r", 0, at)) + 1
-        if not text[start:at].strip():  # the directive starts its line
-            ends = [e for e in (text.find("\n", at), text.find("\r", at)) if e >= 0]
-            line = text[at : min(ends)] if ends else text[at:]
-            if name in line or "$(" in line or "%(" in line:
-                return True
-        at = text.find("#include", at + 8)
-    return False
+    if "#include" not in src.text:
+        return False
+    # (the lines of a kept read are split once: nsplug reads the same ones)
+    return any(
+        line.lstrip().startswith("#include") and (name in line or "$(" in line or "%(" in line)
+        for line in src.lines
+    )
 
 
 def analyse(
