@@ -88,3 +88,25 @@ def test_the_graph_reads_what_a_finding_is_about_not_its_message():
         subject=Subject(variable="BAR"),
     )
     assert _flagged_vars([ticked, about]) == {"BAR"}
+
+
+def test_an_apps_text_is_what_the_run_read_with_its_lines_ended_alike(tmp_path):
+    """The catalogue reads an app's C++ as the front end read it (no second read of the
+    file), with CRLF and bare CR line ends as ``\\n`` (as a file opened as text gives)."""
+    from moos_lint.files.source import decode
+    from moos_lint.semantics.catalogue import DELEGATE, app_text
+
+    crlf = tmp_path / "App.cpp"
+    body = "  else // a library's keys\r\n    handled = m_lib.setParam(param, value);\r\n"
+    crlf.write_bytes(body.encode())
+    cr = tmp_path / "Old.cpp"
+    cr.write_bytes(body.replace("\r\n", "\r").encode())
+    sources = {str(p): decode(p.read_bytes(), str(p)) for p in (crlf, cr)}
+    want = body.replace("\r\n", "\n")
+    assert app_text(str(crlf), sources) == want
+    assert app_text(str(cr), sources) == want
+    assert DELEGATE.search(app_text(str(cr), sources))
+    crlf.write_text("changed since the run read it")
+    assert app_text(str(crlf), sources) == want  # the run's text, not a second read
+    assert app_text(str(crlf), {}) == "changed since the run read it"  # not read by the run
+    assert app_text(str(tmp_path / "gone.cpp"), sources) == ""

@@ -114,6 +114,30 @@ def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     assert list(resolver.parsed) == [str(lib)]  # the other file is read, never parsed
 
 
+def test_the_resolver_keeps_its_last_parsed_files_and_parses_an_older_one_again(
+    tmp_path, monkeypatch
+):
+    from moos_lint.frontends.cpp import values
+
+    monkeypatch.setattr(values, "KEEP_PARSED", 2)
+    libs = []
+    for i, angle in enumerate(("pitch", "roll", "yaw")):
+        lib = tmp_path / f"L{i}.cpp"
+        lib.write_text(f"double L{i}::{angle}() const {{ return asin(m_s) * 180 / M_PI; }}\n")
+        libs.append(str(lib))
+    resolver = RepositoryResolver(libs, lambda p: Path(p).read_bytes())
+    first = resolver("pitch")
+    assert first is not None and first.unit == "deg"
+    for name in ("roll", "yaw"):
+        assert resolver(name).unit == "deg"
+    assert list(resolver.parsed) == libs[1:]  # the oldest went
+    assert resolver.parsed_once == set(libs)
+    resolver.cache.clear()
+    again = resolver("pitch")  # parsed again, to the same value
+    assert again == first
+    assert list(resolver.parsed) == [libs[2], libs[0]]
+
+
 def test_the_definition_index_names_exactly_what_the_per_name_search_finds():
     data = (
         b"double A::pitch (int x) const {\n"

@@ -114,6 +114,25 @@ def test_the_replay_prints_what_the_normal_run_prints(tree, capsys):
         assert _replayed(argv, capsys) == first == _fresh(argv, capsys), argv
 
 
+def test_a_repository_with_ignore_files_is_replayed_and_watches_them(tree, capsys):
+    """The ignore files that decided what was walked (``.gitignore``, ``.git/info/exclude``)
+    are kept in an entry too (the result cache gives their stamps as JSON lists)."""
+    (tree / ".git" / "info").mkdir(parents=True)
+    (tree / ".git" / "info" / "exclude").write_text("scratch/\n")
+    (tree / ".gitignore").write_text("build/\n")
+    (tree / "build").mkdir()
+    (tree / "build" / "stale.moos").write_text("ProcessConfig = pHelmIvP\n{\n")
+    argv = ["check", "."]
+    before = _run(argv, capsys)
+    assert replay_entries(tree)
+    assert _replayed(argv, capsys) == before == _fresh(argv, capsys)
+    (tree / ".gitignore").write_text("# build/ is linted now\n")
+    assert _replayed(argv, capsys) is None
+    after = _run(argv, capsys)
+    assert after != before and "stale.moos" in after[1]
+    assert _replayed(argv, capsys) == after
+
+
 @pytest.mark.parametrize(
     "change",
     [

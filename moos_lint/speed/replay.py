@@ -178,13 +178,14 @@ def replay(argv: list[str]) -> int | None:
 
 def encode(
     identity: list,
-    files: list[tuple[str, tuple[int, int] | None]],
+    files: list[tuple[str, tuple[int, int] | list[int] | None]],
     dirs: list[tuple[str, int | None]],
     exist: list[tuple[str, bool]],
     text: str,
     status: int,
 ) -> bytes:
-    """An entry's body, laid out as the module's docstring says."""
+    """An entry's body, laid out as the module's docstring says. A file's stamp is any
+    (mtime, size) pair: the result cache keeps those of ignore files as JSON lists."""
 
     def utf8(value: str) -> bytes:
         return value.encode("utf-8", "surrogatepass")
@@ -193,7 +194,7 @@ def encode(
     fields = [utf8(f) for f in head]
     fsencode = os.fsencode  # (a path's own bytes, even one that is not UTF-8)
     for path, stamp in files:
-        fields += (fsencode(path), b"-" if stamp is None else b"%d %d" % stamp)
+        fields += (fsencode(path), b"-" if stamp is None else b"%d %d" % tuple(stamp))
     for path, mtime in dirs:
         fields += (fsencode(path), b"-" if mtime is None else b"%d" % mtime)
     for path, there in exist:

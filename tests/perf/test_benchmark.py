@@ -35,6 +35,10 @@ def _small_tree(tmp_path: Path) -> Path:
     app = tree / "pApp"
     app.mkdir()
     (app / "App.cpp").write_text('bool App::OnStartUp() { Notify("APP_X", 1); return true; }\n')
+    # a repository's ignore files: the replay watches them too
+    (tree / ".git" / "info").mkdir(parents=True)
+    (tree / ".git" / "info" / "exclude").write_text("scratch/\n")
+    (tree / ".gitignore").write_text("build/\n")
     return tree
 
 
@@ -66,6 +70,7 @@ def test_the_benchmark_prints_every_figure_with_its_target(tmp_path):
         "worst: ",
         "App.cpp (1 lines)",
         "warm (cache filled, nothing changed)",
+        "warm runs replayed",
         "moos-lint --version",
         "peak memory, -j 1 (one process)",
         "x16 time",
@@ -74,6 +79,7 @@ def test_the_benchmark_prints_every_figure_with_its_target(tmp_path):
         assert any(ch.isdigit() for ch in _figure(out.stdout, name)), (name, out.stdout)
     # a judged figure carries its ratio and a verdict
     assert _figure(out.stdout, "cold default / floor").split()[-1] in ("pass", "MISS")
+    assert _figure(out.stdout, "warm runs replayed").split()[-1] == "pass"
     assert "peer" in _figure(out.stdout, "peer")  # not given: said, not run
     assert "took" in _figure(out.stdout, "load: ")  # how busy the machine was
     assert sorted(p.name for p in tree.rglob("*")) == before  # the tree is not written

@@ -45,7 +45,8 @@ def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
 
 
 _INCLUDE_LINE = re.compile(rb'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\r\n]+)[>"]', re.M)
-_LINK_CALL = re.compile(rb"\b(add_(?:any|udp|tcp|serial)_connection)[ \t]*\(")
+#: literal first (``add_(?<=\badd_)`` is ``\badd_``): a leading ``\b`` is tried at every byte
+_LINK_CALL = re.compile(rb"(add_(?<=\badd_)(?:any|udp|tcp|serial)_connection)[ \t]*\(")
 
 
 def helper_io(paths: Iterable[str]) -> list[tuple[SourceFile, CppFile]]:

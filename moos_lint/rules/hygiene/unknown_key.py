@@ -83,7 +83,7 @@ from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
-from moos_lint.semantics.catalogue import text_format_app, text_format_schema
+from moos_lint.semantics.catalogue import app_text, text_format_app, text_format_schema
 
 ANTLER_KEYS = [
     "Run",
@@ -126,7 +126,8 @@ APP_KEYS = [
 _LIST_OPTIONS = ("extraprocessparams", "xconfig", "win32config")
 
 
-_GET_VALUE = re.compile(rb"\bGetValue\s*\(\s*\"([A-Za-z0-9_]+)\"")
+#: literal first, as the catalogue's ``DELEGATE``: searched over every file of every app
+_GET_VALUE = re.compile(r"GetValue(?<=\bGetValue)\s*\(\s*\"([A-Za-z0-9_]+)\"", re.ASCII)
 
 
 def _repo_globals(run) -> frozenset[str]:
@@ -138,12 +139,8 @@ def _repo_globals(run) -> frozenset[str]:
     for unit in run.units:
         app = getattr(unit, "cpp", None)
         for f in getattr(app, "files", None) or []:
-            try:
-                with open(f.path, "rb") as fh:
-                    data = fh.read(512 * 1024)
-            except OSError:
-                continue
-            keys.update(m.group(1).decode("ascii") for m in _GET_VALUE.finditer(data))
+            # the text the C++ front end read (every file of an app is in the run's sources)
+            keys.update(_GET_VALUE.findall(app_text(f.path, run.sources)))
     run.memos.repo_globals = found = frozenset(keys)
     return found
 

@@ -50,7 +50,8 @@ def repo_classes(ctx: Context) -> frozenset[str]:
     return found
 
 
-_CLASS = re.compile(rb"\bclass\s+(BHV_\w+)\s*(?::|\{)")
+#: literal first (``class(?<=\bclass)`` is ``\bclass``): a leading ``\b`` is tried at every byte
+_CLASS = re.compile(rb"class(?<=\bclass)\s+(BHV_\w+)\s*(?::|\{)")
 
 
 def _declared_behaviors(path: str) -> set[str]:
