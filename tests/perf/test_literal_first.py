@@ -15,7 +15,7 @@ import re
 
 import pytest
 
-from moos_lint.frontends.cpp import app, extract
+from moos_lint.frontends.cpp import app, extract, prefilter
 from moos_lint.frontends.cpp.values import field_write_pattern
 from moos_lint.rules.hygiene import unknown_key
 from moos_lint.rules.mission import _behaviors
@@ -23,6 +23,10 @@ from moos_lint.semantics import catalogue
 
 pytestmark = pytest.mark.perf
 
+PLAIN_MOOS_API = re.compile(
+    rb"\b(?:Notify|Register|UnRegister|CMOOSApp|AppCastingMOOSApp|CMOOSInstrument|"
+    rb"OnNewMail|OnStartUp|GetConfigurationParam|CMOOSSerialPort)\b|\.Run\s*\("
+)
 PLAIN_NED = re.compile(
     rb"(?<![A-Za-z])[Nn]ed(?![a-z])|(?<![A-Z])NED(?![a-z])|(?<![A-Za-z])down\b|_down\b|Down\b"
 )
@@ -104,3 +108,16 @@ def test_the_ned_prefilter_agrees_with_its_plain_spelling():
     for _ in range(50000):
         text = b"".join(rnd.choice(pieces) for _ in range(rnd.randint(1, 8)))
         assert extract.may_name_ned(text) is bool(PLAIN_NED.search(text)), text
+
+
+def test_the_moos_api_prefilter_agrees_with_its_plain_spelling():
+    rnd = random.Random(11)
+    pieces = [b"Notify", b"Register", b"Un", b"CMOOSApp", b"CMOOS", b"OnNewMail", b"OnStartUp"]
+    pieces += [b"Serial", b"Port", b"AppCasting", b"MOOSApp", b"x", b"_", b" ", b"(", b".Run", b"m"]
+    found = 0
+    for _ in range(50000):
+        text = b"".join(rnd.choice(pieces) for _ in range(rnd.randint(1, 6)))
+        want = bool(PLAIN_MOOS_API.search(text))
+        assert prefilter.mentions_moos(text) is want, text
+        found += want
+    assert found > 5000
