@@ -121,3 +121,23 @@ def test_the_moos_api_prefilter_agrees_with_its_plain_spelling():
         assert prefilter.mentions_moos(text) is want, text
         found += want
     assert found > 5000
+
+
+def test_the_upper_casing_words_are_what_the_plain_pattern_finds():
+    plain = re.compile(rb"(?i)\w*upper\w*")
+    rnd = random.Random(5)
+    pieces = [b"upper", b"UPPER", b"uPpEr", b"Upp", b"er", b"pper", b"u", b"x", b"_", b" ", b"("]
+    pieces += [b"1", b"\xc3\xa9", b"::to"]
+    found = 0
+    for _ in range(50000):
+        text = b"".join(rnd.choice(pieces) for _ in range(rnd.randint(1, 10)))
+        want = [m.span() for m in plain.finditer(text)]
+        assert list(extract.upper_words(text)) == want, text
+        found += bool(want)
+    assert found > 10000
+    data = b"MOOSToUpper(m_var); std::transform(a, b, c, ::toupper); upperupper x"
+    assert [data[s:e] for s, e in extract.upper_words(data)] == [
+        b"MOOSToUpper",
+        b"toupper",
+        b"upperupper",
+    ]

@@ -361,7 +361,25 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
     return t
 
 
-_UPPER_WORD = re.compile(rb"(?i)\w*upper\w*")
+_UPPER = re.compile(rb"(?i)upper")
+_WORD_REST = re.compile(rb"\w*")
+_WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
+
+
+def upper_words(data: bytes) -> Iterator[tuple[int, int]]:
+    """The spans of the words of ``data`` that hold ``upper`` in any case: what
+    ``(?i)\\w*upper\\w*`` finds, without its search, which tries every byte and walks
+    each word back and forth (10x slower over a repository's C++)."""
+    end = 0
+    for m in _UPPER.finditer(data):
+        start = m.start()
+        if start < end:  # a second ``upper`` in the same word
+            continue
+        while start > end and data[start - 1] in _WORD_BYTES:
+            start -= 1
+        match = _WORD_REST.match(data, m.end())
+        end = match.end() if match is not None else m.end()
+        yield start, end
 
 
 def _upper_calls(pf: ParsedFile) -> Iterator[Any]:
@@ -369,8 +387,8 @@ def _upper_calls(pf: ParsedFile) -> Iterator[Any]:
     the bytes first: most files have none)."""
     seen = set()
     root = pf.tree.root_node
-    for m in _UPPER_WORD.finditer(pf.data):
-        n = root.descendant_for_byte_range(m.start(), m.end())
+    for start, end in upper_words(pf.data):
+        n = root.descendant_for_byte_range(start, end)
         while n is not None and n.type != "call_expression":
             if n.type in ("expression_statement", "compound_statement", "function_definition"):
                 n = None
