@@ -352,7 +352,17 @@ class Table:
             verdict = "pass" if ratio <= limit else "MISS"
             if verdict == "MISS":
                 self.misses.append(name)
-        print(f"  {name:44s} {value:>22s}  {target:28s} {shown:>7s}  {verdict}", flush=True)
+        self._line(name, value, target, shown, verdict)
+
+    def check(self, name: str, value: str, target: str, ok: bool) -> None:
+        """A figure judged yes or no, without a ratio."""
+        if not ok:
+            self.misses.append(name)
+        self._line(name, value, target, "", "pass" if ok else "MISS")
+
+    @staticmethod
+    def _line(name: str, value: str, target: str, ratio: str, verdict: str) -> None:
+        print(f"  {name:44s} {value:>22s}  {target:28s} {ratio:>7s}  {verdict}", flush=True)
 
 
 def seconds(s: float) -> str:
@@ -520,13 +530,7 @@ def start_figures(t: Table, inst: Installation, tree: str, runs: int, tmp: str) 
     # a warm run is meant to be replayed (moos_lint/speed/replay.py): without an entry it
     # takes the result cache's longer path, and the figure above says why
     kept = len(glob.glob(os.path.join(cache, "replay-*.rec")))
-    t.row(
-        "warm runs replayed",
-        f"{kept} entry" if kept else "no entry",
-        ">= 1 entry",
-        0.0 if kept else 2.0,
-        1.0,
-    )
+    t.check("warm runs replayed", f"{kept} entry" if kept else "no entry", ">= 1 entry", kept > 0)
     version = median(inst.cli("--version"), runs, inst.env).wall
     python = median([inst.python, "-c", "pass"], runs, inst.env).wall
     t.row("python -c pass", ms(python))

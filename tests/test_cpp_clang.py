@@ -36,7 +36,8 @@ def _lint(backend: str, db: Path | None, select: list[str]):
     return lint_files(FILES, settings)
 
 
-def _clang_app(tmp_path):
+def require_libclang() -> None:
+    """Skip where libclang or the system compiler's include folder is missing."""
     ci = pytest.importorskip("clang.cindex")
     from moos_lint.frontends.cpp.clang import system_include
 
@@ -46,6 +47,10 @@ def _clang_app(tmp_path):
         pytest.skip("libclang cannot be loaded")
     if system_include() is None:
         pytest.skip("no system compiler include folder")
+
+
+def _clang_app(tmp_path):
+    require_libclang()
     result = _lint("clang", _db(tmp_path), ["yaw-in-degrees"])
     app = next(u.cpp for u in result.units if u.cpp is not None and u.cpp.is_app)
     if app.backend != "clang":

@@ -16,6 +16,7 @@ pytest.importorskip("tree_sitter")
 
 from moos_lint.core.config import Settings
 from moos_lint.core.engine import lint_files
+from tests.test_cpp_clang import require_libclang
 
 ROOT = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "clang_values"
 FILES = sorted(str(p) for p in ROOT.rglob("*") if p.suffix in (".cpp", ".h"))
@@ -66,15 +67,7 @@ def _app(result, folder: str):
 @pytest.fixture
 def clang(tmp_path):
     """Skip where libclang or the system headers are missing."""
-    ci = pytest.importorskip("clang.cindex")
-    from moos_lint.frontends.cpp.clang import system_include
-
-    try:
-        ci.conf.lib  # noqa: B018
-    except Exception:
-        pytest.skip("libclang cannot be loaded")
-    if system_include() is None:
-        pytest.skip("no system compiler include folder")
+    require_libclang()
     result = _lint("clang", _db(tmp_path, SCALE))
     if _app(result, "iCompass").backend != "clang":
         pytest.skip("no system C++ headers for libclang")

@@ -185,7 +185,7 @@ def encode(
     status: int,
 ) -> bytes:
     """An entry's body, laid out as the module's docstring says. A file's stamp is any
-    (mtime, size) pair: the result cache keeps those of ignore files as JSON lists."""
+    (mtime, size) pair: stamps that went through the result cache's JSON are lists."""
 
     def utf8(value: str) -> bytes:
         return value.encode("utf-8", "surrogatepass")

@@ -26,7 +26,7 @@ from moos_lint.frontends.cpp.model import (
     Subscription,
     Value,
 )
-from moos_lint.frontends.cpp.names import key_literal, mail_key_of, valued_name
+from moos_lint.frontends.cpp.names import WORD_BYTES, key_literal, mail_key_of, valued_name
 
 PUBLISH = {"Notify"}
 SUBSCRIBE = {"Register"}
@@ -363,7 +363,6 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
 
 _UPPER = re.compile(rb"(?i)upper")
 _WORD_REST = re.compile(rb"\w*")
-_WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
 
 
 def upper_words(data: bytes) -> Iterator[tuple[int, int]]:
@@ -375,7 +374,7 @@ def upper_words(data: bytes) -> Iterator[tuple[int, int]]:
         start = m.start()
         if start < end:  # a second ``upper`` in the same word
             continue
-        while start > end and data[start - 1] in _WORD_BYTES:
+        while start > end and data[start - 1] in WORD_BYTES:
             start -= 1
         match = _WORD_REST.match(data, m.end())
         end = match.end() if match is not None else m.end()

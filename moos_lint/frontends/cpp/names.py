@@ -25,6 +25,8 @@ _VALUED_WORDS = {
     "RATE",
 }
 _RATE_WORDS = {"GYRO", "GYR", "RATE"}
+#: the bytes of a C++ word (``\w`` on bytes), for scans that walk a word byte by byte
+WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
 #: string comparisons a mail handler tests a message's key with
 MAIL_COMPARES = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "IsName"}
 

@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from moos_lint.frontends.cpp import facts, fields
-from moos_lint.frontends.cpp.names import callee_name, mail_key_of, node_text, strip
+from moos_lint.frontends.cpp.names import WORD_BYTES, callee_name, mail_key_of, node_text, strip
 
 Range = tuple[float, float]
 _EPS = 1e-3
@@ -1561,7 +1561,6 @@ _DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{
 #: the tail of :data:`_DEF_TEMPLATE`: a definition's parameter list and opening brace
 _DEF_TAIL = re.compile(rb"\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{")
 _WORD = re.compile(rb"\w+")
-_WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
 _SPACE_BYTES = frozenset(b" \t\n\r\f\v")
 
 
@@ -1575,7 +1574,7 @@ def defined_names(data: bytes) -> set[bytes]:
         while end > 0 and data[end - 1] in _SPACE_BYTES:
             end -= 1
         start = end
-        while start > 0 and data[start - 1] in _WORD_BYTES:
+        while start > 0 and data[start - 1] in WORD_BYTES:
             start -= 1
         if start < end:
             names.add(data[start:end])

@@ -382,7 +382,7 @@ DELEGATE = re.compile(
 )
 
 
-def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile] | None = None) -> AppInfo:
+def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppInfo:
     """What the app's own C++ (named ``name``) says it reads, publishes and subscribes to.
 
     It is strict (other keys are reported) only when the app reports
@@ -433,11 +433,11 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile] | None = 
     return info
 
 
-def app_text(path: str, sources: dict[str, SourceFile] | None = None) -> str:
+def app_text(path: str, sources: dict[str, SourceFile]) -> str:
     """The text of one of an app's files, with its lines ended by ``\\n``: as the run
     already read it (``sources``: the C++ front end read every file of an app), else from
     the file; "" when it cannot be read."""
-    src = (sources or {}).get(path)
+    src = sources.get(path)
     if src is not None:
         text = src.text
         return text.replace("\r\n", "\n").replace("\r", "\n") if "\r" in text else text
