@@ -702,7 +702,33 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
         "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
         "programs": PROGRAMS,
         "behaviors": behaviors,
+        "editor_behaviors": editor_behaviors(src, set(behaviors)),
     }
+
+
+#: a behavior's entry in MOOS-IvP's Emacs mode: ``'("BHV_Name" "param" ...)``
+_EL_ENTRY = re.compile(r"'\(\s*\"(BHV_\w+)\"([^)]*)\)")
+_EL_WORD = re.compile(r'"([^"\s]+)"')
+EDITOR_BEHAVIORS = "editor-modes/moos-bhvs.el"
+
+
+def editor_behaviors(src: str, stock: set[str]) -> dict[str, dict]:
+    """The behavior kinds MOOS-IvP's editor mode (``editor-modes/moos-bhvs.el``) lists that
+    the tree does not build: behaviors of MIT's other public trees (moos-ivp-swarm,
+    moos-ivp-pavlab: ``BHV_TaskMuster``, ``BHV_ConvoyV21``, ...) that missions load through
+    ``IVP_BEHAVIOR_DIRS``. Their kinds are known; their keyword lists are the editor's
+    (for completion), not a complete parameter list."""
+    text = _read(os.path.join(src, EDITOR_BEHAVIORS))
+    out: dict[str, dict] = {}
+    for m in _EL_ENTRY.finditer(text):
+        name = m.group(1)
+        if name in stock or name in out:
+            continue
+        out[name] = {
+            "source": EDITOR_BEHAVIORS,
+            "keywords": sorted(set(_EL_WORD.findall(m.group(2)))),
+        }
+    return dict(sorted(out.items()))
 
 
 _LINES: dict[str, list[str]] = {}

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import fnmatch
 import os
-import traceback
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -239,6 +238,8 @@ class LintRun:
 
 def internal_error(path: str, what: str, exc: BaseException) -> Diagnostic:
     """A finding that says moos-lint itself failed (``what``: where), so the run goes on."""
+    import traceback  # (only when a rule fails)
+
     where = traceback.extract_tb(exc.__traceback__)[-1] if exc.__traceback__ else None
     at = f" at {os.path.basename(where.filename)}:{where.lineno}" if where else ""
     return Diagnostic(

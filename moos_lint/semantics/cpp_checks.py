@@ -14,6 +14,7 @@ from typing import Any
 from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp.model import AppModel, Publication
+from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 Finding = tuple[Span, str]
 UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
@@ -35,7 +36,7 @@ def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator
     name = app.process_name
     if not app.is_app or not name or app.process_name_span is None:
         return
-    if name.lower() in {e.lower() for e in exempt} or re.match(r"^[ipu][A-Z]", name):
+    if name.lower() in {e.lower() for e in exempt} or PREFIXED.match(name):
         return
     if app.process_name_source == "folder" and name.islower():
         return  # a generic folder (src, attic, test): the name is a guess
@@ -46,8 +47,8 @@ def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator
     }[app.process_name_source]
     yield (
         app.process_name_span,
-        f"process name `{name}` ({where}) does not start with i, p or u "
-        "(instrument, process, utility)",
+        f"process name `{name}` ({where}) "
+        + prefix_problem(name, "does not start with i, p or u (instrument, process, utility)"),
     )
 
 

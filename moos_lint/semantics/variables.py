@@ -191,6 +191,25 @@ def flag(role: str = PUBLISH) -> Syntax:
     return read
 
 
+def mail_flag() -> Syntax:
+    """A ``MailFlagSet`` flag, ``@KEY # VAR = value``: mail of ``KEY`` (``ANY``: any mail the
+    app reads) posts ``VAR`` (lib_mbutil/MailFlagSet.cpp ``addFlag``)."""
+
+    def read(piece: Piece) -> Iterator[tuple[Piece, str]]:
+        parts = _bite(piece, "#")
+        if parts is None or not parts[0][0].startswith("@"):
+            return
+        (key, at), pair = parts
+        key_piece = _trim((key[1:], at + 1))
+        if _is_name(key_piece[0]) and key_piece[0].lower() != "any":
+            yield key_piece, SUBSCRIBE
+        var = _bite(pair, "=")
+        if var and var[1][0] and _is_name(var[0][0]):
+            yield var[0], PUBLISH
+
+    return read
+
+
 def keyed(roles: dict[str, str], sep: str = ",") -> Syntax:
     """``key=value`` pairs; the values of the given keys are variable names."""
 
@@ -405,7 +424,9 @@ APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
     },
     "pshare": {"output": (pshare_output(), True)},
     "pmoosbridge": {"share": (bridge_share(), False), "udpshare": (bridge_share(), False)},
-    "ufldnodebroker": {"bridge": (keyed({"src": SUBSCRIBE, "alias": PUBLISH}), False)},
+    # the route goes to pShare unchanged as a PSHARE_CMD (NodeBroker.cpp
+    # postPShareCommand), and pShare routes a `*`/`?` source as a wildcard (Share.cpp AddRoute)
+    "ufldnodebroker": {"bridge": (keyed({"src": SUBSCRIBE, "alias": PUBLISH}), True)},
     "ufldshorebroker": {
         "bridge": (keyed({"src": SUBSCRIBE, "alias": PUBLISH}), False),
         "qbridge": (comma_list(SUBSCRIBE), False),
@@ -482,7 +503,14 @@ APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
         "lead_condition": (_COND, False),
         "pass_condition": (_COND, False),
         "fail_condition": (_COND, False),
+        # addVarDataPairOnString (MissionEval.cpp:175-180), MailFlagSet::addFlag (:190)
+        "result_flag": (_FLAG, False),
+        "pass_flag": (_FLAG, False),
+        "fail_flag": (_FLAG, False),
+        "mailflag": (mail_flag(), False),
     },
+    # addVarDataPairOnString (AutoPoke.cpp:102-103): posted once the required nodes report
+    "pautopoke": {"flag": (_FLAG, False)},
     "pevalloiter": {"condition": (_COND, False)},
 }
 
@@ -579,6 +607,7 @@ _BHV_FLAGS = {
     for sep in ("", "_")
 }
 #: behavior parameters (lower case, leading ``_`` dropped) -> syntax
+_ANY_FLAG = flag()
 BHV_PARAMS: dict[str, Syntax] = {
     **{key: flag() for key in _BHV_FLAGS},
     "condition": condition(commas_are_equals=True),
@@ -619,6 +648,10 @@ def _bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
     for bhv in bf.behaviors:
         for param in bhv.params:
             syntax = BHV_PARAMS.get(param.lkey)
+            if syntax is None and param.lkey.endswith("flag"):
+                # any other ``*flag`` is a var-data pair too (BHV_ZigZag ``zigflag``, the
+                # task behaviors' ``bidwonflag``, a project's own behavior's flags)
+                syntax = _ANY_FLAG
             if syntax is None:
                 continue
             text = param.line.text[param.value_start : param.value_end]

@@ -37,6 +37,11 @@ MOOS_GLOBALS = [
     "GlobalLogPath",
     "CircuitName",
     "MagneticOffset",
+    # read by CMOOSApp::Run in MOOS before v10 (``GetValue("SIMULATOR")`` sets
+    # IsSimulateMode(), ``GetValue("PLAYBACK")`` the playback mode), and still set by
+    # MOOS-IvP's own missions (x1_alpha, m5_hunter, m8_hugo)
+    "Simulator",
+    "Playback",
     "ProcessConfig",
 ]
 

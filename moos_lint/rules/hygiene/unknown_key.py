@@ -11,7 +11,8 @@ Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
 `LatOrigin`, `LongOrigin` (every app, the MOOSDB, pAntler); `UseMOOSComms`
 (CMOOSApp); `NoNetwork`, `WebServerPort`, `ClientTimeout`, `WarningLatency`,
 `tcpnodelay` (MOOSDB); `TERM_REPORTING` (every AppCasting app);
-`GlobalLogPath` (pLogger); `CircuitName`, `MagneticOffset` (CMOOSInstrument).
+`GlobalLogPath` (pLogger); `CircuitName`, `MagneticOffset` (CMOOSInstrument);
+`Simulator`, `Playback` (CMOOSApp before MOOS v10).
 
 Known ANTLER keys: `Run`, `MSBetweenLaunches`, `ExecutablePath`,
 `GentleKill`, `EnableDistributed`, `KillOnDBDisconnect`, and the named lists
@@ -71,8 +72,11 @@ top-of-file keys those apps read into their configuration (`log`, `log_path`,
 `modem_id`, `modem_id_lookup_path`, ...; the `moos_global` fields of goby's
 `.proto` files) are known too.
 
-Old MOOS missions set `Simulator = true`: no MOOS or MOOS-IvP program reads it
-today (CMOOSApp's simulate mode is never set from the file), so it is reported.
+`Simulator` and `Playback` are known: CMOOSApp read them in MOOS before v10
+(the simulate and playback modes), and MOOS-IvP's own missions still set
+`Simulator = true`. Today's MOOS ignores them, but the line is harmless, and
+reporting it on every mission copied from MOOS-IvP's examples would bury the
+misspellings this rule is for.
 """
 
 import difflib

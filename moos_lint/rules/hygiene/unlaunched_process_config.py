@@ -61,10 +61,15 @@ MOOS-IvP caveats, deliberately not reported:
 - a mission with an `#include` that could not be followed (a macro in its
   path, a missing file): a Run line may be in it, so nothing is reported;
 - a block with `{` on its header line: MOOS never finds it whatever launches
-  it, and brace-on-header (R003) reports that line.
+  it, and brace-on-header (R003) reports that line;
+- a block of a fragment that several missions include (one `plug_uTimerScript.moos`
+  for the vehicle and the shoreside), when another mission of the lint run that
+  includes the fragment launches it: the block is read there, and deleting it
+  would break that mission.
 """
 
 import re
+import weakref
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import script_names
@@ -119,6 +124,8 @@ def check(ctx):
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
+        if block.header.path != ctx.path and _launched_by_includer(ctx.run, block):
+            continue  # a shared fragment: another mission that includes it launches it
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
         if block.lname in scripts:
@@ -132,6 +139,36 @@ def check(ctx):
             f"no process reads block `{block.name}`: {why} (launch it or delete the block)",
             line=block.header,
         )
+
+
+_INCLUDERS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _launched_by_includer(run, block) -> bool:
+    """Whether a mission of the run that includes the fragment holding ``block`` launches
+    a process of its name."""
+    names = _names_by_fragment(run).get(block.header.path, ())
+    return any(names_match(name, block.name) for name in names)
+
+
+def _names_by_fragment(run) -> dict[str, set[str]]:
+    """Every included file of the run's missions -> the process names (block names of
+    Run lines) launched by the missions that include it; worked out once per run."""
+    units = run.units
+    key = (id(units), len(units), id(units[0]) if units else 0, id(units[-1]) if units else 0)
+    cached = _INCLUDERS.get(run)
+    if cached is None or cached[0] != key:
+        found: dict[str, set[str]] = {}
+        for unit in units:
+            moos = unit.moos
+            if moos is None or not moos.runs:
+                continue
+            launched = {name for r in moos.runs for name in r.block_names}
+            for path in unit.expansion.sources:
+                if path != unit.path:
+                    found.setdefault(path, set()).update(launched)
+        cached = _INCLUDERS[run] = (key, found)
+    return cached[1]
 
 
 def _script_words(mission: str, moos) -> frozenset[str]:

@@ -87,7 +87,8 @@ def _root(ctx: Context) -> str:
 
 def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:
     """(catalogue entry or None, known at all)."""
-    info = catalogue_for(ctx.run).behavior(kind)
+    cat = catalogue_for(ctx.run)
+    info = cat.behavior(kind)
     if info is not None:
         return info, True
-    return None, kind.lower() in repo_classes(ctx)
+    return None, cat.behavior_exists(kind) or kind.lower() in repo_classes(ctx)

@@ -38,7 +38,12 @@ MOOS-IvP caveats, deliberately not reported:
   loaded through `ivp_behavior_dir`), a `BHV_*` class declared in one of the
   project's headers, or a `BHV_*` library a CMakeLists.txt of the project
   builds (the helm loads `libBHV_X.so` by the kind's name);
-- a kind that is not a name (`Behavior = ??` in a template).
+- a kind that is not a name (`Behavior = ??` in a template);
+- a kind that MOOS-IvP's editor mode (`editor-modes/moos-bhvs.el`) lists but
+  the moos-ivp tree does not build: the behaviors of MIT's other public trees
+  (`BHV_TaskMuster`, `BHV_MusterX`, `BHV_ConvoyV21`, `BHV_LegRunX`, ...), which
+  missions load from those trees through `IVP_BEHAVIOR_DIRS`. Their parameters
+  are not judged (unknown-behavior-parameter knows no list for them).
 """
 
 import difflib
@@ -77,8 +82,9 @@ def check(ctx):
         _info, known = lookup(ctx, kind)
         if known:
             continue
-        names = {b.name.lower(): b.name for b in cat.behaviors.values()}
-        close = [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
+        # the catalogue's behaviors first: the others only when none of those is close
+        close = _close(kind, {b.name.lower(): b.name for b in cat.behaviors.values()})
+        close = close or _close(kind, cat.outside_behaviors)
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
         msg += f"no C++ file, class or library of that name under {_shown(_root(ctx))})"
         fix = None
@@ -87,3 +93,8 @@ def check(ctx):
         if len(close) == 1:
             fix = Fix(f"respell as `{close[0]}`", (Edit(bhv.kind_span, close[0]),))
         yield ctx.report(bhv.kind_span, msg, line=bhv.header, fix=fix)
+
+
+def _close(kind: str, names: dict[str, str]) -> list[str]:
+    """The names (lower case -> as written) close to ``kind``, closest first."""
+    return [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]

@@ -51,12 +51,17 @@ MOOS-IvP caveats, deliberately not reported:
 - a mission that receives variables from another community when no other
   mission in its folder describes that community: anything may arrive;
 - variables that a person pokes by hand (uPokeDB from a terminal,
-  uMAC): give them a publisher in the mission, or suppress the finding.
+  uMAC): give them a publisher in the mission, or suppress the finding;
+- a variable named with the prefix of a launched app that the catalogue does
+  not know (`UFRM_WINNER` when the mission runs uFldRescueMgr from another
+  tree): MOOS-IvP apps name their own variables after their initials
+  (uSimMarine `USM_*`, uFldShoreBroker `UFSB_*`), so that app most likely posts it.
 """
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.mission_model import mission_model
+from moos_lint.semantics.process_names import acronym
 from moos_lint.semantics.variables import bare_name
 
 
@@ -83,6 +88,7 @@ def check(ctx):
     if model.inbound and not model.sibling_missions:
         return  # variables may come from a community the linter cannot see
     gaps = _gaps(model)
+    unknown_prefixes = {acronym(p.binary) for p in model.unknown_apps} - {""}
     seen: set[tuple[str, str, int]] = set()
     for ref in model.waits:
         name = bare_name(ref.name)
@@ -94,6 +100,8 @@ def check(ctx):
         if key in seen:
             continue
         seen.add(key)
+        if name.split("_", 1)[0] in unknown_prefixes:
+            continue  # named after an app the catalogue does not know: likely its own
         owner = ref.app if ref.app else "the mission"
         subject = Subject(variable=name, app=ref.app or None, key=ref.param)
         msg = f"`{name}`: {owner}'s {ref.param} waits for it, "

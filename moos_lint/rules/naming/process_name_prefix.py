@@ -66,15 +66,12 @@ Rename the program, or choose an alias that keeps the program's prefix
 
 from __future__ import annotations
 
-import re
 import weakref
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-
-_PREFIXED = re.compile(r"^[ipu][A-Z]")
-
+from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 #: MOOS's own programs: the database, the launcher, and MOOS core's command-line tools
 #: (``MOOSCore/Core/tools``: umm, mtm, gtm, ktm, atm, mqos)
@@ -82,7 +79,7 @@ INFRASTRUCTURE = ("MOOSDB", "ANTLER", "pAntler", "umm", "mtm", "gtm", "ktm", "at
 
 
 def conforms(name: str, exempt: set[str]) -> bool:
-    return bool(_PREFIXED.match(name)) or name.lower() in exempt
+    return bool(PREFIXED.match(name)) or name.lower() in exempt
 
 
 @rule(
@@ -107,7 +104,7 @@ def check(ctx):
         if program and not has_macro(program) and not conforms(program, exempt):
             yield ctx.report(
                 run.binary_span,
-                f"process `{program}` does not start with `i`, `p` or `u` and an upper-case letter",
+                f"process `{program}` {prefix_problem(program)}",
                 line=run.param.line,
             )
         for alias, span, line in _aliases(run):
@@ -115,8 +112,7 @@ def check(ctx):
             if check_aliases and not has_macro(alias) and not conforms(alias, exempt):
                 yield ctx.report(
                     span,
-                    f"alias `{alias}` of `{program}` does not start with `i`, `p` or `u` "
-                    "and an upper-case letter",
+                    f"alias `{alias}` of `{program}` {prefix_problem(alias)}",
                     line=line,
                 )
     elsewhere_launched, elsewhere_aliases = _launched_in_run(ctx.run)
@@ -130,8 +126,7 @@ def check(ctx):
         if not conforms(name, exempt):
             yield ctx.report(
                 block.name_span,
-                f"ProcessConfig name `{name}` does not start with `i`, `p` or `u` "
-                "and an upper-case letter",
+                f"ProcessConfig name `{name}` {prefix_problem(name)}",
                 line=block.header,
             )
 

@@ -20,9 +20,16 @@ still shadows the real one.
 ## How to fix
 Restore the header, or delete the whole block.
 
+A header hidden behind something MOOS does not take for a comment
+(`#ProcessConfig = pLogger`, `/*ProcessConfig = pLogger`: `.moos` files have no
+`/* */` comments) is reported once, by not-a-comment (R007), when that rule is
+enabled: the block below it is then not reported again.
+
 ## Options
 None.
 """
+
+import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.rules.kit.declare import Scope, rule
@@ -30,9 +37,31 @@ from moos_lint.rules.kit.declare import Scope, rule
 
 @rule(code="R004", name="orphan-block", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
+    r007 = any(r.code == "R007" for r in ctx.run.rules)
+    index: dict[int, int] | None = None
     for block in ctx.moos.orphan_blocks:
+        if r007:
+            if index is None:
+                index = {id(line): i for i, line in enumerate(ctx.moos.lines)}
+            if _hidden_header(ctx.moos.lines, index.get(id(block.open))):
+                continue  # not-a-comment reports the header line
         yield ctx.report(
             block.open.span(),
             "block without a `ProcessConfig = NAME` header: no app reads it",
             line=block.open,
         )
+
+
+_FAKE_HEADER = re.compile(r"^(?:#|/(?!/))[#/*\s]*processconfig\s*=", re.IGNORECASE)
+
+
+def _hidden_header(lines, at: int | None) -> bool:
+    """Whether the line before the block's ``{`` (blank lines skipped) is a header behind
+    something MOOS does not take for a comment (``#ProcessConfig = X``, ``/*ProcessConfig``)."""
+    if at is None:
+        return False
+    for i in range(at - 1, -1, -1):
+        text = lines[i].text.strip()
+        if text:
+            return bool(_FAKE_HEADER.match(text))
+    return False

@@ -51,11 +51,6 @@ if TYPE_CHECKING:
     from moos_lint.files.source import SourceFile
     from moos_lint.frontends.cpp.model import AppModel
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
-
 STOCK = os.path.join(os.path.dirname(__file__), "stock.json")
 #: goby's MOOS apps and their configuration messages (:mod:`moos_lint.semantics.catalogue.goby`)
 
@@ -153,6 +148,10 @@ class Catalogue:
         self.apps: dict[str, AppInfo] = {}
         self.programs: dict[str, ProgramInfo] = {}
         self.behaviors: dict[str, BehaviorInfo] = {}
+        #: behavior kinds known to exist outside the linted trees, without their parameter
+        #: lists (lower case -> name): those MOOS-IvP's editor mode lists from MIT's other
+        #: public trees (``editor_behaviors`` in ``stock.json``)
+        self.outside_behaviors: dict[str, str] = {}
         self.generic_behavior_params: set[str] = set()
         self.source: dict[str, str] = {}
         #: what a lint run's catalogue was made from (the stock catalogue, each user
@@ -165,6 +164,11 @@ class Catalogue:
 
     def behavior(self, kind: str) -> BehaviorInfo | None:
         return self.behaviors.get(kind.lower())
+
+    def behavior_exists(self, kind: str) -> bool:
+        """Whether ``kind`` is a behavior the catalogue knows, with or without its facts."""
+        low = kind.lower()
+        return low in self.behaviors or low in self.outside_behaviors
 
     def needs_process_config(self, program: str) -> bool | None:
         """Whether ``program`` (a binary name) needs its ProcessConfig block; None: unknown."""
@@ -182,6 +186,7 @@ class Catalogue:
         c.apps = dict(self.apps)
         c.programs = dict(self.programs)
         c.behaviors = dict(self.behaviors)
+        c.outside_behaviors = dict(self.outside_behaviors)
         c.generic_behavior_params = set(self.generic_behavior_params)
         c.source = dict(self.source)
         return c
@@ -272,6 +277,8 @@ def stock() -> Catalogue:
                 forms=_forms(d),
             )
         )
+    for name in data.get("editor_behaviors", {}):
+        cat.outside_behaviors[name.lower()] = name
     return cat
 
 
@@ -300,7 +307,11 @@ def load_user_catalogue(path: str, into: Catalogue) -> None:
             raw = fh.read()
         if path.endswith(".json"):
             data = json.loads(raw.decode("utf-8"))
-        else:
+        else:  # (the TOML reader is imported only when a TOML catalogue is read)
+            if sys.version_info >= (3, 11):
+                import tomllib
+            else:  # pragma: no cover
+                import tomli as tomllib
             data = tomllib.loads(raw.decode("utf-8"))
     except (OSError, UnicodeDecodeError, ValueError) as exc:
         raise CatalogueError(f"{path}: cannot read catalogue: {exc}") from exc

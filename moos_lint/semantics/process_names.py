@@ -1,0 +1,36 @@
+"""The MOOS Conventions' process-name prefix (section 4.1), as one fact for every check.
+
+A process is named ``i``, ``p`` or ``u`` (instrument, pure process, utility)
+followed by an upper-case letter: ``iGPS``, ``pHelmIvP``, ``uXMS``. Both the
+mission check (Run lines, aliases, blocks) and the C++ check (an app's own
+name) word what is wrong with a name the same way, and say it truly: a name
+such as ``pmidca`` starts with a prefix letter and lacks only the upper-case
+letter after it (the message says which letter is missing, not what was meant:
+the first letter may begin a word).
+"""
+
+from __future__ import annotations
+
+import re
+
+#: a name that follows the convention
+PREFIXED = re.compile(r"^[ipu][A-Z]")
+_WORD = re.compile(r"\w+", re.ASCII)
+#: the words for a name without any prefix
+NO_PREFIX = "does not start with `i`, `p` or `u` and an upper-case letter"
+
+
+def prefix_problem(name: str, missing: str = NO_PREFIX) -> str:
+    """What is wrong with ``name``'s prefix, to follow the name in a message (``missing``:
+    the words for a name with no prefix at all); the name does not match :data:`PREFIXED`."""
+    if len(name) > 1 and name[0] in "ipu" and name[1].islower() and _WORD.fullmatch(name):
+        return f"starts with `{name[0]}`, but no upper-case letter follows it"
+    return missing
+
+
+def acronym(app: str) -> str:
+    """The prefix a MOOS-IvP app gives the variables it names after itself: its first
+    letter and its capitals, upper case (uFldRescueMgr: ``UFRM_``, uSimMarine: ``USM_``,
+    uFldShoreBroker: ``UFSB_``); empty for a name of fewer than two capitals."""
+    letters = app[:1] + "".join(c for c in app[1:] if c.isupper())
+    return letters.upper() if len(letters) > 2 else ""
