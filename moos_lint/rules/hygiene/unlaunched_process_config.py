@@ -69,13 +69,13 @@ MOOS-IvP caveats, deliberately not reported:
 """
 
 import re
-import weakref
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import script_names
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
 
 _COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s*([^\s,]+))?", re.I)
@@ -141,34 +141,26 @@ def check(ctx):
         )
 
 
-_INCLUDERS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
 def _launched_by_includer(run, block) -> bool:
     """Whether a mission of the run that includes the fragment holding ``block`` launches
     a process of its name."""
-    names = _names_by_fragment(run).get(block.header.path, ())
+    names = per_run(run, "names-by-fragment", _names_by_fragment).get(block.header.path, ())
     return any(names_match(name, block.name) for name in names)
 
 
-def _names_by_fragment(run) -> dict[str, set[str]]:
-    """Every included file of the run's missions -> the process names (block names of
-    Run lines) launched by the missions that include it; worked out once per run."""
-    units = run.units
-    key = (id(units), len(units), id(units[0]) if units else 0, id(units[-1]) if units else 0)
-    cached = _INCLUDERS.get(run)
-    if cached is None or cached[0] != key:
-        found: dict[str, set[str]] = {}
-        for unit in units:
-            moos = unit.moos
-            if moos is None or not moos.runs:
-                continue
-            launched = {name for r in moos.runs for name in r.block_names}
-            for path in unit.expansion.sources:
-                if path != unit.path:
-                    found.setdefault(path, set()).update(launched)
-        cached = _INCLUDERS[run] = (key, found)
-    return cached[1]
+def _names_by_fragment(units) -> dict[str, set[str]]:
+    """Every included file of the missions -> the process names (block names of Run
+    lines) launched by the missions that include it."""
+    found: dict[str, set[str]] = {}
+    for unit in units:
+        moos = unit.moos
+        if moos is None or not moos.runs:
+            continue
+        launched = {name for r in moos.runs for name in r.block_names}
+        for path in unit.expansion.sources:
+            if path != unit.path:
+                found.setdefault(path, set()).update(launched)
+    return found
 
 
 def _script_words(mission: str, moos) -> frozenset[str]:

@@ -66,11 +66,10 @@ Rename the program, or choose an alias that keeps the program's prefix
 
 from __future__ import annotations
 
-import weakref
-
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 #: MOOS's own programs: the database, the launcher, and MOOS core's command-line tools
@@ -157,23 +156,19 @@ def _aliases(run):
         yield run.alias_from_params, run.binary_span, run.param.line
 
 
-_LAUNCHED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
 def _launched_in_run(run) -> tuple[set[str], set[str]]:
     """Names (lower case) launched by any file of this lint run, and those that are aliases."""
-    units = run.units  # the key is cheap: this runs once per unit of the run
-    key = (id(units), len(units), id(units[0]) if units else 0, id(units[-1]) if units else 0)
-    cached = _LAUNCHED.get(run)
-    if cached is None or cached[0] != key:
-        names: set[str] = set()
-        aliases: set[str] = set()
-        for unit in run.units:
-            for r in unit.moos.runs if unit.moos is not None else ():
-                names.add(r.name.lower())
-                aliases.update(a.lower() for a, _, _ in _aliases(r))
-        cached = _LAUNCHED[run] = (key, names, aliases)
-    return cached[1], cached[2]
+    return per_run(run, "launched-names", _launched)
+
+
+def _launched(units) -> tuple[set[str], set[str]]:
+    names: set[str] = set()
+    aliases: set[str] = set()
+    for unit in units:
+        for r in unit.moos.runs if unit.moos is not None else ():
+            names.add(r.name.lower())
+            aliases.update(a.lower() for a, _, _ in _aliases(r))
+    return names, aliases
 
 
 def cpp_check(ctx):
