@@ -707,8 +707,7 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
 
 
 #: a behavior's entry in MOOS-IvP's Emacs mode: ``'("BHV_Name" "param" ...)``
-_EL_ENTRY = re.compile(r"'\(\s*\"(BHV_\w+)\"([^)]*)\)")
-_EL_WORD = re.compile(r'"([^"\s]+)"')
+_EL_ENTRY = re.compile(r"'\(\s*\"(BHV_\w+)\"")
 EDITOR_BEHAVIORS = "editor-modes/moos-bhvs.el"
 
 
@@ -716,18 +715,13 @@ def editor_behaviors(src: str, stock: set[str]) -> dict[str, dict]:
     """The behavior kinds MOOS-IvP's editor mode (``editor-modes/moos-bhvs.el``) lists that
     the tree does not build: behaviors of MIT's other public trees (moos-ivp-swarm,
     moos-ivp-pavlab: ``BHV_TaskMuster``, ``BHV_ConvoyV21``, ...) that missions load through
-    ``IVP_BEHAVIOR_DIRS``. Their kinds are known; their keyword lists are the editor's
-    (for completion), not a complete parameter list."""
+    ``IVP_BEHAVIOR_DIRS``. Only their kinds are kept: the editor's keyword lists are for
+    completion, not a complete parameter list to judge a behavior by."""
     text = _read(os.path.join(src, EDITOR_BEHAVIORS))
     out: dict[str, dict] = {}
-    for m in _EL_ENTRY.finditer(text):
-        name = m.group(1)
-        if name in stock or name in out:
-            continue
-        out[name] = {
-            "source": EDITOR_BEHAVIORS,
-            "keywords": sorted(set(_EL_WORD.findall(m.group(2)))),
-        }
+    for name in _EL_ENTRY.findall(text):
+        if name not in stock:
+            out.setdefault(name, {"source": EDITOR_BEHAVIORS})
     return dict(sorted(out.items()))
 
 

@@ -80,6 +80,11 @@ class Context:
     def expansion(self) -> Expansion:
         return self.unit.expansion
 
+    def runs(self, code: str) -> bool:
+        """Whether the rule with ``code`` runs in this lint too (two rules that would
+        report one line leave it to the one that runs)."""
+        return any(r.code == code for r in self.run.rules)
+
     def report(
         self,
         span: Span,

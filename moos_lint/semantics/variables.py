@@ -585,31 +585,10 @@ def moos_variables(mf: MoosFile) -> Iterator[VarRef]:
 
 
 # ------------------------------------------------------------------ behaviors
-_BHV_FLAGS = {
-    f"{base}{sep}flag"
-    for base in (
-        "run",
-        "active",
-        "inactive",
-        "idle",
-        "end",
-        "spawn",
-        "runx",
-        "spawnx",
-        "config",
-        "cycle",
-        "wpt",
-        "cn",
-        "leg",
-        "giveup",
-        "pursue",
-    )
-    for sep in ("", "_")
-}
-#: behavior parameters (lower case, leading ``_`` dropped) -> syntax
+#: any behavior parameter whose key ends in ``flag``
 _ANY_FLAG = flag()
+#: the other behavior parameters (lower case, leading ``_`` dropped) -> syntax
 BHV_PARAMS: dict[str, Syntax] = {
-    **{key: flag() for key in _BHV_FLAGS},
     "condition": condition(commas_are_equals=True),
     "lead_condition": condition(),
     "updates": plain(SUBSCRIBE),
@@ -649,8 +628,9 @@ def _bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
         for param in bhv.params:
             syntax = BHV_PARAMS.get(param.lkey)
             if syntax is None and param.lkey.endswith("flag"):
-                # any other ``*flag`` is a var-data pair too (BHV_ZigZag ``zigflag``, the
-                # task behaviors' ``bidwonflag``, a project's own behavior's flags)
+                # every ``*flag`` is a var-data pair: IvPBehavior's (``endflag``,
+                # ``runflag``, ...), BHV_ZigZag's ``zigflag``, the task behaviors'
+                # ``bidwonflag``, a project's own behavior's flags
                 syntax = _ANY_FLAG
             if syntax is None:
                 continue

@@ -45,6 +45,13 @@ def is_comment(text: str) -> bool:
     return text.lstrip().startswith("//")
 
 
+def looks_commented(text: str) -> bool:
+    """A line a reader takes for a comment and MOOS does not: it starts with ``#`` or a
+    single ``/`` (only ``//`` starts a comment; nsplug directives are gone by now)."""
+    text = text.lstrip()
+    return text.startswith("#") or (text.startswith("/") and not text.startswith("//"))
+
+
 def split_param(line: Line) -> Param | None:
     """``key = value`` on one line, or None when the line has no ``=``."""
     text = strip_comment(line.text)
@@ -185,4 +192,4 @@ def parse_moos(expansion: Expansion) -> MoosFile:
     return mf
 
 
-__all__ = ["antler_runs", "parse_moos", "parse_run"]
+__all__ = ["antler_runs", "looks_commented", "parse_moos", "parse_run"]

@@ -84,6 +84,7 @@ import re
 from collections.abc import Sequence
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.moos import looks_commented
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
@@ -167,7 +168,7 @@ def _norm(key: str) -> str:
 )
 def check(ctx):
     moos = ctx.moos
-    r007 = any(r.code == "R007" for r in ctx.run.rules)
+    r007 = ctx.runs("R007")
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
     globals_known += sorted(_repo_globals(ctx.run))
     if any(b.text_format for b in moos.blocks) or any(
@@ -219,7 +220,7 @@ def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequenc
             line=p.line,
         )
         return
-    commented = key.startswith("#") or (key.startswith("/") and not key.startswith("//"))
+    commented = looks_commented(key)
     if commented and r007:
         return  # not-a-comment reports this line
     if commented:

@@ -32,12 +32,13 @@ None.
 import re
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.moos import looks_commented
 from moos_lint.rules.kit.declare import Scope, rule
 
 
 @rule(code="R004", name="orphan-block", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
-    r007 = any(r.code == "R007" for r in ctx.run.rules)
+    r007 = ctx.runs("R007")
     index: dict[int, int] | None = None
     for block in ctx.moos.orphan_blocks:
         if r007:
@@ -52,7 +53,7 @@ def check(ctx):
         )
 
 
-_FAKE_HEADER = re.compile(r"^(?:#|/(?!/))[#/*\s]*processconfig\s*=", re.IGNORECASE)
+_HEADER = re.compile(r"[#/*\s]*processconfig\s*=", re.IGNORECASE)
 
 
 def _hidden_header(lines, at: int | None) -> bool:
@@ -63,5 +64,5 @@ def _hidden_header(lines, at: int | None) -> bool:
     for i in range(at - 1, -1, -1):
         text = lines[i].text.strip()
         if text:
-            return bool(_FAKE_HEADER.match(text))
+            return looks_commented(text) and bool(_HEADER.match(text))
     return False
