@@ -142,6 +142,27 @@ def test_discovery_leaves_pantlers_copy_of_a_mission_beside_it(tmp_path):
     assert [os.path.basename(f) for f in named] == ["alpha.moos++"]
 
 
+def test_discovery_leaves_nsplugs_output_beside_its_template(tmp_path):
+    from moos_lint.files.discovery import discover
+
+    missions = tmp_path / "missions"
+    missions.mkdir()
+    for name in ("meta_vehicle.moos", "meta_vehicle.bhv", "targ_alpha.moos", "targ_alpha.bhv"):
+        (missions / name).write_text("ServerPort = 9000\n")
+    archive = tmp_path / "archive"  # targ files kept without their template
+    archive.mkdir()
+    (archive / "targ_alpha.moos").write_text("ServerPort = 9000\n")
+    found = discover([tmp_path], [], str(tmp_path)).files
+    assert [os.path.relpath(f, tmp_path) for f in found] == [
+        os.path.join("archive", "targ_alpha.moos"),
+        os.path.join("missions", "meta_vehicle.bhv"),
+        os.path.join("missions", "meta_vehicle.moos"),
+    ]
+    # named on the command line (a pre-commit hook on a committed targ file), it is linted
+    named = discover([missions / "targ_alpha.moos"], [], str(tmp_path)).files
+    assert [os.path.basename(f) for f in named] == ["targ_alpha.moos"]
+
+
 @pytest.mark.parametrize("newline", ["\n", "\r\n", "\r"])
 def test_positions_hold_for_every_line_ending(tmp_path, newline):
     app = tmp_path / "pFoo"

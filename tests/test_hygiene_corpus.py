@@ -55,7 +55,20 @@ def test_unlaunched_process_config(corpus):
         (f"{MISSIONS}/m2_berta/meta_shoreside.moos", 106, "H001"),  # uLoadWatch
         (f"{MISSIONS}/m8_hugo/meta_shoreside.moos", 103, "H001"),  # pMOOSBridge
         (f"{MISSIONS}/t1_field_scope/alpha.moos", 62, "H001"),  # uProcessWatch
-        # Run line commented out, block left behind
+    }
+
+
+def test_unlaunched_process_config_commented_runs():
+    """Blocks whose Run line is commented out are switched off on purpose, unless the
+    ``commented-runs`` option asks for them."""
+    paths = [
+        CORPUS / MISSIONS / "m2_berta_otest" / "meta_vehicle.moos",
+        CORPUS / MISSIONS / "s1_alpha_msurvey" / "alpha.moos",
+        CORPUS / MISSIONS / "t1_alpha" / "alpha.moos",
+    ]
+    assert _findings(paths, ["H001"]) == set()
+    opts = {"unlaunched-process-config": {"commented-runs": True}}
+    assert _findings(paths, ["H001"], **opts) == {
         (f"{MISSIONS}/m2_berta_otest/meta_vehicle.moos", 39, "H001"),  # uTimerScript
         (f"{MISSIONS}/s1_alpha_msurvey/alpha.moos", 40, "H001"),  # pMovingSurvey
         (f"{MISSIONS}/t1_alpha/alpha.moos", 54, "H001"),  # iSay

@@ -81,6 +81,15 @@ def test_manual_apps_option(tmp_path):
     assert "`uXMS`" in d.message
 
 
+def test_commented_runs_option(tmp_path):
+    text = MISSION.replace("}\n", "  //Run = uTimerScript @ NewConsole = false\n}\n", 1)
+    files = {"m.moos": text + "ProcessConfig = uTimerScript\n{\n  event = var=A, val=1\n}\n"}
+    assert _lint(tmp_path, files, ["H001"]) == []
+    opts = {"unlaunched-process-config": {"commented-runs": True}}
+    (d,) = _lint(tmp_path, files, ["H001"], **opts)
+    assert "its Run line is commented out at m.moos:" in d.message
+
+
 def test_needs_no_config_option(tmp_path):
     files = {"m.moos": MISSION}
     assert _lint(tmp_path, files, ["H002"]) == []

@@ -93,8 +93,10 @@ def discover(
 ) -> Discovered:
     """Walk ``paths``; directories are searched, files given by name are always taken.
 
-    A ``mission.moos++`` beside ``mission.moos`` is pAntler's expanded copy of it, not
-    linted a second time. With ``respect_gitignore``, what git ignores is not linted (see
+    A ``mission.moos++`` beside ``mission.moos`` is pAntler's expanded copy of it, and a
+    ``targ_*.moos`` (``targ_*.bhv``) beside a ``meta_*.moos`` (``meta_*.bhv``) is what the
+    launch script made of the template with nsplug: neither is linted a second time. With
+    ``respect_gitignore``, what git ignores is not linted (see
     :mod:`moos_lint.files.gitignore`). A file named on the command line is linted even when
     git ignores it, as ruff does; a folder named there is walked, and what is
     ignored below it is left out.
@@ -162,6 +164,8 @@ def discover(
                     continue
                 if f.endswith("++") and f[:-2] in present:
                     continue  # pAntler's copy of the mission beside it (``clean.sh`` removes it)
+                if _generated_beside_template(f, present):
+                    continue  # nsplug's output of the template beside it
                 rel = prefix + f
                 if _excluded(rel, f, patterns):
                     continue
@@ -171,3 +175,14 @@ def discover(
                 files.add(full)
     inputs = sorted(ignorer.inputs) if ignorer is not None else []
     return Discovered(sorted(files), missing, folders, inputs)
+
+
+def _generated_beside_template(name: str, present: set[str]) -> bool:
+    """Whether ``name`` is a ``targ_`` file that nsplug made from a ``meta_`` template of the
+    same suffix in its folder (``present``: the folder's file names): MOOS-IvP's launch
+    scripts write ``nsplug meta_vehicle.moos targ_$VNAME.moos``; the findings are the
+    template's, reported there."""
+    if not name.startswith("targ_"):
+        return False
+    suffix = os.path.splitext(name)[1]
+    return any(p.startswith("meta_") and p.endswith(suffix) and len(p) > 5 for p in present)

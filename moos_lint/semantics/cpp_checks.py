@@ -69,13 +69,17 @@ def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_app or not name or not re.match(r"^[pu][A-Z0-9_]", name):
         return
-    uses = [u for u in app.io if u.device]
-    termios = [u for u in app.io if u.kind == "termios"]
+    # a type named like a link (``UdpDecoder``) that is the app's own class is no evidence:
+    # what it does shows in its calls, includes and strings
+    own = {*app.base_chain, *(c.name for f in app.files for c in f.classes)}
+    io = [u for u in app.io if not (u.kind in ("socket", "serial") and u.detail in own)]
+    uses = [u for u in io if u.device]
+    termios = [u for u in io if u.kind == "termios"]
     if termios and any(u.kind == "serial" for u in uses):
         uses = [*uses, *termios]
-    bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in app.io)
+    bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in io)
     if sockets and name.startswith("p") and not bridge:
-        uses += [u for u in app.io if u.kind == "socket"]
+        uses += [u for u in io if u.kind == "socket"]
     if not uses:
         return
     first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))

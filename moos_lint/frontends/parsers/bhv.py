@@ -23,6 +23,7 @@ from moos_lint.frontends.parsers.nodes import (
     BhvParam,
     Initialize,
     SetBlock,
+    conflict_marker,
     has_macro,
 )
 
@@ -230,6 +231,10 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                 continue
             if has_macro(text):
                 continue  # a line an nsplug macro supplies at launch: not known here
+            if conflict_marker(text):
+                marker = "a merge-conflict marker: the file was committed mid-merge"
+                bf.invalid.append((src, marker))
+                continue
             bf.invalid.append((src, "the helm does not understand this line"))
     if state in ("bhv", "bhv-wait") and behavior is not None:
         bf.unclosed.append(behavior.header)

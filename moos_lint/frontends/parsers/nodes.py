@@ -7,6 +7,7 @@ finding maps back to the file and line the user edits.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 from moos_lint.files.diagnostics import Span
@@ -44,6 +45,16 @@ MOOS_GLOBALS = [
     "Playback",
     "ProcessConfig",
 ]
+
+
+#: the lines git writes around the two sides of a conflict (``<<<<<<< HEAD``, ``=======``,
+#: ``>>>>>>> branch``; ``|||||||`` in diff3 style)
+_CONFLICT = re.compile(r"(?:<{7}|>{7}|\|{7})(?:\s|$)|={7}\s*$")
+
+
+def conflict_marker(text: str) -> bool:
+    """True when ``text`` (stripped) is a merge-conflict marker left in the file."""
+    return _CONFLICT.match(text) is not None
 
 
 def has_macro(text: str) -> bool:

@@ -8,7 +8,10 @@ code does device I/O: a serial-port class (`CMOOSSerialPort`,
 libusb. A `p` app is also reported for socket I/O (`socket`, `connect`,
 `bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
 `add_any_connection`): a vehicle, a sensor or a service spoken to in a
-protocol that is not MOOS. The finding is on the first such use.
+protocol that is not MOOS. The finding is on the first such use. The app's
+own classes are no evidence by their names (`class UdpDecoder : public
+CMOOSApp` decodes what another app received): what they do shows in their
+calls, includes and strings.
 
 The app's own helper files count too: a C++ file of the app's folder that
 never names the MOOS API (a class that opens the port or the link) is read for

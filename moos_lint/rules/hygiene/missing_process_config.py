@@ -38,7 +38,11 @@ it names the existing block.
   uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS), those that read their
   block only when there is one (uMAC, uPokeDB), MOOSDB and the uMS scope
   (top-of-file settings only) and pAntler (it reads the ANTLER block); an app
-  linted in the same run needs its block unless its C++ declares it optional;
+  linted in the same run needs its block unless its C++ declares it optional,
+  or it is a plain CMOOSApp whose start-up compares keys with the `foo` and
+  `bar` placeholders of MOOS-IvP's GenMOOSApp template and nothing else (core
+  MOOS says nothing when its block is missing, so it runs the same without
+  one);
   a user catalogue says `needs_process_config = false`. A program the
   catalogue does not know is expected to have a block. In MOOS-IvP's own
   missions none of the 109 MOOSDB Run lines and 45 of the 49 pRealm Run lines

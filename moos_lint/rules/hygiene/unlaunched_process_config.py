@@ -11,28 +11,30 @@ missions that include it; the finding points at the block in the fragment,
 with the include chain.
 
 ## Why is this bad?
-No process ever reads the block. Typically its Run line was commented out
-(`//Run = uTimerScript @ NewConsole = false`) and the block was left to rot:
-edits to it have no effect, and readers of the mission believe the process
-runs.
+No process ever reads the block: edits to it have no effect, and readers of
+the mission believe the process runs. Often the block's name and the Run
+line's name differ (a block written for `iGPS` while `iGPS_KF` is launched,
+a Run line naming the plug file `uProcessWatch_fld` instead of the program):
+then the launched process runs without its configuration too, and
+missing-process-config (H002) reports its Run line.
 
 ## Example
 ```moos
 ProcessConfig = ANTLER
 {
   Run = MOOSDB   @ NewConsole = false
-  //Run = uTimerScript @ NewConsole = false
+  Run = iGPS_KF  @ NewConsole = false
 }
 
-ProcessConfig = uTimerScript
+ProcessConfig = iGPS
 {
-  event = var=DEPLOY, val=true, time=10
+  port = /dev/ttyUSB0
 }
 ```
 
 ## How to fix
-Launch the process (restore its Run line), or delete the block. To keep a
-block around for a process started by hand, declare the app
+Launch the process, give the block the launched name, or delete the block.
+To keep a block around for a process started by hand, declare the app
 `launched_manually = true` in a catalogue file, list it in `manual-apps`, or
 suppress the finding on the header line.
 
@@ -45,6 +47,12 @@ suppress the finding on the header line.
   `Usage: APP file.moos`), the uMS scope, and the apps a user catalogue
   declares `launched_manually = true`. A block whose name *starts with* one of
   these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
+- `commented-runs` (boolean, default false): also report a block whose Run
+  line is commented out in the ANTLER block (`//Run = uTimerScript ...`).
+  Commenting a Run line out while keeping its block is how MOOS users switch a
+  process off for a while (a simulator for field runs, a logger, a timer
+  script; 4 of the 8 such blocks in MOOS-IvP's own missions), so by default
+  such a block is taken as switched off on purpose.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
@@ -86,7 +94,7 @@ _COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s
     name="unlaunched-process-config",
     severity=Severity.WARNING,
     scope=Scope.MISSION,
-    options={"manual-apps": None},
+    options={"manual-apps": None, "commented-runs": False},
 )
 def check(ctx):
     moos = ctx.moos
@@ -133,6 +141,8 @@ def check(ctx):
         if commented is None:
             commented = _commented_runs(moos)
         hint = commented.get(block.name.lower())
+        if hint and ctx.options.get("commented-runs") is not True:
+            continue  # switched off on purpose
         why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
         yield ctx.report(
             block.name_span,

@@ -5,7 +5,8 @@ Reports a line of a `.bhv` file that the IvP helm's behavior-file reader does
 not accept: a top-level line that is not `initialize`, `Behavior =`, `set`,
 a brace or a comment; a Behavior-block line without `=`; an `initialize`
 followed by a tab or with a malformed `VAR=VALUE` pair; a `#` line (not a
-comment in a behavior file).
+comment in a behavior file); a merge-conflict marker (`<<<<<<< HEAD`), named
+as such.
 
 A run of consecutive lines rejected for the same reason (a `/* ... */` block,
 a pasted paragraph) is one finding, on its first line.
@@ -61,5 +62,6 @@ def check(ctx):
             runs.append([(line, reason)])
     for run in runs:
         line, reason = run[0]
-        more = f" (and the {len(run) - 1} lines after it)" if len(run) > 1 else ""
+        after = "the line after it" if len(run) == 2 else f"the {len(run) - 1} lines after it"
+        more = f" (and {after})" if len(run) > 1 else ""
         yield ctx.at_line(line, f"{reason}{more}: the helm fails to load the whole behavior file")

@@ -7,7 +7,9 @@ Reports a line in a `.moos` file that MOOS cannot read as anything: it has no
 ## Why is this bad?
 MOOS drops such a line without a word. It is usually a typo (`AppTick 4`,
 a missing `=`) or a leftover note, and whatever the author meant it to set is
-not set.
+not set. A merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as
+such: the file was committed in the middle of a merge, and MOOS reads the lines
+of both sides, the later line of a key winning or both kept.
 
 ## Example
 ```moos
@@ -32,6 +34,7 @@ None.
 """
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.nodes import conflict_marker
 from moos_lint.rules.kit.declare import Scope, rule
 
 
@@ -41,6 +44,10 @@ def check(ctx):
         text = line.text.strip()
         if text.startswith("#") or (text.startswith("/") and not text.startswith("//")):
             continue  # reported by not-a-comment / the nsplug rules
+        if conflict_marker(text):
+            msg = "a merge-conflict marker: the file was committed mid-merge, and MOOS reads "
+            yield ctx.at_line(line, msg + "the lines of both sides")
+            continue
         yield ctx.at_line(line, "MOOS cannot read this line: it has no `key = value` form")
     for block in ctx.moos.blocks:
         for line, start, end, why in block.text_errors:

@@ -2,13 +2,19 @@
 
 ## What it does
 Reports a line starting with `#` that is not an nsplug directive, and a line
-starting with a single `/`. In a `.moos` file only `//` starts a comment.
+starting with a single `/`, when MOOS reads it: when it holds `=` (or a `[`,
+`]` or brace, which MOOS also keeps). In a `.moos` file only `//` starts a
+comment.
 
 ## Why is this bad?
 MOOS reads `#Run = pFoo` as a live line whose key is `#Run`: the Run line is
 not a Run line any more, so the process silently never launches, and
-`#LatOrigin = 43.8` silently drops the origin. A line such as
-`/ old comment` is read as a live line too, dropped only for lacking `=`.
+`#LatOrigin = 43.8` silently drops the origin. Inside a block the line is
+handed to the app, and an AppCasting app reports `#share = ...` as an
+unhandled configuration line. A line without `=` (a `/--------` banner, the
+lines of a `/* ... */` comment) is dropped by MOOS unread, as a comment would
+be, so it is not reported (`ProcessConfigReader::GetConfiguration` keeps only
+`key=value` lines and lines with `[` or `]`).
 
 ## Example
 ```moos
@@ -39,7 +45,7 @@ def check(ctx):
     }
     for line in ctx.moos.lines:
         text = line.text.lstrip()
-        if (line.path, line.lineno) in flagged:
+        if (line.path, line.lineno) in flagged or not _kept(text):
             continue
         if text.startswith("#"):
             yield ctx.at_line(
@@ -51,3 +57,9 @@ def check(ctx):
                 line,
                 "a single `/` does not start a comment: MOOS reads this line (use `//`)",
             )
+
+
+def _kept(text: str) -> bool:
+    """Whether MOOS keeps the line (``text``: stripped on the left): a line without
+    ``=``, ``[``, ``]`` or a brace is dropped unread, like a comment."""
+    return any(c in text for c in "=[]{}")

@@ -382,6 +382,9 @@ _UNHANDLED = re.compile(r"reportUnhandledConfigWarning")
 #: an AppCasting app whose start-up declares its block optional (``OnStartUpDirectives(
 #: "must_have_moosblock=false")``); any other app needs its block
 OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
+#: the keys MOOS-IvP's app templates leave for the author to replace (``if(param ==
+#: "foo")``, ``else if(param == "bar")``: scripts/GenMOOSApp, scripts/GenMOOSApp_AppCasting)
+TEMPLATE_KEYS = frozenset({"foo", "bar"})
 #: the app reads the origin of the local grid (the stock catalogue's test, generate.py)
 READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 #: ``else handled = m_viewer.setParam(param, value);``: a final ``else`` that hands any
@@ -391,6 +394,22 @@ READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 DELEGATE = re.compile(
     r"else(?<=\belse)\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
 )
+
+
+def _needs_block(app: AppModel, text: str) -> bool:
+    """Whether the app runs as intended only with its ProcessConfig block.
+
+    Not when its start-up declares the block optional (AppCasting's
+    ``must_have_moosblock=false``), nor when it is a plain CMOOSApp whose start-up
+    compares keys with the template's placeholders only: core MOOS says nothing of a
+    missing block (CMOOSApp reads AppTick and CommsTick with defaults, MOOSApp.cpp), so
+    such an app runs the same without one. An app whose keys cannot be seen (none
+    found: it may parse its lines its own way, as pShare does) needs its block.
+    """
+    if OPTIONAL_BLOCK.search(text):
+        return False
+    keys = {c.text for c in app.config_params}
+    return not (app.base_chain[1:] == ["CMOOSApp"] and keys and keys <= TEMPLATE_KEYS)
 
 
 def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppInfo:
@@ -417,7 +436,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         subscribes={s.name.text for s in app.subscriptions if s.name.text},
         subscribes_dynamic=any(s.name.dynamic for s in app.subscriptions),
         needs_origin=bool(READS_ORIGIN.search(text)),
-        needs_process_config=not OPTIONAL_BLOCK.search(text),
+        needs_process_config=_needs_block(app, text),
         provenance=f"C++ {_shown(app.folder)}",
         published_keys=_published_keys(app),
     )
