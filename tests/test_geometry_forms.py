@@ -311,3 +311,23 @@ def test_problem_reports_only_sure_rejections():
 def test_odd_input_never_raises(value):
     for form in ("convex_polygon", "waypoints", "point", "point|start"):
         assert judge(form, value).status in (VALID, INVALID, UNKNOWN)
+
+
+@pytest.mark.parametrize(
+    ("text", "pair"),
+    [
+        ("MODE=SURVEY", ("MODE", "SURVEY")),
+        ("  MODE = SURVEY  ", ("MODE", "SURVEY")),
+        ("MODE==SURVEY", ("MODE", "=SURVEY")),  # split at the first `=`
+        ("<25 CLOSE = true", ("CLOSE", "true")),  # a post tag in front
+        ("#shoreside DEPLOY=false", ("DEPLOY", "false")),  # a destination tag
+        ("NEXT=$[INDEX] [if] MODE=RUN", ("NEXT", "$[INDEX]")),  # a condition behind
+        ("MODE=", None),  # an empty side: rejected
+        ("=SURVEY", None),
+        ("", None),
+    ],
+)
+def test_var_data_pair_splits_as_the_helm_does(text, pair):
+    from moos_lint.semantics.mbutil import var_data_pair
+
+    assert var_data_pair(text) == pair

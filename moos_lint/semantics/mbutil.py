@@ -59,3 +59,22 @@ def is_number(s: str) -> bool:
         else:
             return False
     return digits > 0
+
+
+def var_data_pair(s: str) -> tuple[str, str] | None:
+    """``setVarDataPairOnString`` (``lib_mbutil/VarDataPairUtils.cpp``), how a behavior's
+    flag is read: a ``@``/``<``/``>`` post tag and a ``#`` destination tag in front and an
+    ``[if]`` condition behind are set aside, and the rest is split at its first ``=``
+    (``VAR=VALUE``); None when either side is empty (the flag is rejected)."""
+    s = strip_blank_ends(s)
+    if not s:
+        return None
+    if s[0] in "@<>":
+        _, s = bite_x(s, " ")
+    if s[:1] == "#":
+        _, s = bite_x(s, "#")
+        _, s = bite_x(s, " ")
+    if "[if]" in s:
+        s = s[: s.rfind("[if]")]
+    var, val = bite_x(s, "=")
+    return (var, val) if var and val else None

@@ -604,6 +604,13 @@ BHV_PARAMS: dict[str, Syntax] = {
 }
 
 
+def is_flag_param(lkey: str) -> bool:
+    """Whether a behavior parameter (lower case) is a flag, a var-data pair the helm
+    posts: every ``*flag`` is, IvPBehavior's (``endflag``, ``runflag``, ...), BHV_ZigZag's
+    ``zigflag``, the task behaviors' ``bidwonflag``, a project's own behavior's flags."""
+    return lkey.endswith("flag")
+
+
 def bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
     """Every variable a ``.bhv`` file names (worked out once per parsed file)."""
     return iter(derived(bf.expansion, "bhv_variables", lambda: tuple(_bhv_variables(bf))))
@@ -627,10 +634,7 @@ def _bhv_variables(bf: BehaviorFile) -> Iterator[VarRef]:
     for bhv in bf.behaviors:
         for param in bhv.params:
             syntax = BHV_PARAMS.get(param.lkey)
-            if syntax is None and param.lkey.endswith("flag"):
-                # every ``*flag`` is a var-data pair: IvPBehavior's (``endflag``,
-                # ``runflag``, ...), BHV_ZigZag's ``zigflag``, the task behaviors'
-                # ``bidwonflag``, a project's own behavior's flags
+            if syntax is None and is_flag_param(param.lkey):
                 syntax = _ANY_FLAG
             if syntax is None:
                 continue

@@ -47,6 +47,10 @@ as recorded in the catalogue with the source line that enforces it:
 - a route such as uFldNodeBroker's and uFldShoreBroker's
   `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
   rejected and nothing is bridged;
+- a behavior's flag (`endflag`, `runflag`, any `*flag`) written as a
+  condition, `endflag = MODE==SURVEYING`: the helm splits a flag at its first
+  `=` (`setVarDataPairOnString`), so it posts `MODE` = `=SURVEYING`, a value
+  no condition on `MODE` expects; the fix drops one `=`;
 - `AppTick` and `MaxAppTick` (every MOOS app) are read with
   `GetConfigurationParam(double)`, which ignores a value that does not start
   with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
@@ -97,14 +101,15 @@ MOOS-IvP caveats, deliberately not reported:
 
 import re
 
-from moos_lint.files.diagnostics import Severity
+from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup
 from moos_lint.rules.mission.unknown_parameter import block_apps, text_blocks
 from moos_lint.semantics.catalogue import text_format_schema
 from moos_lint.semantics.geometry_forms import INVALID, is_geometry_form, judge
-from moos_lint.semantics.mbutil import is_number
+from moos_lint.semantics.mbutil import is_number, var_data_pair
+from moos_lint.semantics.variables import is_flag_param
 
 BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
 _MOOS_DOUBLE = re.compile(r"^[0-9-]")
@@ -190,6 +195,7 @@ def problem(form: str, value: str) -> str | None:
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.BHV),
+    fixable=True,
 )
 def check(ctx):
     if ctx.moos is not None:
@@ -210,6 +216,35 @@ def check(ctx):
                 got = info.forms.get(p.lkey)
                 if got is not None:
                     yield from _judge(ctx, p, p.value.strip(), got, info.name)
+        for bhv in ctx.bhv.behaviors:
+            for p in bhv.params:
+                if is_flag_param(p.lkey):
+                    yield from _double_equals(ctx, p)
+
+
+def _double_equals(ctx, p):
+    """A flag written as a condition (``runflag = MODE==SURVEY``): the helm splits it at
+    its first ``=`` and posts ``MODE`` = ``=SURVEY``."""
+    pair = var_data_pair(p.value)
+    if pair is None or not pair[1].startswith("=") or has_macro(p.value):
+        return
+    var, val = pair
+    meant = val.lstrip("=").strip()
+    if not meant:
+        return
+    start = p.line.text.find("==", p.value_start, p.value_end)
+    at = p.line.text.find("=", p.value_start, p.value_end)
+    fix = None
+    if start == at >= 0 and p.line.text == p.line.raw:  # one `=` fewer is meant
+        edit = Edit(p.line.span(start, start + 2), "=")
+        fix = Fix(f"post `{var}={meant}`", (edit,))
+    yield ctx.report(
+        p.value_span,
+        f"`{p.key.strip()} = {p.value.strip()}` posts `{var}` = `{val}`: the helm splits a "
+        f"flag at its first `=` (setVarDataPairOnString), so `{var}` never reads `{meant}`",
+        line=p.line,
+        fix=fix,
+    )
 
 
 def _text_enums(ctx):
