@@ -185,4 +185,4 @@ def _generated_beside_template(name: str, present: set[str]) -> bool:
     if not name.startswith("targ_"):
         return False
     suffix = os.path.splitext(name)[1]
-    return any(p.startswith("meta_") and p.endswith(suffix) and len(p) > 5 for p in present)
+    return any(p.startswith("meta_") and p.endswith(suffix) for p in present)

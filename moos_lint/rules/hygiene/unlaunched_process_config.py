@@ -141,7 +141,7 @@ def check(ctx):
         if commented is None:
             commented = _commented_runs(moos)
         hint = commented.get(block.name.lower())
-        if hint and ctx.options.get("commented-runs") is not True:
+        if hint and not ctx.options.get("commented-runs"):
             continue  # switched off on purpose
         why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
         yield ctx.report(

@@ -210,16 +210,12 @@ def check(ctx):
     if ctx.bhv is not None:
         for bhv in ctx.bhv.behaviors:
             info, _known = lookup(ctx, bhv.kind.strip())
-            if info is None:
-                continue
             for p in bhv.params:
-                got = info.forms.get(p.lkey)
-                if got is not None:
-                    yield from _judge(ctx, p, p.value.strip(), got, info.name)
-        for bhv in ctx.bhv.behaviors:
-            for p in bhv.params:
-                if is_flag_param(p.lkey):
+                if is_flag_param(p.lkey):  # any behavior's, known to the catalogue or not
                     yield from _double_equals(ctx, p)
+                got = None if info is None else info.forms.get(p.lkey)
+                if info is not None and got is not None:
+                    yield from _judge(ctx, p, p.value.strip(), got, info.name)
 
 
 def _double_equals(ctx, p):

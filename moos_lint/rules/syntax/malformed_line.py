@@ -34,6 +34,7 @@ None.
 """
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.moos import looks_commented
 from moos_lint.frontends.parsers.nodes import conflict_marker
 from moos_lint.rules.kit.declare import Scope, rule
 
@@ -42,8 +43,8 @@ from moos_lint.rules.kit.declare import Scope, rule
 def check(ctx):
     for line in ctx.moos.malformed:
         text = line.text.strip()
-        if text.startswith("#") or (text.startswith("/") and not text.startswith("//")):
-            continue  # reported by not-a-comment / the nsplug rules
+        if looks_commented(text):
+            continue  # not-a-comment's (when MOOS keeps the line) or the nsplug rules'
         if conflict_marker(text):
             msg = "a merge-conflict marker: the file was committed mid-merge, and MOOS reads "
             yield ctx.at_line(line, msg + "the lines of both sides")

@@ -33,6 +33,7 @@ None.
 """
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.parsers.moos import looks_commented
 from moos_lint.rules.kit.declare import Scope, rule
 
 
@@ -44,15 +45,15 @@ def check(ctx):
         if p.kind in ("unknown-directive", "malformed-directive")
     }
     for line in ctx.moos.lines:
-        text = line.text.lstrip()
-        if (line.path, line.lineno) in flagged or not _kept(text):
+        text = line.text
+        if not looks_commented(text) or not _kept(text) or (line.path, line.lineno) in flagged:
             continue
-        if text.startswith("#"):
+        if text.lstrip().startswith("#"):
             yield ctx.at_line(
                 line,
                 "`#` does not start a comment in a .moos file: MOOS reads this line (use `//`)",
             )
-        elif text.startswith("/") and not text.startswith("//"):
+        else:
             yield ctx.at_line(
                 line,
                 "a single `/` does not start a comment: MOOS reads this line (use `//`)",
@@ -60,6 +61,6 @@ def check(ctx):
 
 
 def _kept(text: str) -> bool:
-    """Whether MOOS keeps the line (``text``: stripped on the left): a line without
-    ``=``, ``[``, ``]`` or a brace is dropped unread, like a comment."""
+    """Whether MOOS keeps the line: a line without ``=``, ``[``, ``]`` or a brace is
+    dropped unread, like a comment."""
     return any(c in text for c in "=[]{}")
