@@ -409,7 +409,8 @@ class _Builder:
             if run.name.lower() in seen:
                 continue
             seen.add(run.name.lower())
-            block = _block_for(m.moos, run.name)
+            reads = self.cat.block_names(run)  # (an app's main may hard-code its name)
+            block = _block_for(m.moos, run.name if reads == run.block_names else reads[0])
             proc = Process(run.name, binary, run, block, self.cat.app(binary))
             m.processes.append(proc)
             low = binary.lower()

@@ -218,6 +218,7 @@ def link_apps(apps: list[AppModel]) -> None:
                 bases.setdefault(c.name, []).extend(c.bases)
     for app in apps:
         app.app_class, app.base_chain, app.process_name = None, [], None
+        app.executable = None
         _find_app_class(app, bases)
         if app.is_app:
             _process_name(app)
@@ -248,12 +249,13 @@ def _find_app_class(app: AppModel, bases: dict[str, list[str]]) -> None:
 
 
 def _process_name(app: AppModel) -> None:
+    found = executable_name(app.folder)
+    app.executable = found[0] if found is not None else None
     for f in app.files:
         if f.has_main and f.run_names:
             app.process_name, app.process_name_span = f.run_names[0]
             app.process_name_source = "run"
             return
-    found = executable_name(app.folder)
     if found is not None:
         app.process_name = found[0]
         app.process_name_source = "cmake"

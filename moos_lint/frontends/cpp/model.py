@@ -167,6 +167,8 @@ class AppModel:
     process_name: str | None = None
     process_name_source: str = ""  # "run" | "cmake" | "folder"
     process_name_span: Span | None = None
+    #: the executable CMake builds from the folder (what a Run line names), when clear
+    executable: str | None = None
     backend: str = "tree-sitter"
 
     @property

@@ -5,7 +5,11 @@ In a mission (a `.moos` file with an ANTLER block, after nsplug expansion, its
 includes included), reports a `Run` line whose process has no
 `ProcessConfig = NAME` block. `NAME` is the Run line's `~ alias` when there is
 one (or `--alias=` passed through `ExtraProcessParams`), otherwise the program
-name; MOOS compares it with block names without regard to case.
+name; MOOS compares it with block names without regard to case. An app linted in
+the same run whose `main` passes a literal name to `Run`
+(`GPSInstrument.Run("iGPS_MB1", mission)`) while CMake builds it under another
+(`add_executable(iGPS ...)`) connects under that literal whatever its Run line
+or alias says, and reads only the block of that name.
 
 ## Why is this bad?
 The process starts on its built-in defaults. MOOS-IvP apps built on
@@ -112,15 +116,22 @@ def check(ctx):
             continue
         if run.script_block is not None:
             continue  # a script reads its configuration its own way, if at all
+        reads = cat.block_names(run)
         if any(
             names_match(b.name, n) and not exclusive(b.header, run.param.line, ctx.expansion)
-            for n in run.block_names
+            for n in reads
             for b in (*by_name.get(n.lower(), ()), *any_name)
         ):
             continue
+        if reads == run.block_names:
+            why = f"has no `ProcessConfig = {name}` block"
+        else:
+            why = (
+                f"connects as `{reads[0]}` (its main passes that name to Run) and has no "
+                f"`ProcessConfig = {reads[0]}` block"
+            )
         yield ctx.report(
             run.name_span,
-            f"`{name}` is launched but has no `ProcessConfig = {name}` block: "
-            "it runs on its defaults",
+            f"`{name}` is launched but {why}: it runs on its defaults",
             line=run.param.line,
         )

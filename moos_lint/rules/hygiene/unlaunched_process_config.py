@@ -5,8 +5,11 @@ In a mission (a `.moos` file with an ANTLER block, after nsplug expansion, its
 includes included), reports a `ProcessConfig = NAME` block when no `Run` line
 of the ANTLER block starts a process called `NAME`. The process name is the
 `~ alias` of the Run line when there is one (or `--alias=` passed through
-`ExtraProcessParams`), otherwise the program name. Names compare without
-regard to case, as MOOS looks blocks up. A plug fragment is judged in the
+`ExtraProcessParams`), otherwise the program name; an app linted in the same
+run whose `main` passes a literal name to `Run` (`Run("iGPS_MB1", mission)`)
+while CMake builds it under another (`add_executable(iGPS ...)`) reads only
+the block of that literal, whatever its Run line says, and the message says
+so. Names compare without regard to case, as MOOS looks blocks up. A plug fragment is judged in the
 missions that include it; the finding points at the block in the fragment,
 with the include chain.
 
@@ -103,19 +106,22 @@ def check(ctx):
     given = ctx.options.get("manual-apps")
     if isinstance(given, str):
         given = [given]
+    cat = catalogue_for(ctx.run)
     if given is None:
-        manual = catalogue_for(ctx.run).started_by_hand()
+        manual = cat.started_by_hand()
     else:
         manual = [str(a).lower() for a in given]
     # the Run lines by name (a name with a macro may match any block): each block looks
     # at the lines that may launch it, not at every Run line
     by_name: dict[str, list] = {}
     any_name: list = []
+    reads = {id(run): cat.block_names(run) for run in moos.runs}
+    elsewhere = _reads_other(moos.runs, reads)
     for run in moos.runs:
         if has_macro(run.name):
             any_name.append(run)
         else:
-            for name in run.block_names:
+            for name in reads[id(run)]:
                 by_name.setdefault(name.lower(), []).append(run)
     commented: dict[str, str] | None = None
     scripts: frozenset[str] | None = None  # what the launched scripts quote
@@ -127,12 +133,20 @@ def check(ctx):
         if has_macro(block.name) or any(block.lname.startswith(m) for m in manual if m):
             continue
         if any(
-            any(names_match(name, block.name) for name in run.block_names)
+            any(names_match(name, block.name) for name in reads[id(run)])
             and not exclusive(run.param.line, block.header, ctx.expansion)
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
-        if block.header.path != ctx.path and _launched_by_includer(ctx.run, block):
+        fixed = elsewhere.get(block.lname)
+        if fixed is not None:
+            yield ctx.report(
+                block.name_span,
+                f"no process reads block `{block.name}`: {fixed} (rename the block)",
+                line=block.header,
+            )
+            continue
+        if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat):
             continue  # a shared fragment: another mission that includes it launches it
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
@@ -151,22 +165,38 @@ def check(ctx):
         )
 
 
-def _launched_by_includer(run, block) -> bool:
+def _reads_other(runs, reads) -> dict[str, str]:
+    """Why a block named as a Run line is not read, by lower-case name: the app's ``main``
+    connects under a name it hard-codes (``Run("iGPS_MB1", ...)``)."""
+    found: dict[str, str] = {}
+    for run in runs:
+        names = reads[id(run)]
+        if names != run.block_names:
+            for n in run.block_names:
+                found.setdefault(
+                    n.lower(),
+                    f"`{run.program}` connects as `{names[0]}` (its main passes that name to "
+                    f"Run) and reads block `{names[0]}`",
+                )
+    return found
+
+
+def _launched_by_includer(run, block, cat) -> bool:
     """Whether a mission of the run that includes the fragment holding ``block`` launches
     a process of its name."""
-    names = per_run(run, "names-by-fragment", _names_by_fragment).get(block.header.path, ())
-    return any(names_match(name, block.name) for name in names)
+    names = per_run(run, "names-by-fragment", lambda units: _names_by_fragment(units, cat))
+    return any(names_match(name, block.name) for name in names.get(block.header.path, ()))
 
 
-def _names_by_fragment(units) -> dict[str, set[str]]:
-    """Every included file of the missions -> the process names (block names of Run
-    lines) launched by the missions that include it."""
+def _names_by_fragment(units, cat) -> dict[str, set[str]]:
+    """Every included file of the missions -> the process names (names of the blocks
+    their Run lines read) launched by the missions that include it."""
     found: dict[str, set[str]] = {}
     for unit in units:
         moos = unit.moos
         if moos is None or not moos.runs:
             continue
-        launched = {name for r in moos.runs for name in r.block_names}
+        launched = {name for r in moos.runs for name in cat.block_names(r)}
         for path in unit.expansion.sources:
             if path != unit.path:
                 found.setdefault(path, set()).update(launched)

@@ -89,13 +89,13 @@ from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_f
 _FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
 
 
-def _programs(moos) -> dict[str, str]:
+def _programs(moos, cat) -> dict[str, str]:
     """Lower-case block name -> the program the mission starts to read it (a script's
     block is the script's, not the block's namesake app's)."""
     out: dict[str, str] = {}
     for run in moos.runs:
         if run.name and not has_macro(run.name):
-            for name in run.block_names:
+            for name in cat.block_names(run):
                 out.setdefault(name.lower(), run.program)
     return out
 
@@ -103,7 +103,7 @@ def _programs(moos) -> dict[str, str]:
 def block_apps(ctx):
     """(block, AppInfo) for each ProcessConfig block of an app the catalogue knows."""
     cat = catalogue_for(ctx.run)
-    aliases = _programs(ctx.moos)
+    aliases = _programs(ctx.moos, cat)
     scripts = scripts_beside(ctx.path)
     for block in ctx.moos.blocks:
         if block.lname == "antler" or has_macro(block.name):
@@ -117,7 +117,7 @@ def block_apps(ctx):
 
 def text_blocks(ctx):
     """(block, TextFormatApp) for each protobuf-text block of an app the catalogue knows."""
-    aliases = _programs(ctx.moos)
+    aliases = _programs(ctx.moos, catalogue_for(ctx.run))
     for block in ctx.moos.blocks:
         if not block.text_format or has_macro(block.name):
             continue

@@ -50,6 +50,7 @@ from moos_lint.semantics.run_state import RunView
 if TYPE_CHECKING:
     from moos_lint.files.source import SourceFile
     from moos_lint.frontends.cpp.model import AppModel
+    from moos_lint.frontends.parsers.nodes import RunLine
 
 STOCK = os.path.join(os.path.dirname(__file__), "stock.json")
 #: goby's MOOS apps and their configuration messages (:mod:`moos_lint.semantics.catalogue.goby`)
@@ -105,6 +106,10 @@ class AppInfo:
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
     #: lower-case key -> the variables it names, for keys that rename publications
     published_keys: dict[str, tuple[PublishedKey, ...]] = field(default_factory=dict)
+    #: the MOOS name its ``main`` passes to ``Run`` as a literal (``Run("iGPS_MB1", ...)``),
+    #: when it is not the program's own name: however it is launched, alias or not, it
+    #: connects under that name and reads that block
+    moos_name: str | None = None
 
     def reads(self, key: str) -> bool:
         """Whether the app reads the (lower-case) configuration key."""
@@ -169,6 +174,14 @@ class Catalogue:
         """Whether ``kind`` is a behavior the catalogue knows, with or without its facts."""
         low = kind.lower()
         return low in self.behaviors or low in self.outside_behaviors
+
+    def block_names(self, run: RunLine) -> tuple[str, ...]:
+        """The names of the blocks the process a Run line starts may read: the Run line's
+        (:attr:`RunLine.block_names`), or the one name an app's ``main`` hard-codes."""
+        app = self.app(run.program)
+        if app is not None and app.moos_name and run.script_block is None:
+            return (app.moos_name,)
+        return run.block_names
 
     def needs_process_config(self, program: str) -> bool | None:
         """Whether ``program`` (a binary name) needs its ProcessConfig block; None: unknown."""
@@ -463,6 +476,14 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     return info
 
 
+def _fixed_name(app: AppModel) -> str | None:
+    """The name ``main`` hard-codes (``TheApp.Run("iGPS_MB1", mission)``) when CMake builds
+    the program under another name (``add_executable(iGPS ...)``)."""
+    if app.process_name_source != "run" or not app.executable or not app.process_name:
+        return None
+    return None if app.executable.lower() == app.process_name.lower() else app.process_name
+
+
 def app_text(path: str, sources: dict[str, SourceFile]) -> str:
     """The text of one of an app's files, with its lines ended by ``\\n``: as the run
     already read it (``sources``: the C++ front end read every file of an app), else from
@@ -538,7 +559,15 @@ def catalogue_for(run: RunView) -> Catalogue:
     for unit in run.units:
         app = unit.cpp
         if app is not None and app.is_app and app.process_name:
-            cat.add_app(_repo_app(app, app.process_name, run.sources))
+            fixed = _fixed_name(app)
+            if fixed is None:
+                cat.add_app(_repo_app(app, app.process_name, run.sources))
+            else:  # Run lines name the program; the app reads the block its main names
+                assert app.executable is not None
+                info = _repo_app(app, app.executable, run.sources)
+                info.moos_name = fixed
+                cat.add_app(info)
+                cat.apps.setdefault(fixed.lower(), info)
             inputs = None
     cat.inputs = inputs
     run.memos.catalogue = cat
