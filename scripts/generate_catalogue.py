@@ -37,6 +37,9 @@ from moos_lint.semantics.catalogue import DELEGATE, OPTIONAL_BLOCK, READS_ORIGIN
 _POST = re.compile(
     r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\"([A-Za-z0-9_]+)\"", re.MULTILINE
 )
+#: a VarDataPair an app builds from a literal name is one it posts: pMarineViewer's
+#: connection posts and default mouse-click posts (PMV_MOOSApp.cpp:51-54, PMV_Viewer.cpp:92-93)
+_PAIR = re.compile(r"\bVarDataPair\s+\w+\s*\(\s*\"([A-Za-z0-9_]+)\"")
 _LINK = re.compile(r"TARGET_LINK_LIBRARIES\s*\(([^)]*)\)", re.IGNORECASE | re.DOTALL)
 _NAME = re.compile(r"^[A-Za-z0-9_]+$")
 
@@ -1023,7 +1026,7 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
         "reports_unhandled": "reportUnhandledConfigWarning" in text and not delegates,
         # a final ``else`` hands any other key to code whose keys are not listed
         "delegates_other_keys": delegates,
-        "publishes": pubs,
+        "publishes": sorted(set(pubs) | set(_PAIR.findall(text))),
         "publish_prefixes": pub_prefixes,
         "publish_suffixes": pub_suffixes,
         "publishes_dynamic": pub_dynamic,

@@ -29,6 +29,10 @@ from moos_lint.frontends.cpp.model import (
 from moos_lint.frontends.cpp.names import WORD_BYTES, key_literal, mail_key_of, valued_name
 
 PUBLISH = {"Notify"}
+#: a message built to be posted: ``CMOOSMsg Msg(MOOS_NOTIFY, "DESIRED_RUDDER", dfRudder)``
+#: (then ``m_Comms.Post(Msg)``, or handed back in a task's message list)
+NOTIFY_MSG = "CMOOSMsg"
+NOTIFY_KINDS = ("MOOS_NOTIFY", "'N'")
 SUBSCRIBE = {"Register"}
 CONFIG_CALLS = {"GetConfigurationParam", "GetConfigurationParamNoCase", "GetConfiguration"}
 STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
@@ -39,7 +43,9 @@ IO_TYPES = re.compile(
 #: a MOOS client of another community: a bridge's sockets carry MOOS itself
 MOOS_CLIENT_TYPES = re.compile(r"^(?:CMOOSCommClient|MOOSAsyncCommClient|CMOOSAsyncCommClient)$")
 SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
-DEVICE_STRING = re.compile(r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video)")
+DEVICE_STRING = re.compile(
+    r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video|input/|js\d|gpiochip)"
+)
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
 SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
 #: MAVSDK's ``Mavsdk::add_*_connection(url)``: a link to an autopilot over UDP, TCP or serial
@@ -56,6 +62,7 @@ FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 VARIABLE_SET = {"Set"}
 CALLED = (
     PUBLISH
+    | {NOTIFY_MSG}
     | SUBSCRIBE
     | {"Run"}
     | CONFIG_CALLS
@@ -786,6 +793,11 @@ class Extractor:
         for cmp, left, right in pf.cmps:
             self._comparison(cmp, left, right)
         for a in pf.asgs:
+            if a.rhs.type == "argument_list" and a.node.type == "init_declarator":
+                decl = a.node.parent
+                kind = decl.child_by_field_name("type") if decl is not None else None
+                if kind is not None and text(kind) == NOTIFY_MSG:
+                    self._notify_msg(a.node, a.rhs)
             if (
                 a.op in ("=", "+=", "-=", "*=", "/=")
                 and a.fn is not None
@@ -846,6 +858,36 @@ class Extractor:
     def _fn_of(self, n: Any) -> str:
         return self.pf.function_name_of(n)
 
+    def _publish(self, node: Any, args: Any, name_arg: Any, value_arg: Any, index: int) -> None:
+        """A publication at ``node`` of the name ``name_arg`` with the value ``value_arg``,
+        the ``index``-th argument of ``args``."""
+        spans = self.pf.spans
+        pub_name = self.name(name_arg)
+        names = [pub_name] if pub_name.text is not None else self._table_names(name_arg)
+        names = names or [pub_name]
+        value = self.value(value_arg) if value_arg is not None else None
+        valued = any(valued_name(n.last) for n in names)
+        if value is not None and self._compiled_argument(args, index, value) in ("string", "bool"):
+            valued = False  # not a number: no unit, sense or range to know
+        if value is not None and self.evaluator is not None and valued:
+            value.abstract = self.evaluator.of(self.pf, value_arg)
+        for each in names:
+            self.out.publications.append(
+                Publication(
+                    name=each,
+                    value=value,
+                    span=spans.of(node),
+                    name_span=spans.of(name_arg),
+                    function=self._fn_of(node),
+                )
+            )
+
+    def _notify_msg(self, node: Any, args: Any) -> None:
+        """``CMOOSMsg(MOOS_NOTIFY, NAME, VALUE[, time])``: a notification built to be posted."""
+        argv = [a for a in args.named_children if a.type != "comment"]
+        if len(argv) >= 3 and text(argv[0]).strip() in NOTIFY_KINDS and not in_if0(node):
+            self._publish(node, args, argv[1], argv[2], 2)
+
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)
         if name in PUBLISH | SUBSCRIBE and in_if0(call):
@@ -854,25 +896,9 @@ class Extractor:
         spans = self.pf.spans
         out = self.out
         if name in PUBLISH and argv and _is_moos_call(fn):
-            pub_name = self.name(argv[0])
-            names = [pub_name] if pub_name.text is not None else self._table_names(argv[0])
-            names = names or [pub_name]
-            value = self.value(argv[1]) if len(argv) > 1 else None
-            valued = any(valued_name(n.last) for n in names)
-            if value is not None and self._compiled_argument(args, 1, value) in ("string", "bool"):
-                valued = False  # not a number: no unit, sense or range to know
-            if value is not None and self.evaluator is not None and valued:
-                value.abstract = self.evaluator.of(self.pf, argv[1])
-            for each in names:
-                out.publications.append(
-                    Publication(
-                        name=each,
-                        value=value,
-                        span=spans.of(call),
-                        name_span=spans.of(argv[0]),
-                        function=self._fn_of(call),
-                    )
-                )
+            self._publish(call, args, argv[0], argv[1] if len(argv) > 1 else None, 1)
+        elif name == NOTIFY_MSG and fn.type == "identifier":
+            self._notify_msg(call, args)
         elif name in VARIABLE_SET and argv and fn.type == "field_expression":
             self._variable_set(call, fn, argv)
         elif name in FROM_DEGREES and argv:
@@ -1010,7 +1036,32 @@ class Extractor:
                     lit = string_value(strip_parens(args[0]))
                     if lit is not None:
                         self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n)))
+                if name in ("MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp") and len(args) > 1:
+                    self._key_against(strip_parens(args[0]), strip_parens(args[1]))
+            elif n.type == "binary_expression":
+                op = n.child_by_field_name("operator")
+                if op is not None and op.type in ("==", "!="):
+                    left = strip_parens(n.child_by_field_name("left"))
+                    right = strip_parens(n.child_by_field_name("right"))
+                    if left is not None and right is not None:
+                        self._key_against(left, right)
             stack.extend(n.named_children)
+
+    def _key_against(self, a: Any, b: Any) -> None:
+        """The key compared with a name held elsewhere (``key == SLAVE_ORDERS`` of a
+        ``#define``, ``key == m_var`` of a member set to a literal): the name, when it can
+        be read. A name that cannot be read (a collaborator's, given at run time) handles
+        no literal registration: ``Register("COLLABORATOR_NAV_X")`` beside
+        ``key == m_collab + "_NAV_X"`` is the mistake the rule is for."""
+        for subject, other in ((a, b), (b, a)):
+            if other.type not in _NAME_NODES or string_value(other) is not None:
+                continue
+            if not _is_key(subject) or _KEY_SUBJECT.search(text(other)):
+                continue
+            val, _ = self._resolve(other, 0)
+            if val is not None:
+                self.out.mail_keys.append(MailKey(val, self.pf.spans.of(other)))
+            return
 
 
 _ATOMS = (
@@ -1021,6 +1072,23 @@ _ATOMS = (
     "qualified_identifier",
     "subscript_expression",
 )
+
+
+def _is_key(n: Any) -> bool:
+    """The message's key itself (``key``, ``sKey``, ``msg.GetKey()``), not a use of it
+    (``key.find("X")``)."""
+    if n.type in _NAME_NODES:
+        return bool(_KEY_SUBJECT.search(text(n)))
+    return n.type == "call_expression" and callee(n.child_by_field_name("function")) in (
+        "GetKey",
+        "GetName",
+    )
+
+
+#: what a mail handler compares a key with when it holds the name elsewhere
+_NAME_NODES = ("identifier", "field_expression", "qualified_identifier")
+#: the message's key (``msg.GetKey()``, ``key``, ``sKey``, ``rMsg.m_sKey``)
+_KEY_SUBJECT = re.compile(r"key|GetName", re.I)
 _GENERIC_ARG = re.compile(r"^(?:\*?p|\w*[Mm]sg|\w*[Kk]ey|\w*[Mm]ail\w*|message|e|rMsg)$")
 
 

@@ -208,6 +208,10 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
         return shift(a, -b.const if minus else b.const)
     if a.const is not None:
         return shift(neg(b) if minus else b, a.const)
+    if _opaque(b) and (a.unit is not None or a.pending is not None):
+        return offset(a)  # ``yaw_deg + m_correction``: still degrees
+    if _opaque(a) and (b.unit is not None or b.pending is not None):
+        return offset(neg(b) if minus else b)
     if a.pending is not None or b.pending is not None:
         return UNKNOWN
     b2 = neg(b) if minus else b
@@ -221,6 +225,20 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
         why=a.why,
         hint=a.hint or b2.hint,
     )
+
+
+def _opaque(v: AbstractValue) -> bool:
+    """A value of which nothing is known (a member the configuration sets, a device field)."""
+    return v.unit is None and v.const is None and v.pending is None and v.range is None
+
+
+def offset(v: AbstractValue) -> AbstractValue:
+    """``v`` plus a value of which nothing is known: of the same unit (a sum of two angles
+    is an angle in the unit of each) and sense, of unknown sign and range."""
+    v = settle(v)
+    if v.pending is not None:
+        return replace(v, ops=(*v.ops, ("offset", None)))
+    return replace(v, range=None, sign=None, const=None)
 
 
 def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> AbstractValue:
@@ -237,6 +255,8 @@ def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> Abstract
             v = wrapped(v, arg[0], arg[1], arg[2])
         elif op == "shift":
             v = shift(v, arg)
+        elif op == "offset":
+            v = offset(v)
         elif op == "scale":
             v = settle(replace(v, scale=arg))
     return settle(v)
@@ -1057,6 +1077,8 @@ class Evaluator:
         state: AbstractValue | None = None
         for a in before:
             cond = _guard(a.node, fnode)
+            if a.op == "=" and cond is not None:
+                a = _as_compound(a, key)  # ``yaw = yaw + 2*M_PI`` as ``yaw += 2*M_PI``
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
                 if v.pending is not None and name_hint(key).known:
@@ -1263,6 +1285,29 @@ def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractVa
         return replace(out, why=(*v.why, *why)) if v.why or why else out
     out = replace(v, scale=v.scale * c)
     return replace(out, why=(*out.why, *why)) if why else out
+
+
+@dataclass(frozen=True)
+class _Step:
+    """An assignment ``x = x + c`` read as the compound ``x += c`` it is."""
+
+    target: str
+    op: str
+    rhs: Any
+    node: Any
+    fn: Any
+
+
+def _as_compound(a: Any, key: str) -> Any:
+    """``key = key + c`` / ``key = key - c`` as ``key += c`` / ``key -= c``; else ``a``."""
+    rhs = strip(a.rhs)
+    if rhs is None or rhs.type != "binary_expression":
+        return a
+    op = text(rhs.child_by_field_name("operator"))
+    left = strip(rhs.child_by_field_name("left"))
+    if op not in ("+", "-") or left is None or _target(left) != key:
+        return a
+    return _Step(a.target, op + "=", rhs.child_by_field_name("right"), a.node, a.fn)
 
 
 def _target(n: Any) -> str:
@@ -1477,6 +1522,19 @@ def _wrap_step(
         return None
     loop = stmt.type in ("while_statement", "for_statement", "do_statement")
     lo, hi = base.range if base.range else (-math.inf, math.inf)
+    turn = _full_turn(step)
+    if not loop and turn is not None and not math.isfinite(lo) and not math.isfinite(hi):
+        # a value of unknown range wrapped by one turn, once: the author takes it to be
+        # within a turn of the wrap, so the range is the turn the ``if`` names
+        # (``if (yaw < 0) yaw += 2*M_PI``: [0, 2π)), and a turn of 2π says radians
+        if op in ("<", "<=") and step > 0:
+            new = (bound, bound + step)
+        elif op in (">", ">=") and step < 0:
+            new = (bound + step, bound)
+        else:
+            return None
+        why = f"wrapped by `{_clip(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
+        return wrapped(base, new, base.unit or turn, why)
     if op in ("<", "<=") and step > 0:
         if lo >= bound:
             return base
@@ -1505,6 +1563,13 @@ def _wrap_step(
         if base.known
         else replace(base, range=new, const=None)
     )
+
+
+def _full_turn(step: float) -> str | None:
+    """The unit a wrap step of one full turn says (2π: radians, 360: degrees), else None."""
+    if abs(abs(step) - 2 * math.pi) < 1e-3:
+        return "rad"
+    return "deg" if abs(abs(step) - 360.0) < 1e-9 else None
 
 
 def define_const(val: str, defines: dict[str, str], depth: int = 0) -> float | None:

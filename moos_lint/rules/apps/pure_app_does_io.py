@@ -4,8 +4,9 @@
 Reports a C++ MOOS app whose process name starts with `p` or `u` while its
 code does device I/O: a serial-port class (`CMOOSSerialPort`,
 `boost::asio::serial_port`, ...), baud-rate setup through termios
-(`cfsetispeed`), a `/dev/tty*`, `/dev/can*` or `/dev/usb*` path, SocketCAN or
-libusb. A `p` app is also reported for socket I/O (`socket`, `connect`,
+(`cfsetispeed`), a device path (`/dev/tty*`, `/dev/can*`, `/dev/usb*`, a
+joystick's `/dev/input/js0`, ...), SocketCAN or libusb. A `p` app is also
+reported for socket I/O (`socket`, `connect`,
 `bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
 `add_any_connection`): a vehicle, a sensor or a service spoken to in a
 protocol that is not MOOS. The finding is on the first such use. The app's

@@ -4,9 +4,15 @@
 Reports a literal variable name passed to `Register` when the app's
 `OnNewMail` dispatches on literal keys (`key == "X"`, `MOOSStrCmp(key, "X")`,
 `msg.IsName("X")`, prefix tests like `strBegins(key, "X_")`) and none of them
-matches that name. Wildcard registrations and names built at run time are not
-reported, nor are apps whose OnNewMail hands whole messages to code the
-linter does not follow (`handleMail(msg)` outside any key test).
+matches that name. A key compared with a name held elsewhere counts as that
+name when it can be read: a `#define` or constant, a member set to a literal
+(`m_visit_var = "VISIT_POINT"`). A name that cannot be read (a
+collaborator's, `m_collab + "_NAV_X"`, given at run time) handles no literal
+registration: `Register("COLLABORATOR_NAV_X")` beside such a test is a
+literal written where the collaborator's name was meant.
+Wildcard registrations and names built at run time are not reported, nor
+are apps whose OnNewMail hands whole messages to code the linter does not
+follow (`handleMail(msg)` outside any key test).
 
 ## Why is this bad?
 Each registration makes the MOOSDB send every change of the variable to the

@@ -14,7 +14,10 @@ known not to be ±π: a heading in [0, 360) turned into a yaw
 (`-heading*M_PI/180` without `angle180`), a yaw shifted by π, a one-sided
 wrap (`if (yaw < 0) yaw += 2*M_PI`) or `fmod(yaw, 2*M_PI)` into [0, 2π).
 Wraps are read from `MOOS_ANGLE_WRAP`, `radAngleWrap`, `angle180`, wrap
-loops and `if`s, and `fmod`.
+loops and `if`s, and `fmod`. A one-sided wrap by one full turn is read even
+when the value's range before it is unknown (a device's struct field): the
+author takes the value to lie in the turn the `if` names (`if (yaw < 0) yaw
+= yaw + 2*M_PI`: [0, 2π)), and a turn of 2π says radians.
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
