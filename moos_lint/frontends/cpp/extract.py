@@ -26,7 +26,13 @@ from moos_lint.frontends.cpp.model import (
     Subscription,
     Value,
 )
-from moos_lint.frontends.cpp.names import WORD_BYTES, key_literal, mail_key_of, valued_name
+from moos_lint.frontends.cpp.names import (
+    MAIL_COMPARES,
+    WORD_BYTES,
+    key_literal,
+    mail_key_of,
+    valued_name,
+)
 
 PUBLISH = {"Notify"}
 #: a message built to be posted: ``CMOOSMsg Msg(MOOS_NOTIFY, "DESIRED_RUDDER", dfRudder)``
@@ -1036,7 +1042,7 @@ class Extractor:
                     lit = string_value(strip_parens(args[0]))
                     if lit is not None:
                         self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n)))
-                if name in ("MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp") and len(args) > 1:
+                if name in MAIL_COMPARES and len(args) > 1:
                     self._key_against(strip_parens(args[0]), strip_parens(args[1]))
             elif n.type == "binary_expression":
                 op = n.child_by_field_name("operator")

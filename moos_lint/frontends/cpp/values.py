@@ -1287,17 +1287,6 @@ def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractVa
     return replace(out, why=(*out.why, *why)) if why else out
 
 
-@dataclass(frozen=True)
-class _Step:
-    """An assignment ``x = x + c`` read as the compound ``x += c`` it is."""
-
-    target: str
-    op: str
-    rhs: Any
-    node: Any
-    fn: Any
-
-
 def _as_compound(a: Any, key: str) -> Any:
     """``key = key + c`` / ``key = key - c`` as ``key += c`` / ``key -= c``; else ``a``."""
     rhs = strip(a.rhs)
@@ -1307,7 +1296,7 @@ def _as_compound(a: Any, key: str) -> Any:
     left = strip(rhs.child_by_field_name("left"))
     if op not in ("+", "-") or left is None or _target(left) != key:
         return a
-    return _Step(a.target, op + "=", rhs.child_by_field_name("right"), a.node, a.fn)
+    return replace(a, op=op + "=", rhs=rhs.child_by_field_name("right"))
 
 
 def _target(n: Any) -> str:

@@ -138,29 +138,25 @@ def check(ctx):
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
-        fixed = elsewhere.get(block.lname)
-        if fixed is not None:
-            yield ctx.report(
-                block.name_span,
-                f"no process reads block `{block.name}`: {fixed} (rename the block)",
-                line=block.header,
-            )
-            continue
         if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat):
             continue  # a shared fragment: another mission that includes it launches it
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
         if block.lname in scripts:
             continue  # a launched script names it: the script reads it its own way
-        if commented is None:
-            commented = _commented_runs(moos)
-        hint = commented.get(block.name.lower())
-        if hint and not ctx.options.get("commented-runs"):
-            continue  # switched off on purpose
-        why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
+        why = elsewhere.get(block.lname)
+        advice = "rename the block"
+        if why is None:
+            if commented is None:
+                commented = _commented_runs(moos)
+            hint = commented.get(block.name.lower())
+            if hint and not ctx.options.get("commented-runs"):
+                continue  # switched off on purpose
+            why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
+            advice = "launch it or delete the block"
         yield ctx.report(
             block.name_span,
-            f"no process reads block `{block.name}`: {why} (launch it or delete the block)",
+            f"no process reads block `{block.name}`: {why} ({advice})",
             line=block.header,
         )
 

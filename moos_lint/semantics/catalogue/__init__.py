@@ -476,12 +476,13 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     return info
 
 
-def _fixed_name(app: AppModel) -> str | None:
-    """The name ``main`` hard-codes (``TheApp.Run("iGPS_MB1", mission)``) when CMake builds
-    the program under another name (``add_executable(iGPS ...)``)."""
-    if app.process_name_source != "run" or not app.executable or not app.process_name:
+def _fixed_name(app: AppModel) -> tuple[str, str] | None:
+    """(program, name) when ``main`` hard-codes the name (``TheApp.Run("iGPS_MB1",
+    mission)``) and CMake builds the program under another (``add_executable(iGPS ...)``)."""
+    program, name = app.executable, app.process_name
+    if app.process_name_source != "run" or not program or not name:
         return None
-    return None if app.executable.lower() == app.process_name.lower() else app.process_name
+    return None if program.lower() == name.lower() else (program, name)
 
 
 def app_text(path: str, sources: dict[str, SourceFile]) -> str:
@@ -559,12 +560,12 @@ def catalogue_for(run: RunView) -> Catalogue:
     for unit in run.units:
         app = unit.cpp
         if app is not None and app.is_app and app.process_name:
-            fixed = _fixed_name(app)
-            if fixed is None:
+            named = _fixed_name(app)
+            if named is None:
                 cat.add_app(_repo_app(app, app.process_name, run.sources))
             else:  # Run lines name the program; the app reads the block its main names
-                assert app.executable is not None
-                info = _repo_app(app, app.executable, run.sources)
+                program, fixed = named
+                info = _repo_app(app, program, run.sources)
                 info.moos_name = fixed
                 cat.add_app(info)
                 cat.apps.setdefault(fixed.lower(), info)
