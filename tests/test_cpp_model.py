@@ -94,6 +94,28 @@ def test_process_name_falls_back_to_folder(tmp_path):
     assert (app.process_name, app.process_name_source) == ("Gauge", "folder")
 
 
+def test_folder_building_two_programs(tmp_path):
+    """The app is the program whose source list holds its class; else it has no name."""
+    folder = tmp_path / "Actuation"
+    folder.mkdir()
+    (folder / "Motor.h").write_text("class Motor : public CMOOSInstrument {};\n")
+    (folder / "MotorMain.cpp").write_text(
+        '#include "Motor.h"\nint main(int c, char **v) { Motor m; m.Run(v[0], v[1]); }\n'
+    )
+    (folder / "CMakeLists.txt").write_text(
+        "SET(MOTOR_SRCS\n Motor.cpp Motor.h\n MotorMain.cpp)\n"
+        "SET(SET_SRCS SetMain.cpp Set.cpp)\n"
+        "ADD_EXECUTABLE(iMotor ${MOTOR_SRCS})\nADD_EXECUTABLE(iSet ${SET_SRCS})\n"
+    )
+    app = _app(folder)
+    assert (app.process_name, app.process_name_source) == ("iMotor", "cmake")
+    (folder / "CMakeLists.txt").write_text(
+        "ADD_EXECUTABLE(iMotor MotorMain.cpp)\nADD_EXECUTABLE(iSet SetMain.cpp)\n"
+    )
+    app = _app(folder)
+    assert app.process_name is None
+
+
 def test_bad_input_never_raises(tmp_path):
     (tmp_path / "broken.cpp").write_bytes(
         b'#if\nclass : public CMOOSApp {\nNotify(\xff\xfe "X, ;;\n}}}}\nRegister(\n'

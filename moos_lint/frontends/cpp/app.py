@@ -11,7 +11,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Span
 from moos_lint.files.source import SourceFile, decode, read_bytes
-from moos_lint.frontends.cpp.cmake import executable_name
+from moos_lint.frontends.cpp.cmake import executable_name, executables_in
 from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile, IOUse
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
@@ -198,6 +198,8 @@ def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
     )
     return tree
 
+_STEM_EXTS = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".hh")
+
 
 def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
     """One :class:`AppModel` per folder of relevant C++ files, linked."""
@@ -249,7 +251,7 @@ def _find_app_class(app: AppModel, bases: dict[str, list[str]]) -> None:
 
 
 def _process_name(app: AppModel) -> None:
-    found = executable_name(app.folder)
+    found = executable_name(app.folder, _class_files(app))
     app.executable = found[0] if found is not None else None
     for f in app.files:
         if f.has_main and f.run_names:
@@ -259,8 +261,18 @@ def _process_name(app: AppModel) -> None:
     if found is not None:
         app.process_name = found[0]
         app.process_name_source = "cmake"
-    elif any(f.has_main for f in app.files):
+    elif any(f.has_main for f in app.files) and not executables_in(app.folder):
+        # (a folder that builds several programs, none of them clearly this app's, has no name)
         app.process_name = os.path.basename(os.path.normpath(app.folder))
         app.process_name_source = "folder"
     if app.app_class is not None:
         app.process_name_span = app.app_class.span
+
+
+def _class_files(app: AppModel) -> frozenset[str]:
+    """The file names of the app class's own sources: its file and that file's ``.h``/``.cpp``."""
+    for f in app.files:
+        if any(c is app.app_class for c in f.classes):
+            stem = os.path.splitext(os.path.basename(f.path))[0]
+            return frozenset({os.path.basename(f.path)} | {stem + ext for ext in _STEM_EXTS})
+    return frozenset()

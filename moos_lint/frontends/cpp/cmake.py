@@ -1,7 +1,8 @@
 """The process name CMake gives an app: ``add_executable(pName ...)``, read as text.
 
 CMake is never run. ``${VAR}`` is resolved from ``set(VAR value)`` in the same
-file; a name that stays unresolved is not used.
+file; a name that stays unresolved is not used. A folder that builds several
+programs gives the app the one whose source list holds the app class's files.
 """
 
 from __future__ import annotations
@@ -13,6 +14,8 @@ from moos_lint.files.source import SourceFile, read_source
 
 _ADD_EXEC = re.compile(r"\badd_executable\s*\(\s*([^\s()]+)([^)]*)\)", re.I)
 _SET = re.compile(r"\bset\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s+\"?([^\s()\"]+)\"?", re.I)
+_SET_LIST = re.compile(r"\bset\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s+([^)]*)\)", re.I)
+_VAR = re.compile(r"\$\{(\w+)\}")
 _COMMENT = re.compile(r"#[^\n]*")
 
 
@@ -22,22 +25,40 @@ def _read(path: str) -> str | None:
 
 
 def _executables(text: str) -> list[tuple[str, str, int]]:
-    """(name, source list, line) of every add_executable with a resolvable name."""
+    """(name, source list, line) of every add_executable with a resolvable name.
+
+    ``${VAR}`` in the source list is replaced by the values of ``set(VAR a b c)``.
+    """
     text = _COMMENT.sub("", text)
     sets = {m.group(1): m.group(2) for m in _SET.finditer(text)}
+    lists = {m.group(1): m.group(2) for m in _SET_LIST.finditer(text)}
     out = []
     for m in _ADD_EXEC.finditer(text):
-        name = m.group(1)
+        name, srcs = m.group(1), m.group(2)
         for _ in range(3):
-            name = re.sub(r"\$\{(\w+)\}", lambda v: sets.get(v.group(1), v.group(0)), name)
+            name = _VAR.sub(lambda v: sets.get(v.group(1), v.group(0)), name)
+            srcs = _VAR.sub(lambda v: lists.get(v.group(1), v.group(0)), srcs)
         if "${" in name or name.upper() in ("WIN32", "MACOSX_BUNDLE"):
             continue
-        out.append((name, m.group(2), text.count("\n", 0, m.start()) + 1))
+        out.append((name, srcs, text.count("\n", 0, m.start()) + 1))
     return out
 
 
-def executable_name(folder: str) -> tuple[str, str, int] | None:
-    """(name, CMakeLists path, line) of the executable built from ``folder``, when one is clear."""
+def executables_in(folder: str) -> list[str]:
+    """The names of the executables the folder's own CMakeLists.txt builds."""
+    text = _read(os.path.join(folder, "CMakeLists.txt"))
+    return [name for name, _srcs, _line in _executables(text or "")]
+
+
+def executable_name(
+    folder: str, members: frozenset[str] = frozenset()
+) -> tuple[str, str, int] | None:
+    """(name, CMakeLists path, line) of the executable built from ``folder``, when one is clear.
+
+    A CMakeLists.txt that builds several programs from one folder names the app's
+    by the folder's name, or by the one source list that holds one of ``members``
+    (the file names of the app's own class).
+    """
     here = os.path.join(folder, "CMakeLists.txt")
     if os.path.isfile(here):
         text = _read(here)
@@ -49,6 +70,9 @@ def executable_name(folder: str) -> tuple[str, str, int] | None:
             for name, _srcs, line in exes:
                 if name == base:
                     return name, here, line
+            holding = [(n, ln) for n, srcs, ln in exes if members & _file_names(srcs)]
+            if len(holding) == 1:
+                return holding[0][0], here, holding[0][1]
         return None
     parent = os.path.dirname(os.path.normpath(folder))
     above = os.path.join(parent, "CMakeLists.txt")
@@ -59,3 +83,8 @@ def executable_name(folder: str) -> tuple[str, str, int] | None:
             if re.search(r"(^|[\s/])" + re.escape(base) + r"/", srcs):
                 return name, above, line
     return None
+
+
+def _file_names(srcs: str) -> set[str]:
+    """The file names (no folder) a source list names."""
+    return {os.path.basename(tok.strip('"')) for tok in srcs.split()}

@@ -5,7 +5,9 @@ Reports a C++ app class that derives (directly or through classes of the
 linted code) from `CMOOSInstrument` or `AppCastingMOOSInstrument` when the
 app's process name does not start with `i`. The process name is the literal
 given to `App.Run("name", ...)` in `main`, else the CMake
-`add_executable(name ...)` of the app's folder, else the folder name.
+`add_executable(name ...)` of the app's folder (of a folder that builds
+several programs, the one whose source list holds the app class's files), else
+the folder name.
 
 ## Why is this bad?
 `CMOOSInstrument` is the base for apps that talk to hardware (it brings the

@@ -19,8 +19,10 @@ like Unix utilities). Names that hold an nsplug macro (`$(X)`) are skipped.
 
 In C++ (a folder of a MOOS app's sources), it checks the app's process name:
 the literal first argument of `App.Run("pName", ...)` in `main`, else the
-CMake `add_executable(pName ...)` of the folder (read as text), else the
-folder name. It reports on the `Run` literal, or on the app class when the
+CMake `add_executable(pName ...)` of the folder (read as text; of a folder
+that builds several programs, the one whose source list holds the app class's
+files), else the folder name (never for a folder that builds several programs
+and none clearly this app). It reports on the `Run` literal, or on the app class when the
 name comes from CMake or the folder. Only folders with a class derived from
 CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps.
 
