@@ -198,6 +198,7 @@ def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
     )
     return tree
 
+
 _STEM_EXTS = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".hh")
 
 

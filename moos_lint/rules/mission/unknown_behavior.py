@@ -1,7 +1,8 @@
 """A `Behavior = BHV_X` whose kind the helm does not know (`BHV_Waypiont`).
 
 ## What it does
-Reports a behavior kind that is neither a stock MOOS-IvP behavior (the
+Reports a misspelt behavior kind: one close to a known kind (it is suggested)
+but neither a stock MOOS-IvP behavior (the
 catalogue lists every `BHV_*` class of moos-ivp: `BHV_Waypoint`,
 `BHV_Loiter`, `BHV_AvdColregsV22`, ...), nor a behavior described in a
 catalogue file (`catalogues = [...]`), nor a class of the linted project (a
@@ -9,7 +10,12 @@ C++ file named after the kind, `BHV_Pulse.cpp`, anywhere under the project:
 the folder of the configuration file, else the version-control root above
 the behavior file, else the behavior file's folder; MOOS-IvP behaviors are
 named after their file). The kind is compared
-without regard to case and a close stock kind is suggested.
+without regard to case.
+
+A kind that no known kind is close to (`BHV_Scout`, `BHV_Cover`) is most often
+a behavior of another tree (a course's, a team's), which the helm loads through
+`IVP_BEHAVIOR_DIRS` or `ivp_behavior_dir` from outside the project: it is
+reported only with the `all-kinds` option.
 
 ## Why is this bad?
 The helm cannot build the behavior: it reports "failed to load dynamic
@@ -30,7 +36,9 @@ Respell the kind. For a behavior of your own that lives in another
 repository, describe it in a catalogue file (`[behaviors.BHV_Mine]`).
 
 ## Options
-None.
+- `all-kinds` (boolean, default false): also report a kind that no known kind
+  is close to (`BHV_Teleport`), for a project that holds every behavior its
+  missions load, or whose other trees are described in catalogue files.
 
 MOOS-IvP caveats, deliberately not reported:
 - a kind holding an nsplug macro;
@@ -72,6 +80,7 @@ def _shown(folder: str) -> str:
     scope=Scope.FILE,
     kinds=(Kind.BHV,),
     fixable=True,
+    options={"all-kinds": False},
 )
 def check(ctx):
     cat = catalogue_for(ctx.run)
@@ -85,6 +94,8 @@ def check(ctx):
         # the catalogue's behaviors first: the others only when none of those is close
         close = _close(kind, {b.name.lower(): b.name for b in cat.behaviors.values()})
         close = close or _close(kind, cat.outside_behaviors)
+        if not close and not ctx.options.get("all-kinds"):
+            continue  # a behavior of another tree, most often
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
         msg += f"no C++ file, class or library of that name under {_shown(_root(ctx))})"
         fix = None
