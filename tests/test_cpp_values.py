@@ -57,6 +57,32 @@ def test_wrap_loops_and_angle180_keep_yaw_within_pi():
     assert v["C_YAW"].range == pytest.approx((0.0, 2 * math.pi))
 
 
+def test_a_branch_narrows_the_value_its_if_compares():
+    v = published(
+        """
+        bool A::Iterate() {
+          double y = atan2(m_dy, m_dx) + M_PI / 2;
+          double out;
+          if (y > M_PI)
+            out = y - 2 * M_PI;
+          else
+            out = y;
+          Notify("A_YAW", out);
+          double w = atan2(m_dy, m_dx) + M_PI / 2;
+          double o2 = 0;
+          if (w > M_PI) {
+            w = atan2(m_a, m_b);
+            o2 = w;
+          }
+          Notify("B_YAW", o2);
+          return true;
+        }
+        """
+    )
+    assert v["A_YAW"].range == pytest.approx((-math.pi, math.pi))
+    assert v["B_YAW"].range == pytest.approx((-math.pi, math.pi))  # w is written in the if
+
+
 def test_constants_fold_to_conversions_and_define_factors():
     v = published(
         """

@@ -958,8 +958,8 @@ class Evaluator:
         if fnode is not None:
             local = self._local(pf, fnode, n, key, depth)
             if local is not None:
-                return local
-        v = self._member(key, depth)
+                return _narrowed(self, pf, fnode, n, key, local, depth)
+        v = _narrowed(self, pf, fnode, n, key, self._member(key, depth), depth)
         if not v.known and v.const is None and v.pending is None:
             d = self.folder.defines.get(key)
             if d is not None:
@@ -1490,25 +1490,10 @@ def _wrap_step(
     depth: int,
 ) -> AbstractValue | None:
     """``if (x < b) x += c`` / ``while (x > b) x -= c``: the range after it."""
-    cond = stmt.child_by_field_name("condition")
-    if cond is None:
+    compared = _compared(stmt, key, ev, pf, depth)
+    if compared is None:
         return None
-    c = strip(cond.named_children[0] if cond.type == "condition_clause" else cond)
-    while c is not None and c.type == "parenthesized_expression":
-        c = strip(c)
-    if c is None or c.type != "binary_expression":
-        return None
-    op = text(c.child_by_field_name("operator"))
-    left, right = strip(c.child_by_field_name("left")), strip(c.child_by_field_name("right"))
-    if _target(left) == key:
-        bound = settle(ev._eval(pf, right, depth + 1)).const
-    elif _target(right) == key:
-        bound = settle(ev._eval(pf, left, depth + 1)).const
-        op = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}.get(op, op)
-    else:
-        return None
-    if bound is None or op not in ("<", "<=", ">", ">="):
-        return None
+    op, bound = compared
     loop = stmt.type in ("while_statement", "for_statement", "do_statement")
     lo, hi = base.range if base.range else (-math.inf, math.inf)
     turn = _full_turn(step)
@@ -1551,6 +1536,80 @@ def _wrap_step(
         replace(base, range=new, const=None).because(why)
         if base.known
         else replace(base, range=new, const=None)
+    )
+
+
+def _compared(stmt: Any, key: str, ev: Evaluator, pf: Any, depth: int) -> tuple[str, float] | None:
+    """``(op, bound)`` when ``stmt``'s condition is ``key op bound`` (or ``bound op key``,
+    turned round) with a constant bound and op one of ``< <= > >=``."""
+    cond = stmt.child_by_field_name("condition")
+    if cond is None:
+        return None
+    c = strip(cond.named_children[0] if cond.type == "condition_clause" else cond)
+    while c is not None and c.type == "parenthesized_expression":
+        c = strip(c)
+    if c is None or c.type != "binary_expression":
+        return None
+    op = text(c.child_by_field_name("operator"))
+    left, right = strip(c.child_by_field_name("left")), strip(c.child_by_field_name("right"))
+    if left is None or right is None:
+        return None
+    if _target(left) == key:
+        bound = settle(ev._eval(pf, right, depth + 1)).const
+    elif _target(right) == key:
+        bound = settle(ev._eval(pf, left, depth + 1)).const
+        op = _TURNED.get(op, op)
+    else:
+        return None
+    if bound is None or op not in _TURNED:
+        return None
+    return op, bound
+
+
+_TURNED = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
+_NEGATED = {"<": ">=", "<=": ">", ">": "<=", ">=": "<"}
+
+
+def _narrowed(
+    ev: Evaluator, pf: Any, fnode: Any, use: Any, key: str, v: AbstractValue, depth: int
+) -> AbstractValue:
+    """``v`` (the value of ``key`` at ``use``) within the bounds of the ``if``s ``use`` is
+    in a branch of: in ``if (y > M_PI) out = y - 2*M_PI; else out = y;`` the first ``y``
+    is above π and the second not. Only a known range is narrowed, and not past a write
+    to ``key`` inside the ``if``."""
+    if v.range is None or v.const is not None or fnode is None:
+        return v
+    lo, hi = v.range
+    child, p = use, use.parent
+    while p is not None and p != fnode:
+        if p.type == "if_statement":
+            taken = (
+                True
+                if child == p.child_by_field_name("consequence")
+                else False
+                if child == p.child_by_field_name("alternative")
+                else None
+            )
+            compared = _compared(p, key, ev, pf, depth) if taken is not None else None
+            if compared is not None and not _written_before(p, use, key):
+                op, bound = compared if taken else (_NEGATED[compared[0]], compared[1])
+                if op in (">", ">="):
+                    lo = max(lo, bound)
+                else:
+                    hi = min(hi, bound)
+        child, p = p, p.parent
+    if (lo, hi) == v.range or lo > hi:
+        return v
+    return replace(v, range=(lo, hi))
+
+
+def _written_before(stmt: Any, use: Any, key: str) -> bool:
+    """Whether ``key`` may be written inside ``stmt`` before ``use``."""
+    src = stmt.text[: use.start_byte - stmt.start_byte].decode("utf-8", "replace")
+    name = re.escape(key.rsplit(".", 1)[-1])
+    return bool(
+        re.search(rf"(?<![\w.])(?:\+\+|--)?{name}\s*(?:\+\+|--|[-+*/]?=(?!=))", src)
+        or re.search(rf"[&(,]\s*&?\s*{name}\s*[,)]", src)
     )
 
 

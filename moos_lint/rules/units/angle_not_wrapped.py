@@ -18,6 +18,9 @@ loops and `if`s, and `fmod`. A one-sided wrap by one full turn is read even
 when the value's range before it is unknown (a device's struct field): the
 author takes the value to lie in the turn the `if` names (`if (yaw < 0) yaw
 = yaw + 2*M_PI`: [0, 2π)), and a turn of 2π says radians.
+In a branch of an `if` that compares the value with a constant, the value
+lies on that side of it: `if (y > M_PI) out = y - 2*M_PI; else out = y;`
+wraps `y` into `out`.
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
