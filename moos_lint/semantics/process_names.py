@@ -34,3 +34,14 @@ def acronym(app: str) -> str:
     uFldShoreBroker: ``UFSB_``); empty for a name of fewer than two capitals."""
     letters = app[:1] + "".join(c for c in app[1:] if c.isupper())
     return letters.upper() if len(letters) > 2 else ""
+
+
+def own_prefixes(app: str) -> set[str]:
+    """The prefixes of the variables an app most likely names after itself: its acronym
+    (:func:`acronym`) and its name without the ``i``/``p``/``u`` letter, whole and by words
+    (pOdometry: ``ODOMETRY``; pGenPath: ``GPP``... ``GENPATH``, ``GEN_PATH``); none shorter
+    than three letters."""
+    stem = app[1:] if PREFIXED.match(app) else app
+    words = re.findall(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+|\d+", stem)
+    out = {acronym(app), stem.upper(), "_".join(words).upper()}
+    return {p for p in out if len(p) >= 3}

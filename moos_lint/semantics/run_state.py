@@ -48,8 +48,8 @@ class RunMemos:
     external_publishers: dict[str, dict[str, list[Publisher]]] = field(default_factory=dict)
     #: folder -> the normalised paths of the ``.moos`` files there that may be missions
     mission_files: dict[str, list[str]] = field(default_factory=dict)
-    #: lower-case names of the C++ files and classes of the project
-    repo_cpp_stems: frozenset[str] | None = None
+    #: the names of the C++ files and classes of the project: lower case -> as written
+    repo_cpp_stems: dict[str, str] | None = None
     #: top-of-file keys the run's own C++ apps read with ``GetValue``
     repo_globals: frozenset[str] | None = None
 

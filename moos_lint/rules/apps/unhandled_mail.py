@@ -10,7 +10,8 @@ name when it can be read: a `#define` or constant, a member set to a literal
 collaborator's, `m_collab + "_NAV_X"`, given at run time) handles no literal
 registration: `Register("COLLABORATOR_NAV_X")` beside such a test is a
 literal written where the collaborator's name was meant.
-Wildcard registrations and names built at run time are not reported, nor
+Wildcard registrations, names built at run time and names the app
+publishes itself (registered to watch its own posts) are not reported, nor
 are apps whose OnNewMail hands whole messages to code the linter does not
 follow (`handleMail(msg)` outside any key test).
 

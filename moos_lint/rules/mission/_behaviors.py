@@ -15,8 +15,9 @@ if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
 _SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
 
 
-def repo_classes(ctx: Context) -> frozenset[str]:
-    """Lower-case names of the C++ files under the project root (``BHV_Pulse.cpp`` -> bhv_pulse).
+def repo_classes(ctx: Context) -> dict[str, str]:
+    """The names of the C++ files and classes under the project root, lower case -> as
+    written (``BHV_Pulse.cpp``: bhv_pulse -> BHV_Pulse).
 
     MOOS-IvP behaviors live in a file named after their class, so a kind with
     such a file is the repo's own behavior. Cached on the run.
@@ -30,13 +31,13 @@ def repo_classes(ctx: Context) -> frozenset[str]:
         app = unit.cpp
         for f in app.files if app is not None else ():
             for c in f.classes:
-                stems.add(c.name.lower())
+                stems.add(c.name)
     root = _root(ctx)
     for count, (dirpath, dirs, files) in enumerate(os.walk(root)):
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
             if is_cpp(name):
-                stems.add(os.path.splitext(name)[0].lower())
+                stems.add(os.path.splitext(name)[0])
             if name == "CMakeLists.txt":
                 # the helm loads a behavior by its library's name (libBHV_X.so)
                 stems.update(_library_behaviors(os.path.join(dirpath, name)))
@@ -46,7 +47,7 @@ def repo_classes(ctx: Context) -> frozenset[str]:
                 stems.update(_declared_behaviors(os.path.join(dirpath, name)))
         if count > 20000:  # a huge tree: stop looking
             break
-    run.memos.repo_cpp_stems = found = frozenset(stems)
+    run.memos.repo_cpp_stems = found = {s.lower(): s for s in sorted(stems)}
     return found
 
 
@@ -55,7 +56,7 @@ _CLASS = re.compile(rb"class(?<=\bclass)\s+(BHV_\w+)\s*(?::|\{)")
 
 
 def _declared_behaviors(path: str) -> set[str]:
-    """Lower-case names of the ``BHV_*`` classes a header declares."""
+    """The names of the ``BHV_*`` classes a header declares."""
     try:
         with open(path, "rb") as fh:
             data = fh.read(256 * 1024)
@@ -63,20 +64,20 @@ def _declared_behaviors(path: str) -> set[str]:
         return set()
     if b"BHV_" not in data:
         return set()
-    return {m.group(1).decode("ascii", "replace").lower() for m in _CLASS.finditer(data)}
+    return {m.group(1).decode("ascii", "replace") for m in _CLASS.finditer(data)}
 
 
 _LIBRARY = re.compile(rb"add_library\s*\(\s*(BHV_\w+)", re.IGNORECASE)
 
 
 def _library_behaviors(path: str) -> set[str]:
-    """Lower-case ``BHV_*`` library targets a CMakeLists.txt builds."""
+    """The ``BHV_*`` library targets a CMakeLists.txt builds."""
     try:
         with open(path, "rb") as fh:
             data = fh.read(256 * 1024)
     except OSError:
         return set()
-    return {m.group(1).decode("ascii", "replace").lower() for m in _LIBRARY.finditer(data)}
+    return {m.group(1).decode("ascii", "replace") for m in _LIBRARY.finditer(data)}
 
 
 def _root(ctx: Context) -> str:
@@ -92,3 +93,9 @@ def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:
     if info is not None:
         return info, True
     return None, cat.behavior_exists(kind) or kind.lower() in repo_classes(ctx)
+
+
+def repo_behaviors(ctx: Context) -> dict[str, str]:
+    """The project's own behavior kinds (its ``BHV_*`` files, classes and libraries),
+    lower case -> as written."""
+    return {low: name for low, name in repo_classes(ctx).items() if low.startswith("bhv_")}

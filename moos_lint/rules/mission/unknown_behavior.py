@@ -10,7 +10,10 @@ C++ file named after the kind, `BHV_Pulse.cpp`, anywhere under the project:
 the folder of the configuration file, else the version-control root above
 the behavior file, else the behavior file's folder; MOOS-IvP behaviors are
 named after their file). The kind is compared
-without regard to case.
+without regard to case. The known kinds close to it (the project's own first,
+with the stock and catalogue ones) are suggested, the ones a typo or two away
+if any; a single one that near is offered as a fix (`BHV_SimpleWaypoint` is
+not a misspelt `BHV_Waypoint`: it is suggested, never respelt).
 
 A kind that no known kind is close to (`BHV_Scout`, `BHV_Cover`) is most often
 a behavior of another tree (a course's, a team's), which the helm loads through
@@ -61,10 +64,13 @@ import re
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission._behaviors import _root, lookup
+from moos_lint.rules.mission._behaviors import _root, lookup, repo_behaviors
 from moos_lint.semantics.catalogue import catalogue_for
 
 _IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+#: a respelling is offered as a fix only this many letter edits away (a typo, not another
+#: behavior: BHV_SimpleWaypoint is not a misspelt BHV_Waypoint)
+MAX_TYPOS = 2
 
 
 def _shown(folder: str) -> str:
@@ -91,9 +97,11 @@ def check(ctx):
         _info, known = lookup(ctx, kind)
         if known:
             continue
-        # the catalogue's behaviors first: the others only when none of those is close
-        close = _close(kind, {b.name.lower(): b.name for b in cat.behaviors.values()})
-        close = close or _close(kind, cat.outside_behaviors)
+        # the project's and the catalogue's behaviors first: the others only when none of
+        # those is close; of the close ones, those a typo or two away if any
+        own = {b.name.lower(): b.name for b in cat.behaviors.values()} | repo_behaviors(ctx)
+        close = _close(kind, own) or _close(kind, cat.outside_behaviors)
+        close = [c for c in close if _typos(kind, c) <= MAX_TYPOS] or close
         if not close and not ctx.options.get("all-kinds"):
             continue  # a behavior of another tree, most often
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
@@ -101,7 +109,7 @@ def check(ctx):
         fix = None
         if close:
             msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
-        if len(close) == 1:
+        if len(close) == 1 and _typos(kind, close[0]) <= MAX_TYPOS:
             fix = Fix(f"respell as `{close[0]}`", (Edit(bhv.kind_span, close[0]),))
         yield ctx.report(bhv.kind_span, msg, line=bhv.header, fix=fix)
 
@@ -109,3 +117,19 @@ def check(ctx):
 def _close(kind: str, names: dict[str, str]) -> list[str]:
     """The names (lower case -> as written) close to ``kind``, closest first."""
     return [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
+
+
+def _typos(a: str, b: str) -> int:
+    """Letters inserted, deleted, replaced or swapped to make ``a`` into ``b`` (no case)."""
+    a, b = a.lower(), b.lower()
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i, ca in enumerate(a, 1):
+        cur = [i]
+        for j, cb in enumerate(b, 1):
+            d = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb))
+            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
+                d = min(d, prev2[j - 2] + 1)
+            cur.append(d)
+        prev2, prev = prev, cur
+    return prev[-1]

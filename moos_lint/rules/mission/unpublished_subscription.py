@@ -52,16 +52,17 @@ MOOS-IvP caveats, deliberately not reported:
   mission in its folder describes that community: anything may arrive;
 - variables that a person pokes by hand (uPokeDB from a terminal,
   uMAC): give them a publisher in the mission, or suppress the finding;
-- a variable named with the prefix of a launched app that the catalogue does
-  not know (`UFRM_WINNER` when the mission runs uFldRescueMgr from another
-  tree): MOOS-IvP apps name their own variables after their initials
-  (uSimMarine `USM_*`, uFldShoreBroker `UFSB_*`), so that app most likely posts it.
+- a variable named after a launched app that the catalogue does not know,
+  by its initials or its name (`UFRM_WINNER` when the mission runs
+  uFldRescueMgr from another tree, `ODOMETRY_DIST` when it runs pOdometry):
+  MOOS-IvP apps name their own variables so (uSimMarine `USM_*`,
+  uFldShoreBroker `UFSB_*`), so that app most likely posts it.
 """
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.mission_model import mission_model
-from moos_lint.semantics.process_names import acronym
+from moos_lint.semantics.process_names import own_prefixes
 from moos_lint.semantics.variables import bare_name
 
 
@@ -88,7 +89,7 @@ def check(ctx):
     if model.inbound and not model.sibling_missions:
         return  # variables may come from a community the linter cannot see
     gaps = _gaps(model)
-    unknown_prefixes = {acronym(p.binary) for p in model.unknown_apps} - {""}
+    unknown_prefixes = {pre for p in model.unknown_apps for pre in own_prefixes(p.binary)}
     seen: set[tuple[str, str, int]] = set()
     for ref in model.waits:
         name = bare_name(ref.name)
@@ -100,7 +101,7 @@ def check(ctx):
         if key in seen:
             continue
         seen.add(key)
-        if name.split("_", 1)[0] in unknown_prefixes:
+        if _named_after(name, unknown_prefixes):
             continue  # named after an app the catalogue does not know: likely its own
         owner = ref.app if ref.app else "the mission"
         subject = Subject(variable=name, app=ref.app or None, key=ref.param)
@@ -116,3 +117,9 @@ def check(ctx):
             )
         else:
             yield ctx.report(ref.span, msg, line=ref.line, subject=subject)
+
+
+def _named_after(name: str, prefixes: set[str]) -> bool:
+    """Whether ``name`` is one of ``prefixes`` or starts with one and ``_``."""
+    parts = name.split("_")
+    return any("_".join(parts[:i]) in prefixes for i in range(1, len(parts) + 1))
