@@ -4,13 +4,15 @@ from __future__ import annotations
 
 import json
 import re
+import subprocess
+import sys
 
 from moos_lint.commands.graph import _flagged_vars
 from moos_lint.files.diagnostics import Diagnostic, Severity, Span, Subject
 from moos_lint.files.suffixes import is_cpp, is_cpp_source
 from moos_lint.frontends.nsplug import Preprocessor
 from moos_lint.frontends.parsers.bhv import parse_bhv
-from moos_lint.semantics.catalogue import STOCK, stock
+from moos_lint.semantics.catalogue import DELEGATE, STOCK, stock
 
 #: a source file and line (or line range) of MOOS-IvP or MOOS core
 _EVIDENCE = re.compile(r"(ivp/src|MOOS_Jul2724)/[\w/.-]+\.(cpp|h):\d+")
@@ -110,3 +112,18 @@ def test_an_apps_text_is_what_the_run_read_with_its_lines_ended_alike(tmp_path):
     assert app_text(str(crlf), sources) == want  # the run's text, not a second read
     assert app_text(str(crlf), {}) == "changed since the run read it"  # not read by the run
     assert app_text(str(tmp_path / "gone.cpp"), sources) == ""
+
+
+def test_the_delegate_pattern_is_linear_on_commented_out_code():
+    """A commented-out ``else`` whose lines hold a second ``//`` (each line can be split
+    two ways) once took 2^lines steps: 40 such lines must match at once. The search runs
+    in a child process with a deadline, so that a regression fails instead of hanging."""
+    code = "if(a) {\n}\n//  else{\n" + "//    // a note\n" * 40 + "//  }\nx = 1;\n"
+    script = (
+        "import sys\nfrom moos_lint.semantics.catalogue import DELEGATE\n"
+        "sys.exit(3 if DELEGATE.search(sys.stdin.read()) else 0)"
+    )
+    done = subprocess.run([sys.executable, "-c", script], input=code, text=True, timeout=60)
+    assert done.returncode == 0
+    # the pattern still finds a real hand-over, past comment lines
+    assert DELEGATE.search("else {\n  // the rest\n  handled = m_lib.setParam(param, value);")

@@ -405,7 +405,7 @@ READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 #: Written literal first (``else(?<=\belse)`` is ``\belse``): a pattern that starts with
 #: ``\b`` is tried at every position of the text, 20x slower over an app's files.
 DELEGATE = re.compile(
-    r"else(?<=\belse)\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
+    r"else(?<=\belse)\s*\{?\s*(?://[^\n]*+\s*+)*+handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
 )
 
 
