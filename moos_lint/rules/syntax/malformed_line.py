@@ -7,7 +7,11 @@ Reports a line in a `.moos` file that MOOS cannot read as anything: it has no
 ## Why is this bad?
 MOOS drops such a line without a word. It is usually a typo (`AppTick 4`,
 a missing `=`) or a leftover note, and whatever the author meant it to set is
-not set. A merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as
+not set. The markers of a C block comment (`/*` alone on its line, `*/`)
+around lines MOOS reads are named as such: MOOS has only `//` comments, so the
+lines between the two markers, meant to be switched off, are read (a block
+comment around lines MOOS drops anyway, a one-line `/* ... */`, is harmless
+and not reported). A merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as
 such: the file was committed in the middle of a merge, and MOOS reads the lines
 of both sides, the later line of a key winning or both kept.
 
@@ -34,17 +38,27 @@ None.
 """
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.frontends.parsers.moos import looks_commented
+from moos_lint.frontends.parsers.moos import looks_commented, strip_comment
 from moos_lint.frontends.parsers.nodes import conflict_marker
 from moos_lint.rules.kit.declare import Scope, rule
 
 
 @rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
+    opens, closes = _block_comments(ctx.moos.lines)
     for line in ctx.moos.malformed:
         text = line.text.strip()
+        if id(line) in opens:
+            msg = "MOOS has no `/* */` comments: it drops this line, but reads the lines "
+            yield ctx.at_line(line, msg + "after it up to `*/` as usual")
+            continue
         if looks_commented(text):
             continue  # not-a-comment's (when MOOS keeps the line) or the nsplug rules'
+        if id(line) in closes:
+            if closes[id(line)]:
+                msg = "MOOS has no `/* */` comments: this `*/` closes nothing, and the lines "
+                yield ctx.at_line(line, msg + "before it were read as usual")
+            continue  # (the end of a block comment around lines MOOS drops anyway: harmless)
         if conflict_marker(text):
             msg = "a merge-conflict marker: the file was committed mid-merge, and MOOS reads "
             yield ctx.at_line(line, msg + "the lines of both sides")
@@ -57,3 +71,27 @@ def check(ctx):
                 f"{block.name} reads this block as protobuf text: {why}",
                 line=line,
             )
+
+
+def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
+    """The ids of the lines that open (``/*`` with no ``*/`` after it) a C block comment
+    around at least one line MOOS reads (a ``key = value``, a brace), and of the lines
+    that close one (``*/``), with whether it is around such a line."""
+    opens: set[int] = set()
+    closes: dict[int, bool] = {}
+    start = None
+    reads = False
+    for line in lines:
+        text = strip_comment(line.text).strip()
+        if start is None:
+            if text.startswith("/*") and "*/" not in text[2:]:
+                start, reads = line, False
+            continue
+        if "*/" in text:
+            if reads:
+                opens.add(id(start))
+            closes[id(line)] = reads
+            start = None
+        elif "=" in text or text in ("{", "}"):
+            reads = True
+    return opens, closes
