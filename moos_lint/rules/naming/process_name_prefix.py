@@ -23,7 +23,8 @@ CMake `add_executable(pName ...)` of the folder (read as text; of a folder
 that builds several programs, the one whose source list holds the app class's
 files), else the folder name (never for a folder that builds several programs
 and none clearly this app). It reports on the `Run` literal, or on the app class when the
-name comes from CMake or the folder. Only folders with a class derived from
+name comes from CMake or the folder. A program the linted C++ builds is reported
+there once, not again on each Run line that launches it. Only folders with a class derived from
 CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps.
 
 ## Why is this bad?
@@ -72,6 +73,7 @@ from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
+from moos_lint.semantics.catalogue import catalogue_for
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 #: MOOS's own programs: the database, the launcher, and MOOS core's command-line tools
@@ -99,10 +101,14 @@ def check(ctx):
     check_aliases = bool(ctx.options.get("check-aliases", True))
     launched: set[str] = set()
     aliases: set[str] = set()
+    cat = catalogue_for(ctx.run)
     for run in ctx.moos.runs:
         program = run.program
         launched.add(run.name.lower())
-        if program and not has_macro(program) and not conforms(program, exempt):
+        info = cat.app(program) if program else None
+        if info is not None and info.own:
+            pass  # an app of the linted C++: reported once, where it is defined
+        elif program and not has_macro(program) and not conforms(program, exempt):
             yield ctx.report(
                 run.binary_span,
                 f"process `{program}` {prefix_problem(program)}",

@@ -110,6 +110,8 @@ class AppInfo:
     #: when it is not the program's own name: however it is launched, alias or not, it
     #: connects under that name and reads that block
     moos_name: str | None = None
+    #: the run's own C++ defines it (the C++ rules judge it where it is defined)
+    own: bool = False
 
     def reads(self, key: str) -> bool:
         """Whether the app reads the (lower-case) configuration key."""
@@ -452,6 +454,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         needs_process_config=_needs_block(app, text),
         provenance=f"C++ {_shown(app.folder)}",
         published_keys=_published_keys(app),
+        own=True,
     )
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
