@@ -794,6 +794,8 @@ class Extractor:
                 out.has_on_new_mail = True
             if re.search(r"mail", short(fname), re.I):
                 self._mail_handling(fn)
+            elif short(fname) == "OnStartUp" or _CONFIG_FN.search(short(fname)):
+                self._config_handling(fn)
         for call, fn, args in pf.calls:
             self._call(call, fn, args)
         for cmp, left, right in pf.cmps:
@@ -1053,6 +1055,44 @@ class Extractor:
                         self._key_against(left, right)
             stack.extend(n.named_children)
 
+    def _config_handling(self, fn: Any) -> None:
+        """Configuration keys compared with a name held elsewhere (``param == m_x_key`` of
+        a member set to a literal in the constructor, ``MOOSStrCmp(param, KEY_X)`` of a
+        ``#define``): the key, when it can be read."""
+        body = fn.child_by_field_name("body")
+        if body is None:
+            return
+        stack = [body]
+        while stack:
+            n = stack.pop()
+            pair = None
+            if n.type == "binary_expression":
+                op = n.child_by_field_name("operator")
+                if op is not None and op.type == "==":
+                    pair = n.child_by_field_name("left"), n.child_by_field_name("right")
+            elif n.type == "call_expression" and callee(n.child_by_field_name("function")) in (
+                MAIL_COMPARES
+            ):
+                args = n.child_by_field_name("arguments").named_children
+                if len(args) > 1:
+                    pair = args[0], args[1]
+            if pair is not None:
+                a, b = strip_parens(pair[0]), strip_parens(pair[1])
+                if a is not None and b is not None:
+                    self._config_against(a, b)
+            stack.extend(n.named_children)
+
+    def _config_against(self, a: Any, b: Any) -> None:
+        for subject, other in ((a, b), (b, a)):
+            if other.type not in _NAME_NODES or subject.type != "identifier":
+                continue
+            if not _CONFIG_SUBJECT.search(text(subject)) or _CONFIG_SUBJECT.search(text(other)):
+                continue
+            val, _ = self._resolve(other, 0)
+            if val:
+                self.out.config_params.append(ConfigParam(val.lower(), self.pf.spans.of(other)))
+            return
+
     def _key_against(self, a: Any, b: Any) -> None:
         """The key compared with a name held elsewhere (``key == SLAVE_ORDERS`` of a
         ``#define``, ``key == m_var`` of a member set to a literal): the name, when it can
@@ -1093,6 +1133,9 @@ def _is_key(n: Any) -> bool:
 
 #: what a mail handler compares a key with when it holds the name elsewhere
 _NAME_NODES = ("identifier", "field_expression", "qualified_identifier")
+#: the functions that read an app's configuration, and the key they compare
+_CONFIG_FN = re.compile(r"config|startup|param", re.I)
+_CONFIG_SUBJECT = re.compile(r"^(?:s|str)?(?:param|key|line|name|var|arg)\w*$", re.I)
 #: the message's key (``msg.GetKey()``, ``key``, ``sKey``, ``rMsg.m_sKey``)
 _KEY_SUBJECT = re.compile(r"key|GetName", re.I)
 _GENERIC_ARG = re.compile(r"^(?:\*?p|\w*[Mm]sg|\w*[Kk]ey|\w*[Mm]ail\w*|message|e|rMsg)$")

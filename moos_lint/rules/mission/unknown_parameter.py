@@ -8,7 +8,9 @@ not handle. It says which known parameter is close (`did you mean ...?`,
 compared without regard to case, as MOOS compares keys), and offers a fix
 that respells the key when exactly one known parameter is close.
 
-The catalogue holds the apps whose C++ is linted in the same run, the
+The catalogue holds the apps whose C++ is linted in the same run (the keys
+their start-up compares with a literal, a `#define` or a member set to a
+literal, `param == m_depth_key`), the
 catalogue files named in `catalogues = [...]`, and the stock MOOS and
 MOOS-IvP apps (generated from their sources; see `moos_lint/semantics/catalogue/`).
 Every app also accepts the keys its base classes read (`AppTick`,
