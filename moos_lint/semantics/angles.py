@@ -20,7 +20,9 @@ non-alphanumerics) is ``YAW``, ``PITCH``, ``ROLL`` or ``RADIANS``. So
 ``YAW_RATE`` and ``NAV_HEADING`` are not, and neither is a ``_RAD`` suffix:
 in MOOS-IvP that is a radius (``turn1_rad = 20`` in a behavior is metres).
 Values with a macro (``$(X)``, ``$[X]``), quoted strings and anything that is
-not one plain number are not literals and are left alone.
+not one plain number are not literals and are left alone. So is a parameter
+whose line comment says it is in degrees (``pose_yaw = -90  // degrees``): an
+app's configuration key is read in the unit the app documents.
 """
 
 from __future__ import annotations
@@ -190,11 +192,18 @@ def _viewer_posts(key: str, text: str, base: int, line: Line) -> Iterator[AngleV
             yield found
 
 
+#: a line comment that gives the value's unit as degrees (``// Angles in degrees``, ``(deg)``)
+_DEGREES_NOTE = re.compile(r"//.*(?:\bdeg(?:rees?|s)?\b|°)", re.IGNORECASE)
+
+
 def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[AngleValue]:
     lkey = "".join(key.split()).lower()
     found = _make(key, value, line, base, "parameter", config_key=True)
     if found is not None:
-        yield found
+        # an app's own key whose line says it is in degrees (a library's mounting pose,
+        # `pose_yaw = -90 // degrees`): the app reads it in the unit it documents
+        if not _DEGREES_NOTE.search(line.text):
+            yield found
         return
     if lkey == "event":
         found = _timer_event(value, base, line)

@@ -36,7 +36,9 @@ follow the radian convention for every angle.
 
 Deliberately not reported: heading fields (degrees by convention), names
 where the angle word is not the last (`pitch_pid_kp`), `maxpitch` and
-`max_pitch`, and values that are not one plain number.
+`max_pitch`, values that are not one plain number, and a parameter whose line
+comment says it is in degrees (`pose_roll = -106  // degrees`: an app's own
+key, read in the unit the app documents).
 
 ## Example
 ```bhv

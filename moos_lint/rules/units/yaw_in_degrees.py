@@ -39,6 +39,9 @@ Deliberately not reported:
   `yaw_pid_kp` or a `YAW_RATE`;
 - values that are not one plain number: `$(MACRO)`, `$[MACRO]`, quoted
   strings (uTimerScript posts `val="90"` as a string), lists;
+- a parameter whose line comment says it is in degrees (`pose_yaw = -90  //
+  degrees`, a vision library's mounting pose): an app's own key, read in the
+  unit the app documents;
 - values up to 2π: they may be radians (see `angle-not-wrapped` for values
   between π and 2π).
 
