@@ -66,6 +66,14 @@ FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
 #: ``Set`` on a table of published ``CMOOSVariable``s (published by ``PublishFreshMOOSVariables``)
 VARIABLE_SET = {"Set"}
+#: CMOOSApp's dynamic variables: ``AddMOOSVariable(name, subscribe_as, publish_as, period)``
+#: declares one, ``SetMOOSVar(name, value, time)`` writes it, and
+#: ``PublishFreshMOOSVariables()`` posts the fresh ones under their ``publish_as`` names
+#: (core MOOS, App/MOOSApp.cpp); ``RegisterMOOSVariables()`` subscribes to ``subscribe_as``
+ADD_MOOS_VAR = "AddMOOSVariable"
+#: ``m_Comms.PeekMail(NewMail, "KEY", Msg)``: the mail of one key taken from the list
+PEEK_MAIL = {"PeekMail", "PeekAndCheckMail"}
+SET_MOOS_VAR = "SetMOOSVar"
 CALLED = (
     PUBLISH
     | {NOTIFY_MSG}
@@ -78,6 +86,7 @@ CALLED = (
     | STRCMP
     | FROM_DEGREES
     | VARIABLE_SET
+    | {ADD_MOOS_VAR, SET_MOOS_VAR}
 )
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
@@ -215,6 +224,11 @@ class FolderTables:
     config_keys: dict[str, str] = field(default_factory=dict)
     # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
     name_tables: dict[str, list[str]] = field(default_factory=dict)
+    # a dynamic variable's name -> the name it is published as (``AddMOOSVariable``; None
+    # when declared twice with different names)
+    moos_vars: dict[str, str | None] = field(default_factory=dict)
+    # the folder calls ``RegisterMOOSVariables()``: its dynamic variables are subscribed
+    registers_moos_vars: bool = False
     # the folder's files, for :meth:`upper_cased` (worked out on first use)
     files: list[ParsedFile] = field(default_factory=list)
     _upper: set[str] | None = None
@@ -336,6 +350,7 @@ class ParsedFile:
 def collect_tables(files: list[ParsedFile]) -> FolderTables:
     t = FolderTables()
     for pf in files:
+        t.registers_moos_vars = t.registers_moos_vars or b"RegisterMOOSVariables" in pf.data
         for name, define in pf.defines:
             m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
             if m:
@@ -365,6 +380,13 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
             t.assigns.setdefault(name, []).append(val)
         for _call, fn, args in pf.calls:
             argv = args.named_children
+            if callee(fn) == ADD_MOOS_VAR and len(argv) >= 3:
+                var = string_value(strip_parens(argv[0]))
+                pub = string_value(strip_parens(argv[2]))
+                if var is not None and pub:
+                    known = t.moos_vars.setdefault(var, pub)
+                    if known != pub:
+                        t.moos_vars[var] = None
             if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
                 ckey = string_value(strip_parens(argv[-2]))
                 member = target_name(argv[-1])
@@ -866,11 +888,19 @@ class Extractor:
     def _fn_of(self, n: Any) -> str:
         return self.pf.function_name_of(n)
 
-    def _publish(self, node: Any, args: Any, name_arg: Any, value_arg: Any, index: int) -> None:
-        """A publication at ``node`` of the name ``name_arg`` with the value ``value_arg``,
-        the ``index``-th argument of ``args``."""
+    def _publish(
+        self,
+        node: Any,
+        args: Any,
+        name_arg: Any,
+        value_arg: Any,
+        index: int,
+        named: Name | None = None,
+    ) -> None:
+        """A publication at ``node`` of the name ``name_arg`` (or ``named``, the name it
+        stands for) with the value ``value_arg``, the ``index``-th argument of ``args``."""
         spans = self.pf.spans
-        pub_name = self.name(name_arg)
+        pub_name = named if named is not None else self.name(name_arg)
         names = [pub_name] if pub_name.text is not None else self._table_names(name_arg)
         names = names or [pub_name]
         value = self.value(value_arg) if value_arg is not None else None
@@ -909,6 +939,20 @@ class Extractor:
             self._notify_msg(call, args)
         elif name in VARIABLE_SET and argv and fn.type == "field_expression":
             self._variable_set(call, fn, argv)
+        elif name == SET_MOOS_VAR and len(argv) >= 2 and _is_moos_call(fn):
+            var = string_value(strip_parens(argv[0]))
+            pub = self.tables.moos_vars.get(var) if var is not None else None
+            if pub:
+                named = Name(source=text(argv[0]), text=pub, prefix=pub)
+                self._publish(call, args, argv[0], argv[1], 1, named=named)
+        elif name == ADD_MOOS_VAR and len(argv) >= 3 and _is_moos_call(fn):
+            # subscribed to its second name by RegisterMOOSVariables(), when the app calls it
+            if self.tables.registers_moos_vars and string_value(strip_parens(argv[1])):
+                out.subscriptions.append(
+                    Subscription(
+                        self.name(argv[1]), spans.of(call), spans.of(argv[1]), self._fn_of(call)
+                    )
+                )
         elif name in FROM_DEGREES and argv:
             var = mail_key_of(call)
             if var is not None and _reads_mail(argv[0]):
@@ -1046,6 +1090,10 @@ class Extractor:
                         self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n)))
                 if name in MAIL_COMPARES and len(args) > 1:
                     self._key_against(strip_parens(args[0]), strip_parens(args[1]))
+                if name in PEEK_MAIL and len(args) > 1:  # PeekMail(NewMail, "KEY", Msg)
+                    val, _ = self._resolve(args[1], 0)
+                    if val is not None:
+                        self.out.mail_keys.append(MailKey(val, self.pf.spans.of(args[1])))
             elif n.type == "binary_expression":
                 op = n.child_by_field_name("operator")
                 if op is not None and op.type in ("==", "!="):

@@ -1081,8 +1081,10 @@ class Evaluator:
                 a = _as_compound(a, key)  # ``yaw = yaw + 2*M_PI`` as ``yaw += 2*M_PI``
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
-                if v.pending is not None and name_hint(key).known:
-                    v = name_hint(key)  # an opaque getter kept in a variable that names its unit
+                if (v.pending is not None or _parsed_text(a.rhs, v)) and name_hint(key).known:
+                    # an opaque getter, or a number parsed from a device's text, kept in a
+                    # variable that names its unit (``double dfHeading = atof(field)``)
+                    v = name_hint(key)
                 if cond is not None and state is not None and not _inside(use, cond):
                     state = join(state, v)
                 else:
@@ -1285,6 +1287,15 @@ def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractVa
         return replace(out, why=(*v.why, *why)) if v.why or why else out
     out = replace(v, scale=v.scale * c)
     return replace(out, why=(*out.why, *why)) if why else out
+
+
+def _parsed_text(rhs: Any, v: AbstractValue) -> bool:
+    """Whether ``rhs`` is a number parsed from text (``atof(...)``, ``std::stod(...)``) of
+    which nothing is known: a value that only its variable's name describes."""
+    n = strip(rhs)
+    if n is None or n.type != "call_expression" or v.known or v.const is not None:
+        return False
+    return callee_name(n.child_by_field_name("function")) in facts.TEXT_TO_NUMBER
 
 
 def _as_compound(a: Any, key: str) -> Any:

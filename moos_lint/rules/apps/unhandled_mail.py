@@ -3,13 +3,17 @@
 ## What it does
 Reports a literal variable name passed to `Register` when the app's
 `OnNewMail` dispatches on literal keys (`key == "X"`, `MOOSStrCmp(key, "X")`,
-`msg.IsName("X")`, prefix tests like `strBegins(key, "X_")`) and none of them
+`msg.IsName("X")`, `m_Comms.PeekMail(NewMail, "X", msg)`, prefix tests like
+`strBegins(key, "X_")`) and none of them
 matches that name. A key compared with a name held elsewhere counts as that
 name when it can be read: a `#define` or constant, a member set to a literal
 (`m_visit_var = "VISIT_POINT"`). A name that cannot be read (a
 collaborator's, `m_collab + "_NAV_X"`, given at run time) handles no literal
 registration: `Register("COLLABORATOR_NAV_X")` beside such a test is a
 literal written where the collaborator's name was meant.
+A dynamic variable's subscription (`AddMOOSVariable(name, "X", ...)` with
+`RegisterMOOSVariables()`) counts as a registration; passing the mail to
+`UpdateMOOSVariables(NewMail)` handles it.
 Wildcard registrations, names built at run time and names the app
 publishes itself (registered to watch its own posts) are not reported, nor
 are apps whose OnNewMail hands whole messages to code the linter does not

@@ -12,7 +12,8 @@ radians (value·π/180, wrapped to ±π), and a fix replaces the literal with it
 rounded to 4 decimals.
 
 
-In C++, it reports `Notify` of a YAW variable (`NAV_YAW`, or a name built
+In C++, it reports `Notify` (or `SetMOOSVar` of a dynamic variable published
+under that name) of a YAW variable (`NAV_YAW`, or a name built
 at run time whose last word is YAW) with a value in degrees: a literal above
 2π (with `--cpp-backend clang`, also a constant expression that folds above
 2π), a conversion to degrees (`* 180 / M_PI`, `radToDegrees`), a heading or
