@@ -245,23 +245,28 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
 
 
 def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
-    seen = set()
+    """Each name once per app, at its first place (published before subscribed to), with
+    the number of other places that use it."""
+    places: dict[str, list[tuple[Span, str]]] = {}
     items: list[tuple[Any, str]] = [(p, "published") for p in app.publications]
     items += [(s, "subscribed to") for s in app.subscriptions]
     for item, verb in items:
         name = item.name.text
-        if name is None or not name or (item.name_span.path, item.name_span.line, name) in seen:
+        if name is None or not name:
             continue
-        seen.add((item.name_span.path, item.name_span.line, name))
         check = name.replace("*", "").replace("?", "")
         if not check or UPPER_SNAKE.match(check) or re.fullmatch(r"[A-Z0-9_]+", check):
             continue
         if re.search(r"\s", name) or any(fnmatch.fnmatchcase(name, a) for a in allow):
             continue  # not a variable name (a message or a format), or allowed
-        yield (
-            item.name_span,
-            f"variable `{name}` ({verb}) is not UPPER_SNAKE_CASE",
-        )
+        spans = places.setdefault(name, [])
+        if all((s.path, s.line) != (item.name_span.path, item.name_span.line) for s, _ in spans):
+            spans.append((item.name_span, verb))
+    for name, spans in places.items():
+        span, verb = spans[0]
+        more = len(spans) - 1
+        also = f"; the app uses it in {more} more place{'s' if more > 1 else ''}" if more else ""
+        yield span, f"variable `{name}` ({verb}) is not UPPER_SNAKE_CASE{also}"
 
 
 def unhandled_mail(app: AppModel) -> Iterator[Finding]:
