@@ -5,6 +5,9 @@ is what moos-lint may call valid.
 
 from __future__ import annotations
 
+#: the words ``setBooleanOnString`` accepts (lower-cased first by most callers)
+BOOLEAN_WORDS = frozenset({"true", "false", "on", "off", "yes", "no", "toggle"})
+
 
 def strip_blank_ends(s: str) -> str:
     """``stripBlankEnds``: tabs and blanks in front; also CR, LF and NUL behind."""

@@ -108,10 +108,9 @@ from moos_lint.rules.mission._behaviors import lookup
 from moos_lint.rules.mission.unknown_parameter import block_apps, text_blocks
 from moos_lint.semantics.catalogue import text_format_schema
 from moos_lint.semantics.geometry_forms import INVALID, is_geometry_form, judge
-from moos_lint.semantics.mbutil import is_number, var_data_pair
+from moos_lint.semantics.mbutil import BOOLEAN_WORDS, is_number, var_data_pair
 from moos_lint.semantics.variables import is_flag_param
 
-BOOLS = {"true", "false", "on", "off", "yes", "no", "toggle"}
 _MOOS_DOUBLE = re.compile(r"^[0-9-]")
 
 
@@ -169,7 +168,7 @@ def problem(form: str, value: str) -> str | None:
             return "is not one of " + ", ".join(f"`{a}`" for a in allowed)
         return None
     if form == "bool":
-        if value.lower() not in BOOLS:
+        if value.lower() not in BOOLEAN_WORDS:
             return "is not a boolean (true/false, on/off, yes/no)"
         return None
     if form == "moos_double":

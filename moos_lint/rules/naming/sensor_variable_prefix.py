@@ -12,7 +12,7 @@ A variable counts as published when the value of a parameter names it:
 - the published variables `moos_lint/semantics/variables.py` knows for that app;
 - the value of a parameter whose key matches `publish-keys` (`*_var`,
   `*_variable`, `publish`, ...) and that is one upper-case word such as
-  `GPS_X` (values like `true`, numbers, paths and lists are left alone).
+  `GPS_X` (values like `true` or `FALSE`, numbers, paths and lists are left alone).
 
 Names with an nsplug macro (`$(X)`) or a run-time placeholder are skipped.
 
@@ -67,6 +67,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.mbutil import BOOLEAN_WORDS
 from moos_lint.semantics.variables import PUBLISH, bare_name, block_variables
 
 _INTERFACE = re.compile(r"^i[A-Z]")
@@ -114,7 +115,11 @@ def check(ctx):
                 if r.role == PUBLISH
             ]
         for p in block.params:
-            if any(fnmatch.fnmatchcase(p.lkey, k) for k in keys) and _WORD.fullmatch(p.value):
+            if (
+                any(fnmatch.fnmatchcase(p.lkey, k) for k in keys)
+                and _WORD.fullmatch(p.value)
+                and p.value.lower() not in BOOLEAN_WORDS  # `publish_raw = FALSE` is a switch
+            ):
                 found.append((p.value, p.value_span, p.line, ""))
         listed = {(s.line, n) for n, s, _l, _w in found}
         for c in configured.get(block.name, ()):
