@@ -80,6 +80,19 @@ NMEA_SENTENCES = (
     "THS",
 )
 
+#: Library getters whose angle is known: name -> (unit, sense, range, what it is). MAVLink's
+#: ATTITUDE message gives "the attitude in the aeronautical frame (right-handed, Z-down,
+#: Y-right, X-front, ZYX, intrinsic)", yaw in rad, -pi..+pi (mavlink message_definitions
+#: common.xml, ATTITUDE): about Z-down, its yaw turns clockwise from north, as a heading.
+LIBRARY_ANGLES: dict[str, tuple[str, str, tuple[float, float], str]] = {
+    "mavlink_msg_attitude_get_yaw": (
+        "rad",
+        "heading",
+        (-math.pi, math.pi),
+        "MAVLink's ATTITUDE yaw, about Z-down: clockwise from north",
+    ),
+}
+
 #: Calls that turn text into a number.
 TEXT_TO_NUMBER = {"atof", "stod", "strtod", "stof", "strtof", "stold", "strtold"}
 

@@ -842,6 +842,11 @@ class Evaluator:
         name = callee_name(fn)
         bare = re.sub(r"^std::", "", name)
         at = place(pf.path, n.start_point[0] + 1)
+        if name in facts.LIBRARY_ANGLES:
+            unit, sense, rng, what = facts.LIBRARY_ANGLES[name]
+            return AbstractValue(
+                unit=unit, sense=sense, range=rng, why=(f"{name}() at {at}: {what}",)
+            )
         if name in facts.HELPERS and args:
             unit_in, unit_out, rng, sense = facts.HELPERS[name]
             arg = self._eval(pf, args[0], depth + 1)

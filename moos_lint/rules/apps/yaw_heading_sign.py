@@ -6,7 +6,9 @@ turned into radians as `heading*M_PI/180`, `degToRadians(heading)` or
 `MOOSDeg2Rad(hdg)` with no minus sign, also when the conversion is steps away
 (a member set in one method and published in another). A heading is a value
 read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
-heading.
+heading. A yaw taken about a Z axis pointing down turns clockwise as a heading
+does: MAVLink's ATTITUDE yaw (`mavlink_msg_attitude_get_yaw`) published as a
+yaw without the minus sign is reported too.
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
