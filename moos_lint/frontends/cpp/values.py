@@ -842,10 +842,13 @@ class Evaluator:
         name = callee_name(fn)
         bare = re.sub(r"^std::", "", name)
         at = place(pf.path, n.start_point[0] + 1)
-        if name in facts.LIBRARY_ANGLES:
-            unit, sense, rng, what = facts.LIBRARY_ANGLES[name]
+        known = facts.LIBRARY_ANGLES.get(name)
+        if known is not None:
             return AbstractValue(
-                unit=unit, sense=sense, range=rng, why=(f"{name}() at {at}: {what}",)
+                unit=known[0],
+                sense=known[1],
+                range=known[2],
+                why=(f"{name}() at {at}: {known[3]}",),
             )
         if name in facts.HELPERS and args:
             unit_in, unit_out, rng, sense = facts.HELPERS[name]
