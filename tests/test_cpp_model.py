@@ -171,6 +171,7 @@ def test_discovery_leaves_nsplugs_output_beside_its_template(tmp_path):
     missions.mkdir()
     for name in ("meta_vehicle.moos", "meta_vehicle.bhv", "targ_alpha.moos", "targ_alpha.bhv"):
         (missions / name).write_text("ServerPort = 9000\n")
+    (missions / "worked_targ_alpha.moos").write_text("ServerPort = 9000\n")  # a kept copy
     archive = tmp_path / "archive"  # targ files kept without their template
     archive.mkdir()
     (archive / "targ_alpha.moos").write_text("ServerPort = 9000\n")

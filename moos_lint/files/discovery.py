@@ -181,8 +181,9 @@ def _generated_beside_template(name: str, present: set[str]) -> bool:
     """Whether ``name`` is a ``targ_`` file that nsplug made from a ``meta_`` template of the
     same suffix in its folder (``present``: the folder's file names): MOOS-IvP's launch
     scripts write ``nsplug meta_vehicle.moos targ_$VNAME.moos``; the findings are the
-    template's, reported there."""
-    if not name.startswith("targ_"):
+    template's, reported there. A kept copy of one (``worked_targ_NOSTROMO.moos``) is
+    one too."""
+    if not (name.startswith("targ_") or "_targ_" in name):
         return False
     suffix = os.path.splitext(name)[1]
     return any(p.startswith("meta_") and p.endswith(suffix) for p in present)

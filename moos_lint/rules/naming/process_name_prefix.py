@@ -61,7 +61,8 @@ Rename the program, or choose an alias that keeps the program's prefix
 ## Options
 - `exempt` (list of strings, default `["MOOSDB", "ANTLER", "pAntler", "umm", "mtm",
   "gtm", "ktm", "atm", "mqos"]`):
-  names that need no prefix, compared without regard to case.
+  names that need no prefix, compared without regard to case; nor do the
+  aliases of these programs (`Run = MOOSDB @ NewConsole = false ~ MOOSDB_ALPHA`).
 - `check-aliases` (bool, default `true`): also check `~` aliases,
   `--alias=` names and the `ProcessConfig` blocks of aliases. With `false`,
   only program names and blocks that are not an alias are checked.
@@ -116,6 +117,8 @@ def check(ctx):
             )
         for alias, span, line in _aliases(run):
             aliases.add(alias.lower())
+            if program and program.lower() in exempt:
+                continue  # an alias of MOOS's own programs (`MOOSDB ~ MOOSDB_ALPHA`)
             if check_aliases and not has_macro(alias) and not conforms(alias, exempt):
                 yield ctx.report(
                     span,
