@@ -207,3 +207,61 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     out.discard("/dev/null")
     out.discard("null")
     return frozenset(out)
+
+
+_PATCH_RUN = re.compile(r"^[ \t]*run[ \t]*=[ \t]*([^@~\s]+)[^~\n]*(?:~[ \t]*(\S+))?", re.I | re.M)
+
+
+def patch_launches(folder: str) -> frozenset[str]:
+    """The lower-case names that the ``Run`` lines of the nspatch patch files (``*.xmoos``)
+    of ``folder`` launch, aliases included: ``nspatch --stem=meta_shoreside.moos
+    full-logging.xmoos`` overwrites or augments the stem's blocks, its ANTLER block too
+    (moos-ivp ``app_nspatch``). Read as text, never run."""
+    try:
+        names = sorted(n for n in os.listdir(folder) if n.endswith(".xmoos"))
+    except OSError:
+        return frozenset()
+    stamps = []
+    for n in names:
+        path = os.path.join(folder, n)
+        try:
+            st = os.stat(path)
+        except OSError:
+            continue
+        stamps.append((path, st.st_mtime_ns, st.st_size))
+    return _patch_runs(tuple(stamps))
+
+
+@functools.lru_cache(maxsize=256)
+def _patch_runs(stamps: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
+    out: set[str] = set()
+    for text in (t for _p, t in _read_scripts(stamps)):
+        for m in _PATCH_RUN.finditer(text):
+            out.add(m.group(1).rsplit("/", 1)[-1].lower())
+            if m.group(2):
+                out.add(m.group(2).lower())
+    return frozenset(out)
+
+
+#: a shell command given a mission file: its program (first word) and its words
+_STARTS_MISSION = re.compile(r"^[ \t]*([^\s;&|#]+)([^\n;&|#]*\.moos\b[^\n;&|#]*)", re.M)
+_ALIAS_ARG = re.compile(r"--alias=[\"']?([A-Za-z_][\w\-]*)")
+
+
+def script_launches(folder: str) -> frozenset[str]:
+    """The lower-case names of the processes the shell scripts of ``folder`` start with a
+    mission file (``uMAC targ_shoreside.moos``, ``"$BIN" targ.moos --alias=pTraffic``):
+    the program's own name, and the name ``--alias=`` gives it. Read as text, never run."""
+    return _started(shell_scripts(folder))
+
+
+@functools.lru_cache(maxsize=256)
+def _started(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
+    out: set[str] = set()
+    for _path, text in scripts:
+        for m in _STARTS_MISSION.finditer(text):
+            program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
+            if re.fullmatch(r"[A-Za-z_][\w\-]*", program):
+                out.add(program.lower())
+            out.update(a.lower() for a in _ALIAS_ARG.findall(m.group(2)))
+    return frozenset(out)

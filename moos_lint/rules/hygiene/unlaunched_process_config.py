@@ -64,6 +64,12 @@ MOOS-IvP caveats, deliberately not reported:
   configuration its own way, so its stem's block (`iSonar`) and any block
   whose name it quotes (`MoosReader(file, "iSonar")`) count as read. The
   script is read as text, never run;
+- a block that a process started another way launches: a `Run` line of an
+  nspatch patch file (`*.xmoos`) beside the mission (`nspatch
+  --stem=meta_shoreside.moos full-logging.xmoos` overwrites or augments the
+  stem's ANTLER block), or a shell script beside it that starts the program
+  with a mission file (`uMAC targ_shoreside.moos`, `"$BIN" targ_shoreside.moos
+  --alias=pTrafficManager`). Both are read as text, never run;
 - a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
   be any name, so it launches (or is launched by) anything it could match;
 - a block and a Run line in mutually exclusive `#ifdef` branches do not launch
@@ -79,10 +85,11 @@ MOOS-IvP caveats, deliberately not reported:
   would break that mission.
 """
 
+import os
 import re
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.launch import script_names
+from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
@@ -125,6 +132,7 @@ def check(ctx):
                 by_name.setdefault(name.lower(), []).append(run)
     commented: dict[str, str] | None = None
     scripts: frozenset[str] | None = None  # what the launched scripts quote
+    patched: frozenset[str] | None = None  # what the nspatch patches beside it launch
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
             continue
@@ -144,6 +152,11 @@ def check(ctx):
             scripts = _script_words(ctx.path, moos)
         if block.lname in scripts:
             continue  # a launched script names it: the script reads it its own way
+        if patched is None:
+            folder = os.path.dirname(os.path.abspath(ctx.path))
+            patched = patch_launches(folder) | script_launches(folder)
+        if block.lname in patched:
+            continue  # an nspatch patch or a shell script beside the mission launches it
         why = elsewhere.get(block.lname)
         advice = "rename the block"
         if why is None:
