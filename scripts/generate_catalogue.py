@@ -449,6 +449,18 @@ PROGRAMS: dict[str, dict] = {
         "needs_process_config": False,
         "why": "reads the top-of-file settings only "
         "(MOOS_Jul2724/MOOSCore/Core/libMOOS/DB/MOOSDB.cpp:278-320)",
+        # its own variables, kept up to date by the database itself (MOOSDB.cpp: DB_TIME
+        # and DB_UPTIME in OnStartUp and DoVarUpdates, DB_CLIENTS on each connection,
+        # DB_EVENT, DB_QOS, DB_RWSUMMARY and DB_VARSUMMARY in their summaries)
+        "publishes": [
+            "DB_CLIENTS",
+            "DB_EVENT",
+            "DB_QOS",
+            "DB_RWSUMMARY",
+            "DB_TIME",
+            "DB_UPTIME",
+            "DB_VARSUMMARY",
+        ],
     },
     "pAntler": {
         "needs_process_config": False,

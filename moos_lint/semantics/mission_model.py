@@ -427,6 +427,9 @@ class _Builder:
         for proc in m.processes:
             if proc.binary.lower() == "phelmivp" and proc.block is not None:
                 self._helm(proc)
+        db = self.cat.programs.get("moosdb")
+        for var in sorted(db.publishes) if db is not None else ():
+            self.add(var, "MOOSDB", "app", process="MOOSDB")  # every mission has its database
         return m
 
     def _process(self, proc: Process) -> None:

@@ -8,7 +8,8 @@ variable that a logic condition waits for: behavior `condition` and
 ...). It reports a variable that no part of the mission publishes:
 
 - a launched app (the catalogue: stock apps, catalogue files, the linted
-  C++), including dynamic names with a known prefix or suffix;
+  C++), including dynamic names with a known prefix or suffix, and the
+  MOOSDB, which posts its own `DB_*` variables (`DB_UPTIME`, `DB_CLIENTS`, ...);
 - a configuration value that names a published variable (uTimerScript
   events, pMarineViewer buttons and actions, pEchoVar targets, share and
   bridge routes, ...);

@@ -148,6 +148,8 @@ class ProgramInfo:
     needs_process_config: bool = False
     launched_manually: bool = False
     provenance: str = ""
+    #: the variables it posts itself (the MOOSDB's ``DB_*``)
+    publishes: frozenset[str] = frozenset()
 
 
 class Catalogue:
@@ -278,6 +280,7 @@ def stock() -> Catalogue:
             needs_process_config=bool(d.get("needs_process_config")),
             launched_manually=bool(d.get("launched_manually")),
             provenance=f"moos-ivp {commit[:8]}: {d.get('why', '')}",
+            publishes=frozenset(d.get("publishes", ())),
         )
     extra = {k.lower() for k in data.get("behavior_extra_params", {})}
     cat.generic_behavior_params = set(extra)
