@@ -37,6 +37,14 @@ from moos_lint.semantics.catalogue import DELEGATE, OPTIONAL_BLOCK, READS_ORIGIN
 _POST = re.compile(
     r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\"([A-Za-z0-9_]+)\"", re.MULTILINE
 )
+#: a literal name and a suffix the configuration may set, empty by default:
+#: ``postMessage(("LOITER_MODE" + m_var_suffix), ...)`` posts LOITER_MODE (BHV_Loiter.cpp:554,
+#: ``m_var_suffix`` set only by the ``var_suffix`` parameter, :208)
+_POST_SUFFIXED = re.compile(
+    r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\(\s*\"([A-Za-z0-9_]*[A-Za-z0-9])\"\s*"
+    r"\+\s*m_\w*suffix\s*\)",
+    re.MULTILINE,
+)
 #: a VarDataPair an app builds from a literal name is one it posts: pMarineViewer's
 #: connection posts and default mouse-click posts (PMV_MOOSApp.cpp:51-54, PMV_Viewer.cpp:92-93)
 _PAIR = re.compile(r"\bVarDataPair\s+\w+\s*\(\s*\"([A-Za-z0-9_]+)\"")
@@ -680,7 +688,7 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
             if m_type and m_type.group(1) in class_params:
                 params |= class_params[m_type.group(1)]
                 delegated.append(m_type.group(1))
-        posts = set(_POST.findall(text))
+        posts = set(_POST.findall(text)) | set(_POST_SUFFIXED.findall(text))
         reads: set[str] = set()
         for lit in _INFO_VARS.findall(text):
             reads.update(v.strip() for v in lit.split(",") if _NAME.match(v.strip()))

@@ -201,3 +201,19 @@ def test_positions_hold_for_every_line_ending(tmp_path, newline):
     (app / "Foo.cpp").write_bytes(newline.join(lines).encode() + newline.encode())
     result = lint_files([str(app / "Foo.cpp")], Settings(select=["N003"]))
     assert [(d.span.line, d.span.col) for d in result.diagnostics] == [(4, 10)]
+
+
+def test_names_through_a_function_that_returns_its_argument(tmp_path):
+    """``Notify(postVar("WATCH_SUMMARY"), ...)``: a function of one string that returns it
+    unless configured otherwise names the literal; one that builds another name does not."""
+    (tmp_path / "Watch.cpp").write_text(
+        "class Watch : public AppCastingMOOSApp {};\n"
+        "std::string Watch::postVar(std::string varname)\n{\n"
+        "  if (m_map.count(varname)) return(m_map[varname]);\n  return(varname);\n}\n"
+        'std::string Watch::prefixed(const std::string& v) { return "W_" + v; }\n'
+        "bool Watch::Iterate()\n{\n"
+        '  Notify(postVar("WATCH_SUMMARY"), m_summary);\n'
+        '  Notify(prefixed("EVENT"), 1);\n  return true;\n}\n'
+    )
+    names = [p.name.text for p in _app(tmp_path).publications]
+    assert names == ["WATCH_SUMMARY", None]

@@ -193,6 +193,39 @@ def function_name(fn_def: Any) -> str:
     return re.sub(r"\s+", "", text(decl.child_by_field_name("declarator")))
 
 
+_PARAM_DECL = "parameter_declaration"
+
+
+def _returns_its_parameter(fn_def: Any) -> bool:
+    """Whether a function of one string parameter returns that parameter (in one of its
+    ``return`` statements): ``string postVar(string varname) { ... return(varname); }``."""
+    decl = fn_def.child_by_field_name("declarator")
+    while decl is not None and decl.type != "function_declarator":
+        decl = decl.child_by_field_name("declarator")
+    params = decl.child_by_field_name("parameters") if decl is not None else None
+    named = [p for p in (params.named_children if params else []) if p.type == _PARAM_DECL]
+    if len(named) != 1 or "string" not in text(named[0].child_by_field_name("type") or named[0]):
+        return False
+    inner = named[0].child_by_field_name("declarator")
+    while inner is not None and inner.type not in ("identifier",):
+        inner = inner.child_by_field_name("declarator") or (
+            inner.named_children[-1] if inner.named_children else None
+        )
+    if inner is None:
+        return False
+    name = text(inner)
+    body = fn_def.child_by_field_name("body")
+    stack = [body] if body is not None else []
+    while stack:
+        n = stack.pop()
+        if n.type == "return_statement" and n.named_children:
+            value = strip_parens(n.named_children[0])
+            if value is not None and value.type == "identifier" and text(value) == name:
+                return True
+        stack.extend(n.named_children)
+    return False
+
+
 def short(fn_name: str) -> str:
     return fn_name.rsplit("::", 1)[-1]
 
@@ -229,6 +262,9 @@ class FolderTables:
     moos_vars: dict[str, str | None] = field(default_factory=dict)
     # the folder calls ``RegisterMOOSVariables()``: its dynamic variables are subscribed
     registers_moos_vars: bool = False
+    # functions of one parameter that return it unless configured otherwise
+    # (uProcessWatch's ``postVar(varname)``: a name, or the one the configuration maps it to)
+    passthrough: set[str] = field(default_factory=set)
     # the folder's files, for :meth:`upper_cased` (worked out on first use)
     files: list[ParsedFile] = field(default_factory=list)
     _upper: set[str] | None = None
@@ -351,6 +387,9 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
     t = FolderTables()
     for pf in files:
         t.registers_moos_vars = t.registers_moos_vars or b"RegisterMOOSVariables" in pf.data
+        for fn in pf.functions:
+            if _returns_its_parameter(fn):
+                t.passthrough.add(short(function_name(fn)))
         for name, define in pf.defines:
             m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
             if m:
@@ -660,6 +699,8 @@ class Extractor:
                 return self._resolve(fn.child_by_field_name("argument"), depth + 1)
             if text(fn) in ("string", "std::string") and len(args) == 1:
                 return self._resolve(args[0], depth + 1)
+            if fn.type == "identifier" and text(fn) in self.tables.passthrough and len(args) == 1:
+                return self._resolve(args[0], depth + 1)  # ``postVar("PROC_WATCH_SUMMARY")``
             return None, ""
         if t in ("identifier", "field_expression", "qualified_identifier"):
             key = target_name(n)
