@@ -525,7 +525,14 @@ SUBSCRIBED_AS: dict[tuple[str, str], tuple[str, ...]] = {
 }
 
 
+#: pEchoVar ``flip:N = source_variable = X`` / ``flip:N = dest_variable = Y``: a flipper
+#: reads X and posts Y (EchoVar.cpp:300-342)
+_FLIP = keyed({"source_variable": SUBSCRIBE, "dest_variable": PUBLISH})
+
+
 def _prefixed(app: str, key: str) -> tuple[Syntax, bool] | None:
+    if app == "pechovar" and key.startswith("flip"):
+        return _FLIP, False
     if app == "pmarineviewer":
         if key.startswith("button_"):
             return _BUTTON, False

@@ -11,7 +11,7 @@ variable that a logic condition waits for: behavior `condition` and
   C++), including dynamic names with a known prefix or suffix, and the
   MOOSDB, which posts its own `DB_*` variables (`DB_UPTIME`, `DB_CLIENTS`, ...);
 - a configuration value that names a published variable (uTimerScript
-  events, pMarineViewer buttons and actions, pEchoVar targets, share and
+  events, pMarineViewer buttons and actions, pEchoVar targets and flips, share and
   bridge routes, ...);
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post;
