@@ -151,14 +151,14 @@ def test_directory_discovery_takes_cpp(tmp_path):
     assert found == [os.path.join(str(tmp_path), "App.cpp")]
 
 
-def test_discovery_leaves_pantlers_copy_of_a_mission_beside_it(tmp_path):
+def test_discovery_leaves_pantlers_copies_of_missions(tmp_path):
     from moos_lint.files.discovery import discover
 
     (tmp_path / "alpha.moos").write_text("ServerPort = 9000\n")
     (tmp_path / "alpha.moos++").write_text("ServerPort = 9000\n")  # written by pAntler
-    (tmp_path / "kept.moos++").write_text("ServerPort = 9000\n")  # no source beside it
+    (tmp_path / "kept.moos++").write_text("ServerPort = 9000\n")  # its mission moved away
     found = discover([tmp_path], [], str(tmp_path)).files
-    assert [os.path.basename(f) for f in found] == ["alpha.moos", "kept.moos++"]
+    assert [os.path.basename(f) for f in found] == ["alpha.moos"]
     # named on the command line, it is linted
     named = discover([tmp_path / "alpha.moos++"], [], str(tmp_path)).files
     assert [os.path.basename(f) for f in named] == ["alpha.moos++"]

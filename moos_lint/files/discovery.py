@@ -93,7 +93,7 @@ def discover(
 ) -> Discovered:
     """Walk ``paths``; directories are searched, files given by name are always taken.
 
-    A ``mission.moos++`` beside ``mission.moos`` is pAntler's expanded copy of it, and a
+    A ``mission.moos++`` is pAntler's expanded copy of a mission it launched, and a
     ``targ_*.moos`` (``targ_*.bhv``) beside a ``meta_*.moos`` (``meta_*.bhv``) is what the
     launch script made of the template with nsplug: neither is linted a second time. With
     ``respect_gitignore``, what git ignores is not linted (see
@@ -162,8 +162,8 @@ def discover(
             for f in filenames:
                 if kind_of(f) is None:
                     continue
-                if f.endswith("++") and f[:-2] in present:
-                    continue  # pAntler's copy of the mission beside it (``clean.sh`` removes it)
+                if f.endswith("++"):
+                    continue  # pAntler's copy of a mission it launched (``clean.sh`` removes it)
                 if _generated_beside_template(f, present):
                     continue  # nsplug's output of the template beside it
                 rel = prefix + f
