@@ -244,24 +244,46 @@ def _patch_runs(stamps: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
 
 
 #: a shell command given a mission file: its program (first word) and its words
-_STARTS_MISSION = re.compile(r"^[ \t]*([^\s;&|#]+)([^\n;&|#]*\.moos\b[^\n;&|#]*)", re.M)
+_STARTS_MISSION = re.compile(r"^[ \t]*([^\s;&|#]+)([^\n;&|#]*)", re.M)
+_MISSION_ARG = re.compile(r"[\"']?([\w.${}\-/]+\.moos)\b")
 _ALIAS_ARG = re.compile(r"--alias=[\"']?([A-Za-z_][\w\-]*)")
 
 
-def script_launches(folder: str) -> frozenset[str]:
-    """The lower-case names of the processes the shell scripts of ``folder`` start with a
-    mission file (``uMAC targ_shoreside.moos``, ``"$BIN" targ.moos --alias=pTraffic``):
-    the program's own name, and the name ``--alias=`` gives it. Read as text, never run."""
-    return _started(shell_scripts(folder))
+def script_launches(folder: str, mission: str) -> frozenset[str]:
+    """The lower-case names of the processes the shell scripts of ``folder`` start with
+    the file ``mission`` (``uMAC targ_shoreside.moos`` for ``meta_shoreside.moos``,
+    ``"$BIN" targ_shoreside.moos --alias=pTraffic``): the program's own name, and the name
+    ``--alias=`` gives it. Read as text, never run."""
+    name = os.path.basename(mission)
+    return frozenset(p for p, arg in _started(shell_scripts(folder)) if _names_mission(arg, name))
+
+
+def _names_mission(arg: str, mission: str) -> bool:
+    """Whether a script's ``.moos`` argument is ``mission`` or nsplug's output of it: the
+    same name, or ``targ_X`` for the template ``meta_X`` (``targ_$VNAME.moos`` may be any)."""
+    arg = os.path.basename(arg)
+    if arg == mission:
+        return True
+    if not mission.startswith("meta_") or not arg.startswith("targ_"):
+        return False
+    literal = re.split(r"\$", arg[len("targ_") :], maxsplit=1)
+    stem = mission[len("meta_") : -len(".moos")]
+    if len(literal) == 1:
+        return literal[0] == stem + ".moos"
+    return stem.startswith(literal[0])  # ``targ_$(VNAME)``, ``targ_shore_${N}``: may be
 
 
 @functools.lru_cache(maxsize=256)
-def _started(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
-    out: set[str] = set()
+def _started(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+    out: set[tuple[str, str]] = set()
     for _path, text in scripts:
         for m in _STARTS_MISSION.finditer(text):
+            args = m.group(2)
+            found = _MISSION_ARG.search(args)
+            if found is None:
+                continue
             program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
             if re.fullmatch(r"[A-Za-z_][\w\-]*", program):
-                out.add(program.lower())
-            out.update(a.lower() for a in _ALIAS_ARG.findall(m.group(2)))
-    return frozenset(out)
+                out.add((program.lower(), found.group(1)))
+            out.update((a.lower(), found.group(1)) for a in _ALIAS_ARG.findall(args))
+    return tuple(sorted(out))

@@ -68,8 +68,9 @@ MOOS-IvP caveats, deliberately not reported:
   nspatch patch file (`*.xmoos`) beside the mission (`nspatch
   --stem=meta_shoreside.moos full-logging.xmoos` overwrites or augments the
   stem's ANTLER block), or a shell script beside it that starts the program
-  with a mission file (`uMAC targ_shoreside.moos`, `"$BIN" targ_shoreside.moos
-  --alias=pTrafficManager`). Both are read as text, never run;
+  with this mission or nsplug's output of it (`uMAC targ_shoreside.moos` for
+  `meta_shoreside.moos`, `"$BIN" targ_shoreside.moos --alias=pTrafficManager`).
+  Both are read as text, never run;
 - a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
   be any name, so it launches (or is launched by) anything it could match;
 - a block and a Run line in mutually exclusive `#ifdef` branches do not launch
@@ -154,7 +155,7 @@ def check(ctx):
             continue  # a launched script names it: the script reads it its own way
         if patched is None:
             folder = os.path.dirname(os.path.abspath(ctx.path))
-            patched = patch_launches(folder) | script_launches(folder)
+            patched = patch_launches(folder) | script_launches(folder, ctx.path)
         if block.lname in patched:
             continue  # an nspatch patch or a shell script beside the mission launches it
         why = elsewhere.get(block.lname)
