@@ -243,6 +243,7 @@ def _pokes(folder: str) -> dict[str, str]:
 def _poked(scripts: tuple[tuple[str, str], ...]) -> dict[str, str]:
     out: dict[str, str] = {}
     for script, text in scripts:
+        text = text.replace("\\\n", " ")  # a command continued over a line break
         for m in _POKE.finditer(text):
             for pair in _PAIR.finditer(m.group(1)):
                 out.setdefault(pair.group(1), os.path.basename(script))
