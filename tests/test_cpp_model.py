@@ -217,3 +217,17 @@ def test_names_through_a_function_that_returns_its_argument(tmp_path):
     )
     names = [p.name.text for p in _app(tmp_path).publications]
     assert names == ["WATCH_SUMMARY", None]
+
+
+def test_discovery_leaves_windows_module_definitions(tmp_path):
+    """``proj.def`` / ``iMatlab.def`` (a DLL's exports) share the suffix of nsplug's
+    definition files; they are not MOOS files, walked or named."""
+    from moos_lint.files.discovery import discover
+
+    (tmp_path / "iMatlab.def").write_text("LIBRARY iMatlab\nEXPORTS mexFunction\n")
+    (tmp_path / "proj.def").write_text("; comment\nVERSION 1.2\nEXPORTS\n  pj_init @1\n")
+    (tmp_path / "vehicle.def").write_text("#define VNAME alpha\n#define VPORT 9001\n")
+    found = discover([tmp_path], [], str(tmp_path)).files
+    assert [os.path.basename(f) for f in found] == ["vehicle.def"]
+    named = discover([tmp_path / "proj.def"], [], str(tmp_path)).files
+    assert named == []

@@ -116,7 +116,8 @@ def discover(
             missing.append(str(given))
             continue
         if not os.path.isdir(p):
-            files.add(p)
+            if not module_definition(p):
+                files.add(p)
             continue
         seen_dirs: set[tuple[int, int]] = set()
         frames: dict[str, Frame] = {}
@@ -166,6 +167,8 @@ def discover(
                     continue  # pAntler's copy of a mission it launched (``clean.sh`` removes it)
                 if _generated_beside_template(f, present):
                     continue  # nsplug's output of the template beside it
+                if f.lower().endswith(".def") and module_definition(os.path.join(dirpath, f)):
+                    continue  # a Windows DLL's exports (``proj.def``), not nsplug definitions
                 rel = prefix + f
                 if _excluded(rel, f, patterns):
                     continue
@@ -187,3 +190,26 @@ def _generated_beside_template(name: str, present: set[str]) -> bool:
         return False
     suffix = os.path.splitext(name)[1]
     return any(p.startswith("meta_") and p.endswith(suffix) for p in present)
+
+
+#: the statements of a Windows module-definition file (a DLL's ``.def``: ``LIBRARY iMatlab``,
+#: ``EXPORTS mexFunction``), which shares the suffix of nsplug's definition files
+_MODULE_STATEMENT = re.compile(
+    rb"^\s*(?:LIBRARY|EXPORTS|NAME|VERSION|DESCRIPTION|STACKSIZE|HEAPSIZE|SECTIONS)\b"
+)
+
+
+def module_definition(path: str) -> bool:
+    """Whether a ``.def`` file is a Windows module definition: its first line that is not
+    blank or a ``;`` comment is one of that format's statements."""
+    if not path.lower().endswith(".def"):
+        return False
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(4096)
+    except OSError:
+        return False
+    for line in head.splitlines():
+        if line.strip() and not line.lstrip().startswith(b";"):
+            return bool(_MODULE_STATEMENT.match(line))
+    return False
