@@ -491,3 +491,17 @@ def test_graph_reads_the_project_apps_as_check_does(tmp_path, monkeypatch):
     assert "M005" not in flagged
     names = {v["name"] for v in g.variables}
     assert "NAV_FILTERED" in names
+
+
+def test_flags_of_an_app_without_a_table_are_read_when_the_app_reads_the_key(tmp_path):
+    from moos_lint.frontends.nsplug import Preprocessor
+    from moos_lint.frontends.parsers.moos import parse_moos
+    from moos_lint.semantics.variables import PUBLISH, flag_variables
+
+    text = "ProcessConfig = pMine\n{\n  done_flag = MINE_DONE=true\n  color_flag = red\n"
+    text += "  other_flag = MINE_OTHER=1\n}\n"
+    (tmp_path / "m.moos").write_text(text)
+    exp = Preprocessor().expand(tmp_path / "m.moos")
+    (block,) = parse_moos(exp).blocks
+    refs = list(flag_variables(block, lambda key: key in ("done_flag", "color_flag"), "pMine"))
+    assert [(r.name, r.role, r.param) for r in refs] == [("MINE_DONE", PUBLISH, "done_flag")]

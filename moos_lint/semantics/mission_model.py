@@ -41,6 +41,7 @@ import os
 import re
 import threading
 from collections import OrderedDict
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -60,6 +61,7 @@ from moos_lint.semantics.variables import (
     bare_name,
     bhv_variables,
     block_variables,
+    flag_variables,
 )
 
 #: apps that bring variables in from other MOOS communities
@@ -441,9 +443,13 @@ class _Builder:
         if proc.block is None:
             return
         app = app_of(proc.block.name, {proc.name.lower(): proc.binary})
-        if app is None:
+        if app is not None:
+            refs: Iterable[VarRef] = block_variables(proc.block, app)
+        elif proc.app is not None:
+            refs = flag_variables(proc.block, proc.app.reads, proc.binary)
+        else:
             return
-        for ref in block_variables(proc.block, app):
+        for ref in refs:
             self.m.refs.append(ref)
             self.m.ref_process[id(ref)] = proc.name
             if ref.role == PUBLISH:

@@ -560,6 +560,19 @@ def _params_for(app: str, key: str) -> tuple[Syntax, bool] | None:
     return APP_PARAMS.get(app, {}).get(key) or _prefixed(app, key)
 
 
+def flag_variables(block: Block, reads: Callable[[str], bool], app: str) -> Iterator[VarRef]:
+    """The flags of a block of an app this module has no table for: MOOS-IvP apps post a
+    VarDataPair for each ``*_flag`` parameter they read (pObstacleMgr ``new_obs_flag =
+    OBM_NEW_GIVEN=true``, uFldCollisionDetect ``collision_flag``), as behaviors do;
+    ``reads`` says which keys the app reads (the catalogue)."""
+    for param in block.params:
+        if not is_flag_param(param.lkey) or not reads(param.lkey):
+            continue
+        text = param.line.text[param.value_start : param.value_end]
+        for (name, start), role in _ANY_FLAG((text, param.value_start)):
+            yield VarRef(name, param.line, start, role, app, param.lkey)
+
+
 def block_variables(block: Block, app: str) -> Iterator[VarRef]:
     """The variables one block of a known app names (worked out once per block and app)."""
     refs = block.memo.get(("variables", app))
@@ -572,6 +585,8 @@ def _block_variables(block: Block, app: str) -> Iterator[VarRef]:
     for param in block.params:
         key = param.lkey
         spec = _params_for(app, key)
+        if spec is None and is_flag_param(key):
+            spec = (_ANY_FLAG, False)  # MOOS-IvP apps post their ``*_flag`` VarDataPairs
         if spec is None:
             continue
         syntax, wildcard = spec

@@ -11,7 +11,9 @@ variable that a logic condition waits for: behavior `condition` and
   C++), including dynamic names with a known prefix or suffix, and the
   MOOSDB, which posts its own `DB_*` variables (`DB_UPTIME`, `DB_CLIENTS`, ...);
 - a configuration value that names a published variable (uTimerScript
-  events, pMarineViewer buttons and actions, pEchoVar targets and flips, share and
+  events, pMarineViewer buttons and actions, pEchoVar targets and flips, the
+  `*_flag` VarDataPairs of the apps that read them (pObstacleMgr
+  `new_obs_flag = OBM_NEW_GIVEN=true`), share and
   bridge routes, ...);
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post;
