@@ -196,24 +196,52 @@ def function_name(fn_def: Any) -> str:
 _PARAM_DECL = "parameter_declaration"
 
 
-def _returns_its_parameter(fn_def: Any) -> bool:
-    """Whether a function of one string parameter returns that parameter (in one of its
-    ``return`` statements): ``string postVar(string varname) { ... return(varname); }``."""
+def _parameters(fn_def: Any) -> list[tuple[str, str]]:
+    """(type, name) of each parameter of a function definition ("" for a missing name)."""
     decl = fn_def.child_by_field_name("declarator")
     while decl is not None and decl.type != "function_declarator":
         decl = decl.child_by_field_name("declarator")
     params = decl.child_by_field_name("parameters") if decl is not None else None
-    named = [p for p in (params.named_children if params else []) if p.type == _PARAM_DECL]
-    if len(named) != 1 or "string" not in text(named[0].child_by_field_name("type") or named[0]):
+    out = []
+    for p in params.named_children if params else []:
+        if p.type != _PARAM_DECL:
+            continue
+        inner = p.child_by_field_name("declarator")
+        while inner is not None and inner.type != "identifier":
+            inner = inner.child_by_field_name("declarator") or (
+                inner.named_children[-1] if inner.named_children else None
+            )
+        kind = p.child_by_field_name("type")
+        out.append((text(kind) if kind is not None else "", text(inner) if inner else ""))
+    return out
+
+
+def _notify_wrapper(pf: ParsedFile, call: Any, args: Any) -> tuple[str, tuple[int, int]] | None:
+    """(function, (name index, value index)) when ``call`` is a ``Notify(a, b)`` whose
+    name and value are two parameters of the function around it."""
+    fn_def = pf.function_of(call)
+    argv = [a for a in args.named_children if a.type != "comment"]
+    if fn_def is None or len(argv) < 2:
+        return None
+    name = short(function_name(fn_def))
+    if not name or name in PUBLISH:
+        return None
+    names = [n for _t, n in _parameters(fn_def)]
+    a, b = strip_parens(argv[0]), strip_parens(argv[1])
+    if a is None or b is None or a.type != "identifier" or b.type != "identifier":
+        return None
+    if text(a) in names and text(b) in names and text(a) != text(b):
+        return name, (names.index(text(a)), names.index(text(b)))
+    return None
+
+
+def _returns_its_parameter(fn_def: Any) -> bool:
+    """Whether a function of one string parameter returns that parameter (in one of its
+    ``return`` statements): ``string postVar(string varname) { ... return(varname); }``."""
+    params = _parameters(fn_def)
+    if len(params) != 1 or "string" not in params[0][0] or not params[0][1]:
         return False
-    inner = named[0].child_by_field_name("declarator")
-    while inner is not None and inner.type not in ("identifier",):
-        inner = inner.child_by_field_name("declarator") or (
-            inner.named_children[-1] if inner.named_children else None
-        )
-    if inner is None:
-        return False
-    name = text(inner)
+    name = params[0][1]
     body = fn_def.child_by_field_name("body")
     stack = [body] if body is not None else []
     while stack:
@@ -265,6 +293,10 @@ class FolderTables:
     # functions of one parameter that return it unless configured otherwise
     # (uProcessWatch's ``postVar(varname)``: a name, or the one the configuration maps it to)
     passthrough: set[str] = field(default_factory=set)
+    # the folder's own functions that publish their arguments: name -> (index of the name
+    # argument, index of the value argument) (``void post(string var, double v) {
+    # Notify(var, v); }``)
+    notify_wrappers: dict[str, tuple[int, int]] = field(default_factory=dict)
     # the folder's files, for :meth:`upper_cased` (worked out on first use)
     files: list[ParsedFile] = field(default_factory=list)
     _upper: set[str] | None = None
@@ -390,6 +422,11 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
         for fn in pf.functions:
             if _returns_its_parameter(fn):
                 t.passthrough.add(short(function_name(fn)))
+        for call, fn, args in pf.calls:
+            if callee(fn) in PUBLISH:
+                wrapper = _notify_wrapper(pf, call, args)
+                if wrapper is not None:
+                    t.notify_wrappers.setdefault(*wrapper)
         for name, define in pf.defines:
             m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
             if m:
@@ -861,6 +898,8 @@ class Extractor:
                 self._config_handling(fn)
         for call, fn, args in pf.calls:
             self._call(call, fn, args)
+        if self.tables.notify_wrappers:
+            self._wrapper_calls()
         for cmp, left, right in pf.cmps:
             self._comparison(cmp, left, right)
         for a in pf.asgs:
@@ -1143,6 +1182,30 @@ class Extractor:
                     if left is not None and right is not None:
                         self._key_against(left, right)
             stack.extend(n.named_children)
+
+    def _wrapper_calls(self) -> None:
+        """Calls of the folder's own functions that publish their arguments
+        (``post("NAV_YAW", yaw)`` with ``void post(string var, double v) { Notify(var, v); }``):
+        publications at the call, of its name and value."""
+        wrappers = self.tables.notify_wrappers
+        data = self.pf.data
+        if not any(name.encode() + b"(" in data for name in wrappers):
+            return
+        found = []
+        stack = [self.pf.tree.root_node]
+        while stack:
+            n = stack.pop()
+            if n.type == "call_expression":
+                fn = n.child_by_field_name("function")
+                spec = wrappers.get(callee(fn)) if fn is not None else None
+                args = n.child_by_field_name("arguments")
+                if spec is not None and args is not None and _is_moos_call(fn):
+                    argv = [a for a in args.named_children if a.type != "comment"]
+                    if len(argv) > max(spec) and not in_if0(n):
+                        found.append((n.start_byte, n, args, argv[spec[0]], argv[spec[1]], spec[1]))
+            stack.extend(n.named_children)
+        for _at, n, args, name_arg, value_arg, index in sorted(found, key=lambda f: f[0]):
+            self._publish(n, args, name_arg, value_arg, index)
 
     def _config_handling(self, fn: Any) -> None:
         """Configuration keys compared with a name held elsewhere (``param == m_x_key`` of
