@@ -566,11 +566,17 @@ def flag_variables(block: Block, reads: Callable[[str], bool], app: str) -> Iter
     OBM_NEW_GIVEN=true``, uFldCollisionDetect ``collision_flag``), as behaviors do;
     ``reads`` says which keys the app reads (the catalogue)."""
     for param in block.params:
-        if not is_flag_param(param.lkey) or not reads(param.lkey):
+        if not _app_flag(param.lkey) or not reads(param.lkey):
             continue
         text = param.line.text[param.value_start : param.value_end]
         for (name, start), role in _ANY_FLAG((text, param.value_start)):
             yield VarRef(name, param.line, start, role, app, param.lkey)
+
+
+def _app_flag(lkey: str) -> bool:
+    """An app's flag parameter (``mailflag``, ``new_obs_flag``), not a bare ``flag``:
+    uFldFlagManager's ``flag = x=-58, y=-71, label=red`` places a game flag."""
+    return lkey != "flag" and is_flag_param(lkey)
 
 
 def block_variables(block: Block, app: str) -> Iterator[VarRef]:
@@ -585,7 +591,7 @@ def _block_variables(block: Block, app: str) -> Iterator[VarRef]:
     for param in block.params:
         key = param.lkey
         spec = _params_for(app, key)
-        if spec is None and is_flag_param(key):
+        if spec is None and _app_flag(key):
             spec = (_ANY_FLAG, False)  # MOOS-IvP apps post their ``*_flag`` VarDataPairs
         if spec is None:
             continue
