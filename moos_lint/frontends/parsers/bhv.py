@@ -262,12 +262,18 @@ def _bhv_param(line: Line, text: str, offset: int) -> BhvParam | None:
 
 
 def split_commas(text: str) -> list[tuple[str, int]]:
-    """Split on commas outside double quotes; returns (piece, offset)."""
-    out, start, quoted = [], 0, False
+    """Split on commas outside double quotes and braces, as MOOS-IvP's ``parseStringQ``
+    (lib_mbutil/MBUtils.cpp) does: ``RESCUE_REGION = pts={-262,-182:-82,-537}`` is one
+    pair; returns (piece, offset)."""
+    out, start, quoted, braces = [], 0, False, 0
     for i, ch in enumerate(text):
         if ch == '"':
             quoted = not quoted
-        elif ch == "," and not quoted:
+        elif ch == "{":  # (counted inside quotes too, as parseStringQ does)
+            braces += 1
+        elif ch == "}":
+            braces = max(0, braces - 1)
+        elif ch == "," and not quoted and not braces:
             out.append((text[start:i], start))
             start = i + 1
     out.append((text[start:], start))
