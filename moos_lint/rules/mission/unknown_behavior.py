@@ -1,8 +1,8 @@
 """A `Behavior = BHV_X` whose kind the helm does not know (`BHV_Waypiont`).
 
 ## What it does
-Reports a misspelt behavior kind: one close to a known kind (it is suggested)
-but neither a stock MOOS-IvP behavior (the
+Reports a misspelt behavior kind: one a typo or two away from a known kind,
+and neither a stock MOOS-IvP behavior (the
 catalogue lists every `BHV_*` class of moos-ivp: `BHV_Waypoint`,
 `BHV_Loiter`, `BHV_AvdColregsV22`, ...), nor a behavior described in a
 catalogue file (`catalogues = [...]`), nor a class of the linted project (a
@@ -10,15 +10,16 @@ C++ file named after the kind, `BHV_Pulse.cpp`, anywhere under the project:
 the folder of the configuration file, else the version-control root above
 the behavior file, else the behavior file's folder; MOOS-IvP behaviors are
 named after their file). The kind is compared
-without regard to case. The known kinds close to it (the project's own first,
-with the stock and catalogue ones) are suggested, the ones a typo or two away
-if any; a single one that near is offered as a fix (`BHV_SimpleWaypoint` is
-not a misspelt `BHV_Waypoint`: it is suggested, never respelt).
+without regard to case. It reports a kind a typo or two away from a known one
+(the project's own, the stock and the catalogue ones; a missing `BHV_` counts
+as one typo), suggests those, and offers the single one as a fix.
 
-A kind that no known kind is close to (`BHV_Scout`, `BHV_Cover`) is most often
-a behavior of another tree (a course's, a team's), which the helm loads through
-`IVP_BEHAVIOR_DIRS` or `ivp_behavior_dir` from outside the project: it is
-reported only with the `all-kinds` option.
+A kind that no known kind is a typo or two away from (`BHV_Scout`,
+`BHV_Cover`, and `BHV_SailWaypoint` or `BHV_SimpleWaypoint`, named like
+`BHV_Waypoint` but other behaviors) is most often a behavior of another tree (a
+course's, a team's), which the helm loads through `IVP_BEHAVIOR_DIRS` or
+`ivp_behavior_dir` from outside the project: it is reported only with the
+`all-kinds` option, with the known kinds whose names are like it.
 
 ## Why is this bad?
 The helm cannot build the behavior: it reports "failed to load dynamic
@@ -40,8 +41,9 @@ repository, describe it in a catalogue file (`[behaviors.BHV_Mine]`).
 
 ## Options
 - `all-kinds` (boolean, default false): also report a kind that no known kind
-  is close to (`BHV_Teleport`), for a project that holds every behavior its
-  missions load, or whose other trees are described in catalogue files.
+  is a typo or two away from (`BHV_Teleport`, `BHV_SimpleWaypoint`), for a
+  project that holds every behavior its missions load, or whose other trees
+  are described in catalogue files.
 
 MOOS-IvP caveats, deliberately not reported:
 - a kind holding an nsplug macro;
@@ -101,22 +103,34 @@ def check(ctx):
         # those is close; of the close ones, those a typo or two away if any
         own = {b.name.lower(): b.name for b in cat.behaviors.values()} | repo_behaviors(ctx)
         close = _close(kind, own) or _close(kind, cat.outside_behaviors)
-        close = [c for c in close if _typos(kind, c) <= MAX_TYPOS] or close
-        if not close and not ctx.options.get("all-kinds"):
-            continue  # a behavior of another tree, most often
+        near = [c for c in close if _typos_away(kind, c) <= MAX_TYPOS]
+        if not near and not ctx.options.get("all-kinds"):
+            # a behavior of another tree, most often, even when its name is like a known
+            # one's (BHV_SailWaypoint, BHV_SimpleWaypoint: not misspelt BHV_Waypoints)
+            continue
+        close = near or close
         msg = f"`{kind}`: no such helm behavior (not a stock behavior, not in a catalogue file, "
         msg += f"no C++ file, class or library of that name under {_shown(_root(ctx))})"
         fix = None
         if close:
             msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
-        if len(close) == 1 and _typos(kind, close[0]) <= MAX_TYPOS:
-            fix = Fix(f"respell as `{close[0]}`", (Edit(bhv.kind_span, close[0]),))
+        if len(near) == 1:
+            fix = Fix(f"respell as `{near[0]}`", (Edit(bhv.kind_span, near[0]),))
         yield ctx.report(bhv.kind_span, msg, line=bhv.header, fix=fix)
 
 
 def _close(kind: str, names: dict[str, str]) -> list[str]:
     """The names (lower case -> as written) close to ``kind``, closest first."""
     return [names[c] for c in difflib.get_close_matches(kind.lower(), names, n=3, cutoff=0.75)]
+
+
+def _typos_away(kind: str, name: str) -> int:
+    """How many typos make ``kind`` into ``name``; a missing ``BHV_`` is one
+    (``Behavior = Waypoint``)."""
+    found = _typos(kind, name)
+    if not kind.lower().startswith("bhv_"):
+        found = min(found, 1 + _typos("BHV_" + kind, name))
+    return found
 
 
 def _typos(a: str, b: str) -> int:
