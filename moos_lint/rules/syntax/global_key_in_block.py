@@ -24,6 +24,9 @@ ProcessConfig = uSimMarineV22
 Set these keys once, outside every block. To give one app a different time
 warp use its `moos_time_warp` parameter.
 
+A fragment that a mission of the run includes is judged there, where the lines
+before it are known (its own file alone would say its line comes first).
+
 ## Options
 None.
 """
@@ -37,6 +40,8 @@ from moos_lint.rules.kit.declare import Scope, rule
 
 @rule(code="R009", name="global-key-in-block", severity=Severity.ERROR, scope=Scope.FILE)
 def check(ctx):
+    if ctx.unit.path in ctx.run.included_elsewhere and not ctx.moos.is_mission:
+        return  # a fragment: judged in the missions that include it, after their lines
     order = {id(line): i for i, line in enumerate(ctx.moos.lines)}
     first: dict[str, tuple[int, Param]] = {}  # key -> the first line MOOS finds it on
     lines: dict[str, int] = {}  # key -> how many lines set it
