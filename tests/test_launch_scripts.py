@@ -2,7 +2,16 @@
 
 from __future__ import annotations
 
-from moos_lint.files.launch import made_by_scripts, script_names, scripts_beside
+import subprocess
+import sys
+
+from moos_lint.files.launch import (
+    made_by_scripts,
+    patch_launches,
+    script_launches,
+    script_names,
+    scripts_beside,
+)
 
 
 def test_files_a_launch_writes_or_cleans_away(tmp_path):
@@ -32,3 +41,34 @@ def test_a_launched_script_and_the_scripts_beside_a_mission(tmp_path):
     assert "isonarv2" in (script_names(str(mission), "./iSonar.py") or ())
     assert script_names(str(mission), "pHelmIvP") is None  # a compiled program
     assert script_names(str(mission), "./missing.py") is None
+
+
+def test_programs_a_script_or_a_patch_starts_with_the_mission(tmp_path):
+    (tmp_path / "meta_shoreside.moos").write_text("ServerPort = 9000\n")
+    (tmp_path / "launch.sh").write_text(
+        "pAntler targ_shoreside.moos >& /dev/null &\n"
+        '"$TRAFFIC_BIN" targ_shoreside.moos --alias=pTrafficManager &\n'
+        "uCommand targ_commander_${VTEAM}.moos\n"
+        "uMAC targ_$VNAME.moos\n"
+    )
+    (tmp_path / "logging.xmoos").write_text(
+        "ProcessConfig = ANTLER\n{\n  Run = pLogger @ NewConsole = false\n"
+        "  Run = ../bin/uTimerScript @ NewConsole = false ~ uTimerScript_PING\n}\n"
+    )
+    mission = str(tmp_path / "meta_shoreside.moos")
+    assert script_launches(str(tmp_path), mission) == {"pantler", "ptrafficmanager", "umac"}
+    assert patch_launches(str(tmp_path)) == {"plogger", "utimerscript", "utimerscript_ping"}
+
+
+def test_a_script_line_of_any_length_is_read_in_one_pass(tmp_path):
+    """A self-extracting script holds one line of a payload: it is read in linear time
+    (in a child process with a deadline, so that a regression fails, not hangs)."""
+    (tmp_path / "install.sh").write_text("payload " + "A" * 300_000 + "\n")
+    script = (
+        "import sys\nfrom moos_lint.files.launch import script_launches\n"
+        "print(sorted(script_launches(sys.argv[1], sys.argv[1] + '/m.moos')))"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script, str(tmp_path)], capture_output=True, text=True, timeout=60
+    )
+    assert done.returncode == 0 and done.stdout.strip() == "[]"

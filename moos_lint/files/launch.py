@@ -245,7 +245,8 @@ def _patch_runs(stamps: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
 
 #: a shell command given a mission file: its program (first word) and its words
 _STARTS_MISSION = re.compile(r"^[ \t]*([^\s;&|#]+)([^\n;&|#]*)", re.M)
-_MISSION_ARG = re.compile(r"[\"']?([\w.${}\-/]+\.moos)\b")
+_MOOS_SUFFIX = re.compile(r"\.moos\b")
+_ARG_CHARS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.${}-/")
 _ALIAS_ARG = re.compile(r"--alias=[\"']?([A-Za-z_][\w\-]*)")
 
 
@@ -279,11 +280,23 @@ def _started(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...
     for _path, text in scripts:
         for m in _STARTS_MISSION.finditer(text):
             args = m.group(2)
-            found = _MISSION_ARG.search(args)
-            if found is None:
+            mission = _mission_arg(args)
+            if mission is None:
                 continue
             program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
             if re.fullmatch(r"[A-Za-z_][\w\-]*", program):
-                out.add((program.lower(), found.group(1)))
-            out.update((a.lower(), found.group(1)) for a in _ALIAS_ARG.findall(args))
+                out.add((program.lower(), mission))
+            out.update((a.lower(), mission) for a in _ALIAS_ARG.findall(args))
     return tuple(sorted(out))
+
+
+def _mission_arg(args: str) -> str | None:
+    """The first ``*.moos`` word of a command's arguments (``targ_$VNAME.moos``), found
+    from its suffix back, in one pass (a script may hold a line of any length)."""
+    found = _MOOS_SUFFIX.search(args)
+    if found is None:
+        return None
+    start = found.start()
+    while start > 0 and args[start - 1] in _ARG_CHARS:
+        start -= 1
+    return args[start : found.end()] if start < found.start() else None

@@ -192,8 +192,8 @@ def _viewer_posts(key: str, text: str, base: int, line: Line) -> Iterator[AngleV
             yield found
 
 
-#: a line comment that gives the value's unit as degrees (``// Angles in degrees``, ``(deg)``)
-_DEGREES_NOTE = re.compile(r"//.*(?:\bdeg(?:rees?|s)?\b|°)", re.IGNORECASE)
+#: a line comment's word that gives the value's unit as degrees (``// Angles in degrees``)
+_DEGREES_NOTE = re.compile(r"\bdeg(?:rees?|s)?\b|°", re.IGNORECASE)
 
 
 def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[AngleValue]:
@@ -202,7 +202,8 @@ def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[Angle
     if found is not None:
         # an app's own key whose line says it is in degrees (a library's mounting pose,
         # `pose_yaw = -90 // degrees`): the app reads it in the unit it documents
-        if not _DEGREES_NOTE.search(line.text):
+        comment = line.text.find("//")
+        if comment < 0 or not _DEGREES_NOTE.search(line.text, comment):
             yield found
         return
     if lkey == "event":
