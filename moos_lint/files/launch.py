@@ -158,8 +158,14 @@ def shell_scripts(folder: str) -> tuple[tuple[str, str], ...]:
     """``(path, text)`` of each shell script (``*.sh``) of ``folder``, by name: read as
     text, never run, and kept while every script keeps its (mtime, size) (the language
     server asks again at each edit of a mission of the folder)."""
+    return _texts(folder, ".sh")
+
+
+def _texts(folder: str, suffix: str) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each file of ``folder`` whose name ends in ``suffix``, by name,
+    kept while every one keeps its (mtime, size)."""
     try:
-        names = sorted(n for n in os.listdir(folder) if n.endswith(".sh"))
+        names = sorted(n for n in os.listdir(folder) if n.endswith(suffix))
     except OSError:
         return ()
     stamps = []
@@ -217,25 +223,13 @@ def patch_launches(folder: str) -> frozenset[str]:
     of ``folder`` launch, aliases included: ``nspatch --stem=meta_shoreside.moos
     full-logging.xmoos`` overwrites or augments the stem's blocks, its ANTLER block too
     (moos-ivp ``app_nspatch``). Read as text, never run."""
-    try:
-        names = sorted(n for n in os.listdir(folder) if n.endswith(".xmoos"))
-    except OSError:
-        return frozenset()
-    stamps = []
-    for n in names:
-        path = os.path.join(folder, n)
-        try:
-            st = os.stat(path)
-        except OSError:
-            continue
-        stamps.append((path, st.st_mtime_ns, st.st_size))
-    return _patch_runs(tuple(stamps))
+    return _patch_runs(_texts(folder, ".xmoos"))
 
 
 @functools.lru_cache(maxsize=256)
-def _patch_runs(stamps: tuple[tuple[str, int, int], ...]) -> frozenset[str]:
+def _patch_runs(patches: tuple[tuple[str, str], ...]) -> frozenset[str]:
     out: set[str] = set()
-    for text in (t for _p, t in _read_scripts(stamps)):
+    for _path, text in patches:
         for m in _PATCH_RUN.finditer(text):
             out.add(m.group(1).rsplit("/", 1)[-1].lower())
             if m.group(2):

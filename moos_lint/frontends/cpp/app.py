@@ -11,6 +11,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Span
 from moos_lint.files.source import SourceFile, decode, read_bytes
+from moos_lint.files.suffixes import CPP_SUFFIXES
 from moos_lint.frontends.cpp.cmake import executable_name, executables_in
 from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile, IOUse
 from moos_lint.frontends.cpp.prefilter import mentions_moos
@@ -199,9 +200,6 @@ def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
     return tree
 
 
-_STEM_EXTS = (".cpp", ".cc", ".cxx", ".h", ".hpp", ".hh")
-
-
 def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
     """One :class:`AppModel` per folder of relevant C++ files, linked."""
     by_folder: dict[str, dict[str, SourceFile]] = {}
@@ -275,5 +273,5 @@ def _class_files(app: AppModel) -> frozenset[str]:
     for f in app.files:
         if any(c is app.app_class for c in f.classes):
             stem = os.path.splitext(os.path.basename(f.path))[0]
-            return frozenset({os.path.basename(f.path)} | {stem + ext for ext in _STEM_EXTS})
+            return frozenset({os.path.basename(f.path)} | {stem + ext for ext in CPP_SUFFIXES})
     return frozenset()

@@ -13,7 +13,6 @@ import re
 from moos_lint.files.source import SourceFile, read_source
 
 _ADD_EXEC = re.compile(r"\badd_executable\s*\(\s*([^\s()]+)([^)]*)\)", re.I)
-_SET = re.compile(r"\bset\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s+\"?([^\s()\"]+)\"?", re.I)
 _SET_LIST = re.compile(r"\bset\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s+([^)]*)\)", re.I)
 _VAR = re.compile(r"\$\{(\w+)\}")
 _COMMENT = re.compile(r"#[^\n]*")
@@ -30,8 +29,8 @@ def _executables(text: str) -> list[tuple[str, str, int]]:
     ``${VAR}`` in the source list is replaced by the values of ``set(VAR a b c)``.
     """
     text = _COMMENT.sub("", text)
-    sets = {m.group(1): m.group(2) for m in _SET.finditer(text)}
     lists = {m.group(1): m.group(2) for m in _SET_LIST.finditer(text)}
+    sets = {k: v.split()[0].strip('"') for k, v in lists.items() if v.split()}  # first value
     out = []
     for m in _ADD_EXEC.finditer(text):
         name, srcs = m.group(1), m.group(2)

@@ -1132,7 +1132,7 @@ class Extractor:
         low = fname.lower()
         if fname == "OnNewMail" or re.search(r"mail", low):
             self.out.mail_keys.append(MailKey(lit, span, prefix, suffix))
-        elif fname == "OnStartUp" or re.search(r"config|startup|param", low):
+        elif fname == "OnStartUp" or _CONFIG_FN.search(fname):
             if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
                 self.out.config_params.append(ConfigParam(lit.lower(), span))
         elif re.search(r"\bkey\b|GetKey|GetName", subject_text):

@@ -47,6 +47,7 @@ import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.mbutil import is_number
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.variables import PUBLISH
 
@@ -125,7 +126,7 @@ def _compared(ref) -> tuple[str, str, int] | None:
     word, start = m.group(2), m.start(2)
     if word.startswith('"'):
         word, start = word[1:-1], start + 1
-    if not word or "$" in word or _is_number(word):
+    if not word or "$" in word or is_number(word):  # lib_logic's test (ParseNode.cpp)
         return None
     return m.group(1), word, start
 
@@ -163,11 +164,3 @@ def _clean(value: str) -> str | None:
     if len(value) >= 2 and value[0] == value[-1] == '"':
         value = value[1:-1]
     return None if not value or "$" in value else value
-
-
-def _is_number(word: str) -> bool:
-    try:
-        float(word)
-    except ValueError:
-        return False
-    return True
