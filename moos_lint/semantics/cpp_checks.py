@@ -244,6 +244,101 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
         yield (val.span, f"{_shown(p)} is published in {unit}{why}: {rule}")  # type: ignore[union-attr]
 
 
+#: the words of a variable's name that say what it holds, for geodesy_argument_order
+_AXIS_WORDS = {
+    "lat": "lat",
+    "latitude": "lat",
+    "lon": "lon",
+    "long": "lon",
+    "lng": "lon",
+    "longitude": "lon",
+    "x": "east",
+    "e": "east",
+    "east": "east",
+    "easting": "east",
+    "eastings": "east",
+    "y": "north",
+    "n": "north",
+    "north": "north",
+    "northing": "north",
+    "northings": "north",
+}
+#: a coordinate glued to a short word: ``lx``, ``dfy``, ``xpos``, ``ypos``
+_GLUED_AXIS = re.compile(
+    r"^(?:l|d|df|dbl|p|pos|cur|nav|loc|local|utm|grid|new|tmp)?([xy])"
+    r"(?:pos|loc|local|utm|grid|coord)?$"
+)
+_NAME_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+")
+
+
+def axis_of(expression: str) -> str | None:
+    """What a variable named like ``expression``'s last name holds: ``lat``, ``lon``,
+    ``north`` or ``east``; None when its name does not say, or says two things
+    (``latlon_vec``, ``n_x``)."""
+    names = re.findall(r"[A-Za-z_]\w*", re.sub(r"\[[^\]]*\]|\([^()]*\)", "", expression))
+    if not names:
+        return None
+    said = set()
+    for word in _NAME_WORDS.findall(names[-1]):
+        word = word.lower()
+        glued = _GLUED_AXIS.match(word)
+        axis = _AXIS_WORDS.get(glued.group(1) if glued else word)
+        if axis:
+            said.add(axis)
+    return said.pop() if len(said) == 1 else None
+
+
+def geodesy_argument_order(app: AppModel) -> Iterator[Finding]:
+    """Arguments of CMOOSGeodesy's conversions whose names say the opposite of the
+    parameter they are given to: one finding per pair (latitude and longitude, north and
+    east)."""
+    from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
+
+    words = {"lat": "latitude", "lon": "longitude", "north": "north", "east": "east"}
+    for call in app.geodesy_calls:
+        if call.own_signature is not None:
+            continue  # the repository's own function of that name: its order is its own
+        roles = GEODESY_ARGUMENTS[call.function]
+        said = [axis_of(text) for text, _ in call.arguments]
+        signature = f"`{call.function}({', '.join(words[r] for r in roles)})`"
+        for pair in (("lat", "lon"), ("north", "east")):
+            i, j = sorted(roles.index(r) for r in pair)
+            if said[i] == said[j]:
+                continue  # named alike, or neither named: not a swap we can read
+            wrong = [k for k in (i, j) if said[k] == roles[i + j - k]]
+            if len(wrong) == 2:
+                a, b = call.arguments[i][1], call.arguments[j][1]
+                yield (
+                    Span(a.path, a.line, a.col, b.end_line, b.end_col),
+                    f"`{_flat(call.arguments[i][0])}` and `{_flat(call.arguments[j][0])}` are "
+                    f"swapped: {signature} takes the {words[roles[i]]} before the "
+                    f"{words[roles[j]]}",
+                )
+            elif wrong:
+                k = wrong[0]
+                text, span = call.arguments[k]
+                meant = roles[i + j - k]  # what its name says, the other argument's role
+                yield (
+                    span,
+                    f"`{_flat(text)}` is given as the {words[roles[k]]} of {signature}, but "
+                    f"its name says {words[meant]}, which goes in argument {i + j - k + 1}",
+                )
+
+
+def differs_from_geodesy(function: str, parameters: list[str]) -> bool:
+    """Whether parameters named so say another order than CMOOSGeodesy's ``function``."""
+    from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
+
+    roles = GEODESY_ARGUMENTS[function]
+    return len(parameters) != len(roles) or any(
+        axis_of(p) not in (None, r) for p, r in zip(parameters, roles, strict=True)
+    )
+
+
+def _flat(text: str) -> str:
+    return " ".join(text.split())
+
+
 def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
     """Each name once per app, at its first place (published before subscribed to), with
     the number of other places that use it."""

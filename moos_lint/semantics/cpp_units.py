@@ -49,6 +49,7 @@ def build_cpp_units(
         from moos_lint.frontends.cpp.values import link_values
 
         link_values(list(apps.values()), paths, compiled)
+        _own_geodesy(list(apps.values()), paths)
     units = []
     folders: dict[str, list[str]] = {}
     for p in paths:
@@ -62,3 +63,28 @@ def build_cpp_units(
                 app.files.append(helper)
         units.append(Unit(path=first, kind=Kind.CPP, expansion=Expansion(path=first), cpp=app))
     return units
+
+
+def _own_geodesy(apps: list[AppModel], paths: list[str]) -> None:
+    """Mark the calls of a CMOOSGeodesy conversion whose name the repository declares
+    itself with other parameters (its own order). The repository is searched only for
+    calls that would be reported."""
+    from moos_lint.files.source import read_bytes
+    from moos_lint.frontends.cpp.declarations import parameter_names
+    from moos_lint.semantics.cpp_checks import differs_from_geodesy, geodesy_argument_order
+
+    suspects = [
+        g for a in apps for g in a.geodesy_calls if any(geodesy_argument_order(_only(a, g)))
+    ]
+    if not suspects:
+        return
+    declared = parameter_names({g.function for g in suspects}, paths, read_bytes)
+    for g in suspects:
+        own = [p for p in declared.get(g.function, []) if differs_from_geodesy(g.function, p)]
+        if own:
+            g.own_signature = tuple(own[0])
+
+
+def _only(app: AppModel, call) -> AppModel:
+    """An app model holding one geodesy call, to ask whether it would be reported."""
+    return AppModel(folder=app.folder, files=[CppFile(path=call.span.path, geodesy_calls=[call])])

@@ -14,11 +14,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from moos_lint.files.diagnostics import Span
+from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
 from moos_lint.frontends.cpp.model import (
     Assignment,
     ConfigParam,
     CppClass,
     CppFile,
+    GeodesyCall,
     IOUse,
     MailKey,
     Name,
@@ -87,6 +89,7 @@ CALLED = (
     | FROM_DEGREES
     | VARIABLE_SET
     | {ADD_MOOS_VAR, SET_MOOS_VAR}
+    | set(GEODESY_ARGUMENTS)
 )
 WRAP_PI = {
     "MOOS_ANGLE_WRAP",
@@ -1057,6 +1060,11 @@ class Extractor:
                 if lit is not None:
                     out.config_params.append(ConfigParam(lit.lower(), spans.of(a)))
                     break
+        elif name in GEODESY_ARGUMENTS and not in_if0(call):
+            given = [a for a in argv if a.type != "comment"]
+            if len(given) == 4:
+                arguments = [(text(a), spans.of(a)) for a in given]
+                out.geodesy_calls.append(GeodesyCall(name, arguments, spans.of(call)))
         elif name in BAUD_CALLS:
             out.io.append(IOUse("serial", name, spans.of(call)))
         elif (name in SOCKET_CALLS and fn.type == "identifier") or name in VEHICLE_LINK_CALLS:

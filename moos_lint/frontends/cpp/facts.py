@@ -93,6 +93,22 @@ LIBRARY_ANGLES: dict[str, tuple[str, str, tuple[float, float], str]] = {
     ),
 }
 
+#: CMOOSGeodesy's conversions between latitude/longitude and the local grid: name -> what
+#: each argument is, in order. The two directions do not mirror each other: from lat/long
+#: the north output comes first, into lat/long the east input does. Evidence: core MOOS's
+#: MOOSGeodesy.h (libMOOSGeodesy, as MOOS-IvP ships it in MOOS_Jul2724):
+#: ``LatLong2LocalUTM(double lat, double lon, double &MetersNorth, double &MetersEast)``,
+#: ``LatLong2LocalGrid`` with the same parameters, ``LocalGrid2LatLong(double dfEast,
+#: double dfNorth, double &dfLat, double &dfLon)`` and ``UTM2LatLong(double dfX, double dfY,
+#: double &dfLat, double &dfLong)``, whose x is east (MOOSGeodesyProj.cpp:
+#: ``double x = dfX + GetOriginEasting()``).
+GEODESY_ARGUMENTS: dict[str, tuple[str, str, str, str]] = {
+    "LatLong2LocalUTM": ("lat", "lon", "north", "east"),
+    "LatLong2LocalGrid": ("lat", "lon", "north", "east"),
+    "LocalGrid2LatLong": ("east", "north", "lat", "lon"),
+    "UTM2LatLong": ("east", "north", "lat", "lon"),
+}
+
 #: Calls that turn text into a number.
 TEXT_TO_NUMBER = {"atof", "stod", "strtod", "stof", "strtof", "stold", "strtold"}
 

@@ -128,6 +128,19 @@ class IOUse:
 
 
 @dataclass(slots=True)
+class GeodesyCall:
+    """A call of one of CMOOSGeodesy's conversions (``facts.GEODESY_ARGUMENTS``), with its
+    arguments as written."""
+
+    function: str
+    arguments: list[tuple[str, Span]]
+    span: Span
+    #: the parameter names of a function of the same name that the repository declares
+    #: itself, when they differ from CMOOSGeodesy's (its own order, which the call follows)
+    own_signature: tuple[str, ...] | None = None
+
+
+@dataclass(slots=True)
 class CppClass:
     name: str
     bases: list[str]
@@ -149,6 +162,7 @@ class CppFile:
     #: MOOS variables this file converts from degrees on arrival: (name, span, helper)
     consumed_degrees: list[tuple[str, Span, str]] = field(default_factory=list)
     run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
+    geodesy_calls: list[GeodesyCall] = field(default_factory=list)
     has_main: bool = False
     has_on_new_mail: bool = False
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)
@@ -194,6 +208,10 @@ class AppModel:
     @property
     def ned_writes(self) -> list[Assignment]:
         return [a for f in self.files for a in f.ned_writes]
+
+    @property
+    def geodesy_calls(self) -> list[GeodesyCall]:
+        return [g for f in self.files for g in f.geodesy_calls]
 
     @property
     def mail_keys(self) -> list[MailKey]:
