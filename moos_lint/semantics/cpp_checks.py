@@ -14,6 +14,7 @@ from typing import Any
 from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp.model import AppModel, Publication
+from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 Finding = tuple[Span, str]
@@ -146,6 +147,20 @@ def heading_in_radians(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def angle_from_east(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, lambda n: angles.is_heading_var(n) or angles.is_yaw_var(n)):
+        if v is None or v.sense != "math":
+            continue
+        if angles.is_heading_var(p.name.last):
+            rule = "a heading is clockwise from north: atan2(Δx, Δy), or 90° − the math angle"
+        else:
+            rule = "MOOS yaw is zero at north (yaw = −heading·π/180): the math angle − π/2"
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is an angle from east, counter-clockwise{_because(v)}: {rule}",
+        )
+
+
 def depth_z_sign(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, lambda n: angles.is_z_var(n) or angles.is_depth_var(n)):
         if v is None or v.sign is None:
@@ -242,50 +257,6 @@ def angle_in_degrees(app: AppModel) -> Iterator[Finding]:
             else "angles other than heading are radians"
         )
         yield (val.span, f"{_shown(p)} is published in {unit}{why}: {rule}")  # type: ignore[union-attr]
-
-
-#: the words of a variable's name that say what it holds, for geodesy_argument_order
-_AXIS_WORDS = {
-    "lat": "lat",
-    "latitude": "lat",
-    "lon": "lon",
-    "long": "lon",
-    "lng": "lon",
-    "longitude": "lon",
-    "x": "east",
-    "e": "east",
-    "east": "east",
-    "easting": "east",
-    "eastings": "east",
-    "y": "north",
-    "n": "north",
-    "north": "north",
-    "northing": "north",
-    "northings": "north",
-}
-#: a coordinate glued to a short word: ``lx``, ``dfy``, ``xpos``, ``ypos``
-_GLUED_AXIS = re.compile(
-    r"^(?:l|d|df|dbl|p|pos|cur|nav|loc|local|utm|grid|new|tmp)?([xy])"
-    r"(?:pos|loc|local|utm|grid|coord)?$"
-)
-_NAME_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+")
-
-
-def axis_of(expression: str) -> str | None:
-    """What a variable named like ``expression``'s last name holds: ``lat``, ``lon``,
-    ``north`` or ``east``; None when its name does not say, or says two things
-    (``latlon_vec``, ``n_x``)."""
-    names = re.findall(r"[A-Za-z_]\w*", re.sub(r"\[[^\]]*\]|\([^()]*\)", "", expression))
-    if not names:
-        return None
-    said = set()
-    for word in _NAME_WORDS.findall(names[-1]):
-        word = word.lower()
-        glued = _GLUED_AXIS.match(word)
-        axis = _AXIS_WORDS.get(glued.group(1) if glued else word)
-        if axis:
-            said.add(axis)
-    return said.pop() if len(said) == 1 else None
 
 
 def geodesy_argument_order(app: AppModel) -> Iterator[Finding]:

@@ -127,3 +127,107 @@ def key_literal(cond: Any) -> str | None:
 def _literal(s: Any) -> str | None:
     parts = [node_text(c) for c in s.named_children if c.type == "string_content"]
     return "".join(parts) if parts else None
+
+
+#: the words of a variable's name that say which coordinate of the local grid, or of
+#: latitude/longitude, it holds
+_AXIS_WORDS = {
+    "lat": "lat",
+    "latitude": "lat",
+    "lon": "lon",
+    "long": "lon",
+    "lng": "lon",
+    "longitude": "lon",
+    "x": "east",
+    "e": "east",
+    "east": "east",
+    "easting": "east",
+    "eastings": "east",
+    "y": "north",
+    "n": "north",
+    "north": "north",
+    "northing": "north",
+    "northings": "north",
+}
+#: a coordinate glued to a short word: ``lx``, ``dfy``, ``xpos``, ``ypos``
+_GLUED_AXIS = re.compile(
+    r"^(?:l|d|df|dbl|p|pos|cur|nav|loc|local|utm|grid|new|tmp)?([xy])"
+    r"(?:pos|loc|local|utm|grid|coord)?$"
+)
+_NAME_WORDS = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])|\d+")
+
+
+def axis_of(expression: str) -> str | None:
+    """What a variable named like ``expression``'s last name holds: ``lat``, ``lon``,
+    ``north`` or ``east``; None when its name does not say, or says two things
+    (``latlon_vec``, ``n_x``)."""
+    names = re.findall(r"[A-Za-z_]\w*", re.sub(r"\[[^\]]*\]|\([^()]*\)", "", expression))
+    if not names:
+        return None
+    said = set()
+    for word in _NAME_WORDS.findall(names[-1]):
+        word = word.lower()
+        glued = _GLUED_AXIS.match(word)
+        axis = _AXIS_WORDS.get(glued.group(1) if glued else word)
+        if axis:
+            said.add(axis)
+    return said.pop() if len(said) == 1 else None
+
+
+#: words that make a coordinate a displacement between two points: ``dx``, ``delta_y``,
+#: ``dist_x``, ``dis_y``
+_DELTA_WORDS = {"d", "delta", "diff", "dist", "dis", "distance", "offset", "rel", "relative"}
+
+
+def displacement_axis(expression: str) -> str | None:
+    """The local-grid axis (``east`` or ``north``) of a displacement written as a
+    difference of two coordinates named alike (``m_nav_y - m_start_y``) or as a name that
+    says so (``dx``, ``delta_y``); None for anything else (a magnetometer's ``mag_y``, a
+    body-frame ``x``, whose frame a name does not tell)."""
+    expr = expression.strip()
+    while expr.startswith("(") and expr.endswith(")") and _balanced(expr[1:-1]):
+        expr = expr[1:-1].strip()
+    parts = _top_level_minus(expr)
+    if len(parts) == 2:
+        axes = {axis_of(p) for p in parts}
+        axis = axes.pop() if len(axes) == 1 else None
+        return axis if axis in ("east", "north") else None
+    if not re.fullmatch(r"[A-Za-z_][\w.>-]*", expr):
+        return None
+    name = re.findall(r"[A-Za-z_]\w*", expr)[-1]
+    said = [w.lower() for w in _NAME_WORDS.findall(name)]
+    glued = [_GLUED_AXIS.match(w) for w in said]
+    delta = any(w in _DELTA_WORDS for w in said) or any(
+        g is not None and g.group(0).startswith("d") and len(g.group(0)) == 2 for g in glued
+    )
+    axis = axis_of(expr)
+    return axis if delta and axis in ("east", "north") else None
+
+
+def _balanced(text: str) -> bool:
+    depth = 0
+    for ch in text:
+        depth += (ch == "(") - (ch == ")")
+        if depth < 0:
+            return False
+    return depth == 0
+
+
+def _top_level_minus(expr: str) -> list[str]:
+    """``a - b`` split at its one top-level binary minus (else the whole)."""
+    depth, cuts = 0, []
+    for i, ch in enumerate(expr):
+        depth += (ch in "([") - (ch in ")]")
+        if (
+            ch == "-"
+            and depth == 0
+            and i > 0
+            and expr[i - 1] not in "-+*/(<=e"
+            and (i + 1 >= len(expr) or expr[i + 1] != ">")
+        ):
+            cuts.append(i)
+        elif ch in "+*/" and depth == 0:
+            return [expr]
+    if len(cuts) != 1:
+        return [expr]
+    return [expr[: cuts[0]].strip(), expr[cuts[0] + 1 :].strip()]

@@ -23,7 +23,14 @@ from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from moos_lint.frontends.cpp import facts, fields
-from moos_lint.frontends.cpp.names import WORD_BYTES, callee_name, mail_key_of, node_text, strip
+from moos_lint.frontends.cpp.names import (
+    WORD_BYTES,
+    callee_name,
+    displacement_axis,
+    mail_key_of,
+    node_text,
+    strip,
+)
 
 Range = tuple[float, float]
 _EPS = 1e-3
@@ -227,6 +234,20 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
     )
 
 
+def _atan2_frame(first: str, second: str) -> tuple[str | None, str]:
+    """The frame of ``atan2(first, second)`` over a displacement on the local grid:
+    ``atan2(Δy, Δx)`` is the math angle (from east, counter-clockwise), ``atan2(Δx, Δy)``
+    a heading (from north, clockwise); None when the names do not tell. With the call as
+    a reason quotes it."""
+    axes = (displacement_axis(first), displacement_axis(second))
+    shown = f"atan2({_clip(' '.join(first.split()))}, {_clip(' '.join(second.split()))})"
+    if axes == ("north", "east"):
+        return "math", f"{shown}, north over east,"
+    if axes == ("east", "north"):
+        return "heading", f"{shown}, east over north,"
+    return None, "atan2()"
+
+
 def _opaque(v: AbstractValue) -> bool:
     """A value of which nothing is known (a member the configuration sets, a device field)."""
     return v.unit is None and v.const is None and v.pending is None and v.range is None
@@ -238,7 +259,9 @@ def offset(v: AbstractValue) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("offset", None)))
-    return replace(v, range=None, sign=None, const=None)
+    # an angle from east plus an unknown offset may be turned to north (``θ + m_rot``)
+    sense = None if v.sense == "math" else v.sense
+    return replace(v, range=None, sign=None, const=None, sense=sense)
 
 
 def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> AbstractValue:
@@ -873,8 +896,14 @@ class Evaluator:
             return to_rad(arg, why) if re.match(facts.DEG2RAD_NAME, name) else to_deg(arg, why)
         trig = bare[:-1] if bare.endswith("f") and bare[:-1] in facts.INVERSE_TRIG else bare
         if trig in facts.INVERSE_TRIG:
+            sense, called = None, f"{trig}()"
+            if trig == "atan2" and len(args) == 2:
+                sense, called = _atan2_frame(text(args[0]), text(args[1]))
             return AbstractValue(
-                unit="rad", range=facts.INVERSE_TRIG[trig], why=(f"{trig}() at {at}",)
+                unit="rad",
+                range=facts.INVERSE_TRIG[trig],
+                sense=sense,
+                why=(f"{called} at {at}",),
             )
         if bare in ("fmod", "fmodf", "remainder") and len(args) == 2:
             x = settle(self._eval(pf, args[0], depth + 1))
