@@ -234,17 +234,18 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
     )
 
 
-def _atan2_frame(first: str, second: str) -> tuple[str | None, str]:
-    """The frame of ``atan2(first, second)`` over a displacement on the local grid:
+def _atan2_frame(written: list[str], shown: list[str]) -> tuple[str | None, str]:
+    """The frame of ``atan2`` over a displacement on the local grid (its arguments as
+    ``written``, locals replaced by what they were set to; as ``shown`` in the code):
     ``atan2(Δy, Δx)`` is the math angle (from east, counter-clockwise), ``atan2(Δx, Δy)``
     a heading (from north, clockwise); None when the names do not tell. With the call as
     a reason quotes it."""
-    axes = (displacement_axis(first), displacement_axis(second))
-    shown = f"atan2({_clip(' '.join(first.split()))}, {_clip(' '.join(second.split()))})"
+    axes = tuple(displacement_axis(w) for w in written)
+    call = f"atan2({', '.join(_clip(' '.join(a.split())) for a in shown)})"
     if axes == ("north", "east"):
-        return "math", f"{shown}, north over east,"
+        return "math", f"{call}, north over east,"
     if axes == ("east", "north"):
-        return "heading", f"{shown}, east over north,"
+        return "heading", f"{call}, east over north,"
     return None, "atan2()"
 
 
@@ -898,7 +899,8 @@ class Evaluator:
         if trig in facts.INVERSE_TRIG:
             sense, called = None, f"{trig}()"
             if trig == "atan2" and len(args) == 2:
-                sense, called = _atan2_frame(text(args[0]), text(args[1]))
+                written = [self._written_as(pf, a) for a in args]
+                sense, called = _atan2_frame(written, [text(a) for a in args])
             return AbstractValue(
                 unit="rad",
                 range=facts.INVERSE_TRIG[trig],
@@ -983,6 +985,19 @@ class Evaluator:
         )
 
     # -- names
+    def _written_as(self, pf: Any, n: Any) -> str:
+        """An argument's text, or for a local set once before it (``double y = y2 - y1``),
+        the text it was set to."""
+        n = strip(n)
+        if n is None:
+            return ""
+        if n.type == "identifier":
+            fnode = pf.function_of(n)
+            sets = pf.local.get(fnode.id, {}).get(text(n), []) if fnode is not None else []
+            if len(sets) == 1 and sets[0].op == "=" and sets[0].node.start_byte < n.start_byte:
+                return text(sets[0].rhs)
+        return text(n)
+
     def _name(self, pf: Any, n: Any, depth: int) -> AbstractValue:
         key = _target(n)
         if not key:

@@ -1,12 +1,13 @@
-"""What a variable's name says it holds, as geodesy-argument-order reads it: a name that
-says nothing, or two things, is never judged."""
+"""What a variable's name says it holds, as geodesy-argument-order and the frame of
+``atan2`` read it: a name that says nothing, or two things, is never judged."""
 
 from __future__ import annotations
 
 import pytest
 
 from moos_lint.frontends.cpp.declarations import parameter_names
-from moos_lint.semantics.cpp_checks import axis_of, differs_from_geodesy
+from moos_lint.frontends.cpp.names import axis_of, displacement_axis
+from moos_lint.semantics.cpp_checks import differs_from_geodesy
 
 
 @pytest.mark.parametrize(
@@ -62,3 +63,27 @@ def test_own_declarations_found_by_name(tmp_path):
     assert not differs_from_geodesy("LocalGrid2LatLong", ["dfEast", "dfNorth", "dfLat", "dfLon"])
     stock = ["lat", "lon", "MetersNorth", "MetersEast"]
     assert not differs_from_geodesy("LatLong2LocalGrid", stock)
+
+
+@pytest.mark.parametrize(
+    ("expression", "axis"),
+    [
+        ("m_curY_R - m_curY_L", "north"),
+        ("(dlb_x - m_nav_x_start_rot)", "east"),
+        ("a->y - b->y", "north"),
+        ("path.back().m_y - point_set.back().m_y", "north"),
+        ("dx", "east"),
+        ("delta_y", "north"),
+        ("dis_y", "north"),
+        # a coordinate alone, or a magnetometer's field: its frame is not told by its name
+        ("y", None),
+        ("mag_y", None),
+        ("m_vy", None),
+        ("sin(a)", None),
+        ("-dy", None),
+        ("m_x - m_prev_y", None),
+        ("x1 - x0 + 1", None),
+    ],
+)
+def test_displacement_axis(expression, axis):
+    assert displacement_axis(expression) == axis
