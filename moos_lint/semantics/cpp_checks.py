@@ -134,6 +134,15 @@ def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
             f"{_because(v)}; yaw is −heading·π/180 (heading turns clockwise, yaw "
             "counter-clockwise)",
         )
+    for p, v in _valued(app, angles.is_heading_var):
+        if v is None or v.unit != "deg" or v.sense != "yaw" or v.hint:
+            continue
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is a yaw turned into degrees without the minus sign"
+            f"{_because(v)}; heading is −yaw·180/π (yaw turns counter-clockwise, heading "
+            "clockwise)",
+        )
 
 
 def heading_in_radians(app: AppModel) -> Iterator[Finding]:
@@ -148,16 +157,20 @@ def heading_in_radians(app: AppModel) -> Iterator[Finding]:
 
 
 def angle_from_east(app: AppModel) -> Iterator[Finding]:
-    for p, v in _valued(app, lambda n: angles.is_heading_var(n) or angles.is_yaw_var(n)):
+    for p, v in _valued(app, angles.is_heading_var):
         if v is None or v.sense != "math":
             continue
-        if angles.is_heading_var(p.name.last):
-            rule = "a heading is clockwise from north: atan2(Δx, Δy), or 90° − the math angle"
-        else:
-            rule = "MOOS yaw is zero at north (yaw = −heading·π/180): the math angle − π/2"
+        # the step that says so (a conversion on the same line would hide it in the chain)
+        frame = next((w for w in v.why if "north over east" in w), None)
+        because = (
+            f" ({frame.replace(', north over east,', ': north over east,')})"
+            if frame
+            else _because(v)
+        )
         yield (
             p.value.span,  # type: ignore[union-attr]
-            f"{_shown(p)} is an angle from east, counter-clockwise{_because(v)}: {rule}",
+            f"{_shown(p)} is an angle from east, counter-clockwise{because}: a heading is "
+            "clockwise from north: atan2(Δx, Δy), or 90° − the math angle",
         )
 
 

@@ -1,13 +1,17 @@
-"""A heading or yaw measured from east, counter-clockwise (the math frame).
+"""A heading measured from east, counter-clockwise (the math frame).
 
 ## What it does
-Reports `Notify` of a heading (`NAV_HEADING`, `*_HDG`) or a yaw (`NAV_YAW`)
-whose value is the math angle of the local grid: `atan2(Δy, Δx)` over a
-displacement (a difference of two y coordinates over one of two x coordinates,
-or names that say so: `dy`, `delta_x`), or MOOS-IvP's `headingToRadians`,
-with no turn to north after it. Whether a plain `x` or `mag_y` is on the grid
-or in the body frame, a name does not tell: only displacements are judged.
-Adding an unknown offset (`θ + m_rotation`) or negating the angle clears it.
+Reports `Notify` of a heading (`NAV_HEADING`, `GPS_HDG`) whose value is the
+math angle of the local grid, `atan2(Δy, Δx)` over a displacement (a
+difference of two y coordinates over one of two x coordinates, or names that
+say so: `dy`, `delta_x`, also through a local set once before the call), with
+no turn to north after it. Whether a plain `x` or `mag_y` is on the grid or in
+the body frame, a name does not tell: only displacements are judged. Adding an
+unknown offset (`θ + m_rotation`) or negating the angle clears it.
+
+A yaw in the math frame is not reported: MOOS-IvP itself writes the `YAW` of
+its node reports as `headingToRadians(heading)`, from east (NodeRecord.cpp),
+while uSimMarine's `NAV_YAW` is `−heading·π/180`, from north.
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
@@ -15,12 +19,12 @@ through locals, members, functions anywhere in the repository and struct fields
 cannot know is never reported.
 
 ## Why is this bad?
-MOOS measures heading from north, clockwise, and yaw from north,
-counter-clockwise (`yaw = −heading·π/180`; at zero heading the vehicle points
-north and zero heading is zero yaw). `atan2(Δy, Δx)` is zero pointing east: a
-vehicle heading north gets 90 instead of 0, and one heading east 0 instead of
-90. Every consumer (the helm, pMarineViewer, pNodeReporter) then steers or
-draws the vehicle turned by a quarter turn and mirrored.
+MOOS measures heading in degrees from north, clockwise (at zero heading the
+vehicle points north). `atan2(Δy, Δx)` is zero pointing east and grows
+counter-clockwise: a vehicle heading north gets 90 instead of 0, one heading
+east 0 instead of 90, one heading west 180 instead of 270. Every consumer (the
+helm, pMarineViewer, pNodeReporter) then steers or draws the vehicle mirrored
+about the north-east diagonal.
 
 ## Example
 ```cpp

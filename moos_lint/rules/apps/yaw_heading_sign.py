@@ -1,4 +1,4 @@
-"""Yaw computed from heading as `+heading·π/180`, without the minus sign.
+"""Yaw computed from heading as `+heading·π/180` (or heading from yaw), without the minus sign.
 
 ## What it does
 Reports a yaw published (`Notify("NAV_YAW", ...)`) from a heading in degrees
@@ -9,6 +9,12 @@ read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
 heading. A yaw taken about a Z axis pointing down turns clockwise as a heading
 does: MAVLink's ATTITUDE yaw (`mavlink_msg_attitude_get_yaw`) published as a
 yaw without the minus sign is reported too.
+
+The reverse is reported as well: a heading published (`Notify("VIEW_HEADING",
+...)`) from a MOOS yaw turned into degrees with no minus sign, where the yaw
+is one MOOS gives (`NAV_YAW` read by mail, or a value negated from a heading).
+A variable merely named yaw is not taken as one: a device's yaw may be about
+Z-down, which turns as a heading does.
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
