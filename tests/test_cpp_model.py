@@ -83,6 +83,20 @@ def test_cmake_names(tmp_path):
     assert executable_name(str(tmp_path)) is None
 
 
+def test_cmake_above_building_several_programs_from_the_folder(tmp_path):
+    """A CMakeLists.txt above the sources (``add_executable(relay src/relay.cpp)``) that
+    builds several programs from the folder names the app by its class's file only."""
+    (tmp_path / "src").mkdir()
+    (tmp_path / "CMakeLists.txt").write_text(
+        "add_executable(source_node src/source_node.cpp)\n"
+        "add_executable(relay_node src/relay_node.cpp)\n"
+    )
+    src = str(tmp_path / "src")
+    assert executable_name(src, frozenset({"relay_node.cpp"}))[0] == "relay_node"
+    assert executable_name(src, frozenset({"other.cpp"})) is None
+    assert executable_name(src) is None
+
+
 def test_process_name_falls_back_to_folder(tmp_path):
     folder = tmp_path / "Gauge"
     folder.mkdir()

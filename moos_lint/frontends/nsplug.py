@@ -323,6 +323,24 @@ class FileCache:
         return {*self._cache, *self.read_elsewhere}
 
 
+def _case_twin(name: str, folders: Sequence[str]) -> str | None:
+    """The file name, as it is written on disk, that ``name`` names in one of ``folders``
+    but for its case (``plug_V1_x.moos`` for ``plug_v1_x.moos``); None if none."""
+    if os.path.isabs(name):
+        folders, name = (os.path.dirname(name),), os.path.basename(name)
+    head, base = os.path.split(name)
+    for folder in folders:
+        where = os.path.join(folder, head)
+        try:
+            entries = os.listdir(where)
+        except OSError:
+            continue
+        for entry in entries:
+            if entry != base and entry.lower() == base.lower():
+                return os.path.join(head, entry) if head else entry
+    return None
+
+
 def _norm(path: str | Path) -> str:
     return os.path.normpath(os.path.abspath(path))
 
@@ -808,7 +826,14 @@ class Preprocessor:
         found = self.resolve_include(target, top_dir, including_dir)
         if found is None:
             exp.incomplete = True
-            self._problem(exp, "include-not-found", here, f"included file `{target}` not found")
+            message = f"included file `{target}` not found"
+            twin = _case_twin(target, (top_dir, *self.include_paths, including_dir))
+            if twin is not None:
+                message += (
+                    f"; `{twin}` differs from it only in case (found on a case-insensitive "
+                    "file system such as macOS's, not on Linux)"
+                )
+            self._problem(exp, "include-not-found", here, message)
             return None
         if found == here.path or found in active:
             self._problem(

@@ -50,6 +50,12 @@ class RunMemos:
     mission_files: dict[str, list[str]] = field(default_factory=dict)
     #: the names of the C++ files and classes of the project: lower case -> as written
     repo_cpp_stems: dict[str, str] | None = None
+    #: the project's own ``BHV_*`` C++ files: class name, lower case -> their paths
+    repo_behavior_files: dict[str, list[str]] = field(default_factory=dict)
+    #: behavior kind, lower case -> the keys the project's own source of it compares with
+    repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: program name -> whether the project's CMake builds a program of exactly that name
+    built_programs: dict[str, bool] = field(default_factory=dict)
     #: top-of-file keys the run's own C++ apps read with ``GetValue``
     repo_globals: frozenset[str] | None = None
 

@@ -358,15 +358,17 @@ def _global_parens(text: str) -> bool:
     return depth == 0
 
 
-def _condition_vars(piece: Piece) -> Iterator[Piece]:
-    """The left side of every relation in a lib_logic condition."""
+def _condition_vars(piece: Piece, alternatives: set[int] | None = None) -> Iterator[Piece]:
+    """The left side of every relation in a lib_logic condition; the start of each that
+    is one side of an ``or`` (the condition may hold without it) goes in
+    ``alternatives`` when given."""
     text, at = _trim(piece)
     while _global_parens(text):
         text, at = _trim((text[1:-1], at + 1))
     if not text:
         return
     if text[0] == "!" and _global_parens(text[1:].strip()):
-        yield from _condition_vars((text[1:], at + 1))
+        yield from _condition_vars((text[1:], at + 1), alternatives)
         return
     depths = _depths(text)
     for i in range(len(text)):
@@ -374,8 +376,12 @@ def _condition_vars(piece: Piece) -> Iterator[Piece]:
             continue
         m = _CONNECTIVE.match(text, i)
         if m and depths[i] == 0:
-            yield from _condition_vars((text[:i], at))
-            yield from _condition_vars((text[m.end() :], at + m.end()))
+            sides = [(text[:i], at), (text[m.end() :], at + m.end())]
+            for side in sides:
+                names = list(_condition_vars(side, alternatives))
+                if alternatives is not None and m.group(1).lower() == "or":
+                    alternatives.update(n[1] for n in names)
+                yield from names
             return
         if depths[i] != 0:
             continue
@@ -385,6 +391,16 @@ def _condition_vars(piece: Piece) -> Iterator[Piece]:
                 if left[0] and not any(c in left[0] for c in '"<>=!()'):
                     yield left
                 return
+
+
+def alternative_starts(text: str, at: int = 0) -> set[int]:
+    """Where the variables of a lib_logic condition that sit on one side of an ``or``
+    start (``(DEPLOY = true) or (ALPHA = one)``: both): the condition can hold without
+    any one of them."""
+    found: set[int] = set()
+    for _ in _condition_vars((text, at), found):
+        pass
+    return found
 
 
 def condition(commas_are_equals: bool = False) -> Syntax:

@@ -54,9 +54,10 @@ def executable_name(
 ) -> tuple[str, str, int] | None:
     """(name, CMakeLists path, line) of the executable built from ``folder``, when one is clear.
 
-    A CMakeLists.txt that builds several programs from one folder names the app's
-    by the folder's name, or by the one source list that holds one of ``members``
-    (the file names of the app's own class).
+    A CMakeLists.txt that builds several programs from one folder (its own, or the
+    one above it listing ``folder/...`` sources) names the app's by the folder's name,
+    or by the one source list that holds one of ``members`` (the file names of the
+    app's own class).
     """
     here = os.path.join(folder, "CMakeLists.txt")
     if os.path.isfile(here):
@@ -78,9 +79,15 @@ def executable_name(
     if os.path.isfile(above):
         text = _read(above)
         base = os.path.basename(os.path.normpath(folder))
-        for name, srcs, line in _executables(text or ""):
-            if re.search(r"(^|[\s/])" + re.escape(base) + r"/", srcs):
-                return name, above, line
+        inside = [
+            (name, srcs, line)
+            for name, srcs, line in _executables(text or "")
+            if re.search(r"(^|[\s/])" + re.escape(base) + r"/", srcs)
+        ]
+        if len(inside) > 1:  # several programs from the folder: the one holding the class
+            inside = [e for e in inside if members & _file_names(e[1])]
+        if len(inside) == 1:
+            return inside[0][0], above, inside[0][2]
     return None
 
 

@@ -158,6 +158,15 @@ def _unescape(esc: str) -> str:
     return {"\\n": "\n", "\\t": "\t", "\\\\": "\\", '\\"': '"', "\\'": "'"}.get(esc, esc[1:])
 
 
+def _braced(n: Any) -> Any:
+    """The one value of a brace initialiser (``std::string m_var{"NAV_X"}``), else ``n``."""
+    if n.type == "initializer_list":
+        values = [c for c in n.named_children if c.type != "comment"]
+        if len(values) == 1:
+            return values[0]
+    return n
+
+
 def strip_parens(n: Any) -> Any:
     while n is not None and n.type == "parenthesized_expression" and n.named_child_count == 1:
         n = n.named_children[0]
@@ -373,7 +382,7 @@ class ParsedFile:
                 fn = self.function_of(node)
                 name = target_name(caps["asg.l"][0])
                 if name:
-                    self.asgs.append(_Asg(name, op, caps["asg.r"][0], node, fn))
+                    self.asgs.append(_Asg(name, op, _braced(caps["asg.r"][0]), node, fn))
             elif "fi" in caps:
                 self.inits.append((text(caps["fi.name"][0]), caps["fi.args"][0]))
             elif "def.name" in caps:

@@ -91,6 +91,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
+from moos_lint.files.suffixes import script_stem
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
@@ -242,4 +243,7 @@ def _commented_runs(moos) -> dict[str, str]:
             if m:
                 launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
                 found.setdefault(launched.lower(), where(line))
+                stem = None if m.group(2) else script_stem(launched)
+                if stem:  # `// Run = ./iPydyna.py` would read `ProcessConfig = iPydyna`
+                    found.setdefault(stem.lower(), where(line))
     return found

@@ -37,7 +37,11 @@ def repo_classes(ctx: Context) -> dict[str, str]:
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
             if is_cpp(name):
-                stems.add(os.path.splitext(name)[0])
+                stem = os.path.splitext(name)[0]
+                stems.add(stem)
+                if stem.lower().startswith("bhv_"):
+                    own = run.memos.repo_behavior_files.setdefault(stem.lower(), [])
+                    own.append(os.path.join(dirpath, name))
             if name == "CMakeLists.txt":
                 # the helm loads a behavior by its library's name (libBHV_X.so)
                 stems.update(_library_behaviors(os.path.join(dirpath, name)))
@@ -84,6 +88,31 @@ def _root(ctx: Context) -> str:
     """The project root (:mod:`moos_lint.files.project`), which the settings carry: the
     config's folder, else the version-control top, else the working folder."""
     return os.path.abspath(ctx.settings.root)
+
+
+_LITERAL = re.compile(rb'"([A-Za-z_][A-Za-z0-9_]*)"')
+
+
+def own_source_keys(ctx: Context, kind: str) -> frozenset[str]:
+    """The keys (lower case) that the project's own copy of behavior ``kind`` may read:
+    every string literal of its C++ files named after the class (``BHV_AvoidCollision.cpp``
+    of a vendored older MOOS-IvP, whose ``setParam`` still takes ``active_grade``).
+    Empty when the project has no file of that name."""
+    low = kind.lower()
+    memo = ctx.run.memos.repo_behavior_keys
+    if low in memo:
+        return memo[low]
+    repo_classes(ctx)  # (fills the project's behavior files)
+    keys: set[str] = set()
+    for path in ctx.run.memos.repo_behavior_files.get(low, []):
+        try:
+            with open(path, "rb") as fh:
+                data = fh.read(1024 * 1024)
+        except OSError:
+            continue
+        keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
+    memo[low] = found = frozenset(keys)
+    return found
 
 
 def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:

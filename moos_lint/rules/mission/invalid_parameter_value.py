@@ -50,7 +50,9 @@ as recorded in the catalogue with the source line that enforces it:
 - a behavior's flag (`endflag`, `runflag`, any `*flag`) written as a
   condition, `endflag = MODE==SURVEYING`: the helm splits a flag at its first
   `=` (`setVarDataPairOnString`), so it posts `MODE` = `=SURVEYING`, a value
-  no condition on `MODE` expects; the fix drops one `=`;
+  no condition on `MODE` expects; the fix drops one `=`; in parentheses,
+  `endflag = (DEPLOY = false)` posts `(DEPLOY` = `false)`, and the fix drops
+  them;
 - `AppTick` and `MaxAppTick` (every MOOS app) are read with
   `GetConfigurationParam(double)`, which ignores a value that does not start
   with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
@@ -219,8 +221,12 @@ def check(ctx):
 
 def _double_equals(ctx, p):
     """A flag written as a condition (``runflag = MODE==SURVEY``): the helm splits it at
-    its first ``=`` and posts ``MODE`` = ``=SURVEY``."""
+    its first ``=`` and posts ``MODE`` = ``=SURVEY``; in parentheses
+    (``endflag = (A_ONE = true)``) the parentheses go into the name and the value."""
     pair = var_data_pair(p.value)
+    if pair is not None and pair[0].startswith("(") and not has_macro(p.value):
+        yield from _parenthesised(ctx, p, *pair)
+        return
     if pair is None or not pair[1].startswith("=") or has_macro(p.value):
         return
     var, val = pair
@@ -237,6 +243,23 @@ def _double_equals(ctx, p):
         p.value_span,
         f"`{p.key.strip()} = {p.value.strip()}` posts `{var}` = `{val}`: the helm splits a "
         f"flag at its first `=` (setVarDataPairOnString), so `{var}` never reads `{meant}`",
+        line=p.line,
+        fix=fix,
+    )
+
+
+def _parenthesised(ctx, p, var: str, val: str):
+    """``endflag = (A_ONE = true)``: posts ``(A_ONE`` = ``true)``."""
+    inner = p.value.strip()
+    fix = None
+    if inner.startswith("(") and inner.endswith(")") and "(" not in inner[1:]:
+        meant = inner[1:-1].strip().replace("==", "=")
+        fix = Fix(f"post `{meant}`", (Edit(p.value_span, meant),))
+    yield ctx.report(
+        p.value_span,
+        f"`{p.key.strip()} = {p.value.strip()}` posts `{var}` = `{val}`: a flag is "
+        "`VAR = value`, not a condition; the helm splits it at its first `=` "
+        "(setVarDataPairOnString), parentheses and all",
         line=p.line,
         fix=fix,
     )

@@ -32,13 +32,17 @@ None.
 MOOS-IvP caveats, deliberately not reported:
 - behaviors of kinds the catalogue does not describe (the project's own
   behaviors, unless a catalogue file lists their parameters);
-- parameters holding an nsplug macro.
+- parameters holding an nsplug macro;
+- a parameter that the project's own copy of a stock behavior names (a C++
+  file named after the class, `BHV_AvoidCollision.cpp`, that holds `"key"`): a
+  project that builds its own (often older) MOOS-IvP behaviors is judged by
+  them (`active_grade`, read by MOOS-IvP 15.5's BHV_AvoidCollision).
 """
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission.unknown_parameter import suggestions
 
 
@@ -59,6 +63,8 @@ def check(ctx):
             key = p.lkey
             if not key or key in info.params or has_macro(p.key):
                 continue
+            if key in own_source_keys(ctx, bhv.kind.strip()):
+                continue  # the project's own copy of the behavior reads it
             close = suggestions(key, info.params)
             msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             fix = None

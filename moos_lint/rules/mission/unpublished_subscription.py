@@ -51,6 +51,9 @@ None.
 MOOS-IvP caveats, deliberately not reported:
 - names with run-time placeholders (`$[OWNSHIP]`, `$(VNAME)` left by
   nsplug) and wildcards;
+- a variable on one side of an `or` (`(DEPLOY = true) or (ALPHA = one)`): the
+  condition may hold without it (lib_logic evaluates the whole expression with
+  the variables it has, IvPBehavior.cpp);
 - a mission that receives variables from another community when no other
   mission in its folder describes that community: anything may arrive;
 - variables that a person pokes by hand (uPokeDB from a terminal,
@@ -66,7 +69,7 @@ from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
-from moos_lint.semantics.variables import bare_name
+from moos_lint.semantics.variables import alternative_starts, bare_name
 
 
 def _gaps(model) -> list[str]:
@@ -100,6 +103,8 @@ def check(ctx):
             continue
         if model.published_by(name):
             continue
+        if _one_alternative(ref):
+            continue  # one side of an `or`: the condition may hold without it
         key = (name, ref.line.path, ref.line.lineno)
         if key in seen:
             continue
@@ -120,6 +125,13 @@ def check(ctx):
             )
         else:
             yield ctx.report(ref.span, msg, line=ref.line, subject=subject)
+
+
+def _one_alternative(ref) -> bool:
+    """Whether the condition names ``ref`` only on one side of an ``or``."""
+    text = ref.line.text.replace(",", "=")  # (the helm reads `,` as `=`: same offsets)
+    start = text.find("=") + 1
+    return start > 0 and ref.start in alternative_starts(text[start:], start)
 
 
 def _named_after(name: str, prefixes: set[str]) -> bool:

@@ -110,6 +110,8 @@ def check(ctx):
         pattern = _UPPER_WILD if ref.wildcard else _UPPER
         if pattern.fullmatch(bare):
             continue
+        if bare.startswith("(") and ref.param.endswith("flag"):
+            continue  # a condition written as a flag: invalid-parameter-value says so
         if any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
             continue
         where = f"{ref.app} `{ref.param}`"

@@ -8,7 +8,10 @@ moos-lint searches where nsplug does: the folder nsplug runs in (taken to be
 the top-level file's folder), then each `--include-path` folder (nsplug's
 `--path`), then the including file's folder, then the folders that the
 launch scripts beside the top-level file (`*.sh`, read as text, never run)
-hand nsplug with `--path=DIR` or `-p DIR`.
+hand nsplug with `--path=DIR` or `-p DIR`. When one of those folders holds the
+file under the same name in another case (`plug_v1_origin.moos` for
+`#include plug_V1_origin.moos`), the message says so: the mission then works
+on a case-insensitive file system (macOS's default) and fails on Linux.
 
 ## Why is this bad?
 nsplug stops with an error and writes no mission file, so the launch script

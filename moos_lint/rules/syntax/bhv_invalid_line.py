@@ -9,7 +9,10 @@ comment in a behavior file); a merge-conflict marker (`<<<<<<< HEAD`), named
 as such.
 
 A run of consecutive lines rejected for the same reason (a `/* ... */` block,
-a pasted paragraph) is one finding, on its first line.
+a pasted paragraph) is one finding, on its first line. A `.bhv` file with no
+line shaped like a behavior file's (`Behavior`, `initialize`, `set`, a brace,
+`key = value`) is not one (the test inputs of nsplug, notes) and is left
+alone.
 
 ## Why is this bad?
 The helm reports `Problem with line N in the BehaviorSet file` and the *whole*
@@ -33,8 +36,14 @@ Use `//` for comments, and `key = value` for every parameter line.
 None.
 """
 
+import re
+
 from moos_lint.files.diagnostics import Severity
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+
+#: a line shaped like one of a behavior file: a brace, a `Behavior`/`Behaviour` header,
+#: `initialize`, `set`, or `key = value`
+_SHAPED = re.compile(r"\s*(?:[{}]|behav|initiali|set\s|[\w.]+\s*=)", re.IGNORECASE)
 
 
 @rule(
@@ -45,6 +54,11 @@ from moos_lint.rules.kit.declare import Kind, Scope, rule
     kinds=(Kind.BHV,),
 )
 def check(ctx):
+    bhv = ctx.bhv
+    if not (bhv.behaviors or bhv.initializes or bhv.sets) and not any(
+        _SHAPED.match(line.text) for line in bhv.lines
+    ):
+        return  # nothing shaped like a behavior file's lines: not one
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
     runs: list[list] = []  # consecutive lines rejected for one reason: one finding
     for line, reason in ctx.bhv.invalid:

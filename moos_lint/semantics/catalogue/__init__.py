@@ -406,11 +406,15 @@ TEMPLATE_KEYS = frozenset({"foo", "bar"})
 #: the app reads the origin of the local grid (the stock catalogue's test, generate.py)
 READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 #: ``else handled = m_viewer.setParam(param, value);``: a final ``else`` that hands any
-#: other key to code elsewhere (a library), whose keys the app's own files do not list.
+#: other key to code elsewhere (a library), whose keys the app's own files do not list; or
+#: ``bool handled = m_gui->setRadioCastAttrib(param, value);``: every key handed over
+#: before any test of its own (uMACView in MOOS-IvP 15.5, UMV_MOOSApp.cpp).
 #: Written literal first (``else(?<=\belse)`` is ``\belse``): a pattern that starts with
 #: ``\b`` is tried at every position of the text, 20x slower over an app's files.
 DELEGATE = re.compile(
-    r"else(?<=\belse)\s*\{?\s*(?://[^\n]*+\s*+)*+handled\s*=\s*[\w>.-]+\(\s*param\b", re.MULTILINE
+    r"(?:else(?<=\belse)\s*\{?\s*(?://[^\n]*+\s*+)*+|bool(?<=\bbool)\s+)"
+    r"handled\s*=\s*[\w>.-]+\(\s*param\b",
+    re.MULTILINE,
 )
 
 

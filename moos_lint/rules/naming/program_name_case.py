@@ -1,0 +1,99 @@
+"""A Run line naming a known program in another case (`pHelmIvp` for `pHelmIvP`).
+
+## What it does
+Reports an Antler `Run` line whose program is a program the app catalogue
+knows (a MOOS-IvP or core MOOS app, MOOSDB, pAntler, an app of a catalogue
+file or of the linted C++) written in another case: `Run = pHelmIvp`,
+`Run = uMacView`, `Run = moosdb`. A program the project builds itself under
+that exact name (an `add_executable(iBlinkstick ...)` in one of its
+CMakeLists.txt files) is its own, and is left alone.
+
+## Why is this bad?
+pAntler starts each program with `execvp(name)` (MOOSEssentials
+pAntler/Antler.cpp), which looks the name up on the `PATH` as written. On
+macOS's default, case-insensitive file system the mission works; on Linux,
+the usual system of a vehicle's computer, the launch fails ("Failed exec - not
+good"), the process never runs, and the rest of the mission starts without
+it. The ProcessConfig block is still found (MOOS compares block names
+without regard to case), so nothing else looks wrong.
+
+## Example
+```moos
+ProcessConfig = ANTLER
+{
+  Run = MOOSDB   @ NewConsole = false
+  Run = pHelmIvp @ NewConsole = false
+}
+```
+
+## How to fix
+```moos
+  Run = pHelmIvP @ NewConsole = false
+```
+
+## Options
+None.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.catalogue import catalogue_for
+
+_SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__"}
+
+
+@rule(
+    code="N007",
+    name="program-name-case",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS,),
+    fixable=True,
+)
+def check(ctx):
+    cat = catalogue_for(ctx.run)
+    for run in ctx.moos.runs:
+        program = run.program
+        if not program or has_macro(program) or "/" in run.binary.replace("\\", "/"):
+            continue  # a path names a file, not a program looked up on the PATH
+        known = cat.app(program) or cat.programs.get(program.lower())
+        if known is None or known.name == program or known.name.lower() != program.lower():
+            continue  # (an app may be filed under another name too: its folder's)
+        if _built_by_project(ctx, program):
+            continue
+        yield ctx.report(
+            run.binary_span,
+            f"`{program}`: the program is `{known.name}`; pAntler starts it by the name "
+            "written here, which a case-insensitive file system (macOS's) finds and Linux "
+            "does not: there the process never starts",
+            line=run.param.line,
+            fix=Fix(f"respell as `{known.name}`", (Edit(run.binary_span, known.name),)),
+        )
+
+
+def _built_by_project(ctx, program: str) -> bool:
+    """Whether a CMakeLists.txt of the project builds a program named exactly ``program``."""
+    memo = ctx.run.memos.built_programs
+    if program in memo:
+        return memo[program]
+    pattern = re.compile(rb"add_executable\s*\(\s*" + re.escape(program.encode()) + rb"[\s)]")
+    found = False
+    for dirpath, dirs, files in os.walk(os.path.abspath(ctx.settings.root)):
+        dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
+        if "CMakeLists.txt" in files:
+            try:
+                with open(os.path.join(dirpath, "CMakeLists.txt"), "rb") as fh:
+                    data = fh.read(256 * 1024)
+            except OSError:
+                continue
+            if program.encode() in data and pattern.search(data):
+                found = True
+                break
+    memo[program] = found
+    return found
