@@ -21,9 +21,11 @@ not understood, is skipped.
 ## Why is this bad?
 x and y are metres east and north of `LatOrigin`/`LongOrigin`. MOOSGrid's
 geodesy assumes a local work area, a square under about 20 km on a side, so a
-point more than 10 km away is usually a unit mistake: a UTM easting or
-northing, kilometres read as metres, or a value typed in the wrong field.
-The vehicle then heads for a point far away, or the polygon is off the map.
+point more than 10 km away is either a mistake (a UTM easting or northing,
+which the message names from 100 km on, or a value typed in the wrong field:
+the vehicle then heads for a point far away, or the polygon is off the map)
+or an origin placed far from where the vehicle works, where the flat grid
+drifts from the true positions.
 
 Deliberately not reported: headings and speeds in `start_pos`,
 pMarineViewer pan and zoom settings (screen values, not coordinates), and any
@@ -99,6 +101,11 @@ def _points(key: str, value: str, sim: bool):
     return None
 
 
+#: at least this far (metres), a point is most likely a UTM easting or northing (eastings
+#: run from about 160 to 840 km): nothing a MOOS grid holds
+UTM_SCALE = 100_000
+
+
 @rule(
     code="U005",
     name="outside-work-area",
@@ -128,10 +135,16 @@ def check(ctx):
         dist = math.hypot(*far)
         if dist <= limit:
             continue
+        if dist >= UTM_SCALE:
+            why = "local x/y are metres from LatOrigin/LongOrigin (a UTM coordinate?)"
+        else:
+            why = (
+                "the local grid is a flat map of a work area of about 20 km around "
+                "LatOrigin/LongOrigin (move the origin near the operating area?)"
+            )
         yield ctx.report(
             p.value_span,
             f"`{p.key}`: the point ({far[0]:g}, {far[1]:g}) is {_distance(dist)} from the "
-            f"origin, farther than {_distance(limit)}: local x/y are metres from "
-            "LatOrigin/LongOrigin (a UTM or lat/long value, or kilometres?)",
+            f"origin, farther than {_distance(limit)}: {why}",
             line=p.line,
         )
