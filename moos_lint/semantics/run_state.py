@@ -52,6 +52,9 @@ class RunMemos:
     repo_cpp_stems: dict[str, str] | None = None
     #: the project's own ``BHV_*`` C++ files: class name, lower case -> their paths
     repo_behavior_files: dict[str, list[str]] = field(default_factory=dict)
+    #: the folders of the project's copies of MOOS-IvP's ``BFactoryStatic.cpp`` (a helm
+    #: it builds itself, which makes the copies of the stock behaviors beside it)
+    repo_helm_factories: list[str] = field(default_factory=list)
     #: behavior kind, lower case -> the keys the project's own source of it compares with
     repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)
     #: program name -> whether the project's CMake builds a program of exactly that name

@@ -39,6 +39,8 @@ def repo_classes(ctx: Context) -> dict[str, str]:
             if is_cpp(name):
                 stem = os.path.splitext(name)[0]
                 stems.add(stem)
+                if name == "BFactoryStatic.cpp":
+                    run.memos.repo_helm_factories.append(dirpath)
                 if stem.lower().startswith("bhv_"):
                     own = run.memos.repo_behavior_files.setdefault(stem.lower(), [])
                     own.append(os.path.join(dirpath, name))
@@ -97,14 +99,21 @@ def own_source_keys(ctx: Context, kind: str) -> frozenset[str]:
     """The keys (lower case) that the project's own copy of behavior ``kind`` may read:
     every string literal of its C++ files named after the class (``BHV_AvoidCollision.cpp``
     of a vendored older MOOS-IvP, whose ``setParam`` still takes ``active_grade``).
-    Empty when the project has no file of that name."""
+
+    Only a project that builds its own helm runs its copies of the stock behaviors: the
+    helm makes a stock kind with its static factory before it looks for a library of that
+    name (BehaviorSet.cpp), so a student's own ``BHV_ZigZag`` never replaces MOOS-IvP's.
+    Empty when the project builds no helm, or has no file of that name."""
     low = kind.lower()
     memo = ctx.run.memos.repo_behavior_keys
     if low in memo:
         return memo[low]
-    repo_classes(ctx)  # (fills the project's behavior files)
+    repo_classes(ctx)  # (fills the project's behavior files and helm factories)
     keys: set[str] = set()
+    factories = ctx.run.memos.repo_helm_factories
     for path in ctx.run.memos.repo_behavior_files.get(low, []):
+        if not any(_same_tree(os.path.dirname(path), f) for f in factories):
+            continue  # no helm of the project makes this copy
         try:
             with open(path, "rb") as fh:
                 data = fh.read(1024 * 1024)
@@ -113,6 +122,17 @@ def own_source_keys(ctx: Context, kind: str) -> frozenset[str]:
         keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
     memo[low] = found = frozenset(keys)
     return found
+
+
+def _same_tree(folder: str, factory: str) -> bool:
+    """Whether a behavior's folder and a helm factory's folder are parts of one source
+    tree: their common folder is at most two levels above the behavior's
+    (``ivp/src/lib_behaviors-marine`` and ``ivp/src/lib_helmivp``)."""
+    try:
+        common = os.path.commonpath([folder, factory])
+    except ValueError:
+        return False
+    return len(os.path.relpath(folder, common).split(os.sep)) <= 2
 
 
 def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:

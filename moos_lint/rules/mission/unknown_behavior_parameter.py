@@ -33,10 +33,13 @@ MOOS-IvP caveats, deliberately not reported:
 - behaviors of kinds the catalogue does not describe (the project's own
   behaviors, unless a catalogue file lists their parameters);
 - parameters holding an nsplug macro;
-- a parameter that the project's own copy of a stock behavior names (a C++
-  file named after the class, `BHV_AvoidCollision.cpp`, that holds `"key"`): a
-  project that builds its own (often older) MOOS-IvP behaviors is judged by
-  them (`active_grade`, read by MOOS-IvP 15.5's BHV_AvoidCollision).
+- in a project that builds its own helm (a vendored, often older, MOOS-IvP
+  with its `BFactoryStatic.cpp`), a parameter that its own copy of a stock
+  behavior names (a C++ file named after the class, `BHV_AvoidCollision.cpp`,
+  that holds `"key"`): that helm runs its copies (`active_grade`, read by
+  MOOS-IvP 15.5's BHV_AvoidCollision). A project's own `BHV_ZigZag` without
+  its own helm is not: the helm makes stock kinds itself before it loads any
+  library, so MOOS-IvP's BHV_ZigZag runs and judges the parameters.
 """
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
