@@ -66,6 +66,7 @@ import re
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.spelling import typos
 from moos_lint.rules.mission._behaviors import _root, lookup, repo_behaviors
 from moos_lint.semantics.catalogue import catalogue_for
 
@@ -127,23 +128,7 @@ def _close(kind: str, names: dict[str, str]) -> list[str]:
 def _typos_away(kind: str, name: str) -> int:
     """How many typos make ``kind`` into ``name``; a missing ``BHV_`` is one
     (``Behavior = Waypoint``)."""
-    found = _typos(kind, name)
+    found = typos(kind, name)
     if not kind.lower().startswith("bhv_"):
-        found = min(found, 1 + _typos("BHV_" + kind, name))
+        found = min(found, 1 + typos("BHV_" + kind, name))
     return found
-
-
-def _typos(a: str, b: str) -> int:
-    """Letters inserted, deleted, replaced or swapped to make ``a`` into ``b`` (no case)."""
-    a, b = a.lower(), b.lower()
-    prev2: list[int] = []
-    prev = list(range(len(b) + 1))
-    for i, ca in enumerate(a, 1):
-        cur = [i]
-        for j, cb in enumerate(b, 1):
-            d = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (ca != cb))
-            if i > 1 and j > 1 and ca == b[j - 2] and a[i - 2] == cb:
-                d = min(d, prev2[j - 2] + 1)
-            cur.append(d)
-        prev2, prev = prev, cur
-    return prev[-1]

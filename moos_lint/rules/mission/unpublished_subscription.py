@@ -53,7 +53,8 @@ MOOS-IvP caveats, deliberately not reported:
   nsplug) and wildcards;
 - a variable on one side of an `or` (`(DEPLOY = true) or (ALPHA = one)`): the
   condition may hold without it (lib_logic evaluates the whole expression with
-  the variables it has, IvPBehavior.cpp);
+  the variables it has, IvPBehavior.cpp), unless the name is a typo or two from
+  a published one (`(DEPLOY = true) or (RETRUN = true)`): that side is dead;
 - a mission that receives variables from another community when no other
   mission in its folder describes that community: anything may arrive;
 - variables that a person pokes by hand (uPokeDB from a terminal,
@@ -67,6 +68,7 @@ MOOS-IvP caveats, deliberately not reported:
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.spelling import typos
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
 from moos_lint.semantics.variables import alternative_starts, bare_name
@@ -103,8 +105,13 @@ def check(ctx):
             continue
         if model.published_by(name):
             continue
+        meant = None
         if _one_alternative(ref):
-            continue  # one side of an `or`: the condition may hold without it
+            # one side of an `or`: the condition may hold without it, so it is not waited
+            # for; a misspelling of a posted name still leaves that side dead
+            meant = _misspelt(name, model)
+            if meant is None:
+                continue
         key = (name, ref.line.path, ref.line.lineno)
         if key in seen:
             continue
@@ -113,8 +120,12 @@ def check(ctx):
             continue  # named after an app the catalogue does not know: likely its own
         owner = ref.app if ref.app else "the mission"
         subject = Subject(variable=name, app=ref.app or None, key=ref.param)
-        msg = f"`{name}`: {owner}'s {ref.param} waits for it, "
-        msg += "but nothing in the mission publishes it"
+        if meant is not None:
+            msg = f"`{name}`: nothing in the mission publishes it, so this side of "
+            msg += f"{owner}'s {ref.param} never holds; did you mean `{meant}`?"
+        else:
+            msg = f"`{name}`: {owner}'s {ref.param} waits for it, "
+            msg += "but nothing in the mission publishes it"
         if gaps:
             yield ctx.report(
                 ref.span,
@@ -127,9 +138,30 @@ def check(ctx):
             yield ctx.report(ref.span, msg, line=ref.line, subject=subject)
 
 
+#: a name this many typos from a published one is taken to be a misspelling of it
+MAX_TYPOS = 2
+
+
+def _misspelt(name: str, model) -> str | None:
+    """The one published variable ``name`` is a typo or two away from (``RETRUN`` for
+    ``RETURN``), if any; names of four letters or fewer are not compared."""
+    if len(name) <= 4:
+        return None
+    near = [
+        v
+        for v in model.publishers
+        if v != name
+        and "*" not in v
+        and abs(len(v) - len(name)) <= 2
+        and typos(v, name) <= MAX_TYPOS
+    ]
+    return near[0] if len(near) == 1 else None
+
+
 def _one_alternative(ref) -> bool:
     """Whether the condition names ``ref`` only on one side of an ``or``."""
-    text = ref.line.text.replace(",", "=")  # (the helm reads `,` as `=`: same offsets)
+    # (the helm reads `,` as `=`: same offsets; both readers cut a line at its `//`)
+    text = ref.line.text.split("//", 1)[0].replace(",", "=")
     start = text.find("=") + 1
     return start > 0 and ref.start in alternative_starts(text[start:], start)
 
