@@ -130,8 +130,15 @@ def check(ctx):
                 f"connects as `{reads[0]}` (its main passes that name to Run) and has no "
                 f"`ProcessConfig = {reads[0]}` block"
             )
+        if cat.app(program) is None and program.lower() not in cat.programs:
+            then = (
+                f": `{program}` is no MOOS-IvP or core MOOS program and no app of the linted "
+                "C++ (is it installed?); if it runs, it runs on its defaults"
+            )
+        else:
+            then = ": it runs on its defaults"
         yield ctx.report(
             run.name_span,
-            f"`{name}` is launched but {why}: it runs on its defaults",
+            f"`{name}` is launched but {why}{then}",
             line=run.param.line,
         )

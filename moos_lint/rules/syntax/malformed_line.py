@@ -2,7 +2,8 @@
 
 ## What it does
 Reports a line in a `.moos` file that MOOS cannot read as anything: it has no
-`=`, is not a `//` comment, not a block brace and not an nsplug directive.
+`key =` (a name before an `=`: a banner line of `=====` has none), is not a
+`//` comment, not a block brace and not an nsplug directive.
 
 ## Why is this bad?
 MOOS drops such a line without a word. It is usually a typo (`AppTick 4`,
