@@ -929,6 +929,94 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
     return f"enum_or_{number}:" + "|".join(dict.fromkeys(words))
 
 
+_ATOF_LOCAL = re.compile(
+    r"^(?:double|float|int|long)\s+(\w+)\s*=\s*ato[fil]\s*\(\s*(\w+)\.c_str\(\)\s*\)\s*;$"
+)
+_GUARD_NUMBER = re.compile(r"^!\s*isNumber\s*\(\s*(\w+)\s*\)$")
+_GUARD_BOUND = re.compile(r"^(\w+)\s*(<=|<|>=|>)\s*(-?\d+(?:\.\d*)?)$")
+_RETURN_FALSE = re.compile(r"^return\s*\(?\s*false\s*\)?\s*;$")
+
+
+def _unwrapped(text: str) -> str:
+    """``text`` without the parentheses around all of it."""
+    text = text.strip()
+    while text.startswith("(") and text.endswith(")"):
+        depth = 0
+        for i, ch in enumerate(text):
+            depth += {"(": 1, ")": -1}.get(ch, 0)
+            if depth == 0 and i < len(text) - 1:
+                return text
+        text = text[1:-1].strip()
+    return text
+
+
+def _alternatives(test: str) -> list[str]:
+    """``a || (b) || c`` split at its top-level ``||``."""
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(test):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and test.startswith("||", i):
+            parts.append(test[start:i])
+            start = i + 2
+    return [*parts, test[start:]]
+
+
+def _guard_form(lines: list[str], n: int, rest: str) -> str | None:
+    """The value form of a key's branch that rejects other values with a guard::
+
+        if(param == "period") {
+          double dval = atof(value.c_str());
+          if((dval <= 0) || (!isNumber(value)))
+            return(false);
+
+    ``number``, ``nonneg``, ``positive`` or ``range:[lo,hi)`` (a bound the guard rejects
+    beyond); None for any other shape (a guard without ``!isNumber`` lets words through
+    as 0, and is not read).
+    """
+    if rest.split("//", 1)[0].strip() not in (") {", "){"):
+        return None
+    code = [ln.split("//", 1)[0].strip() for ln in lines[n : n + 4]]
+    k, local, value = 0, None, None
+    m = _ATOF_LOCAL.match(code[0]) if code else None
+    if m:
+        local, value, k = m.group(1), m.group(2), 1
+    cond = _condition(code[k]) if k < len(code) else None
+    if cond is None or code[k].startswith("else"):
+        return None
+    test, after = cond
+    if not _RETURN_FALSE.match(after) and not (
+        not after and k + 1 < len(code) and _RETURN_FALSE.match(code[k + 1])
+    ):
+        return None
+    number, lo, hi = False, None, None
+    for atom in (_unwrapped(a) for a in _alternatives(test)):
+        g = _GUARD_NUMBER.match(atom)
+        if g:
+            if value not in (None, g.group(1)):
+                return None
+            value, number = g.group(1), True
+            continue
+        b = _GUARD_BOUND.match(atom)
+        if not b or local is None or b.group(1) != local:
+            return None
+        op, c = b.group(2), float(b.group(3))
+        if op in ("<", "<="):
+            if lo is not None:
+                return None
+            lo = (c, op == "<")  # the lowest value taken, and whether it is taken itself
+        else:
+            if hi is not None:
+                return None
+            hi = (c, op == ">")
+    if not number:
+        return None
+    if hi is None and lo in (None, (0.0, True), (0.0, False)):
+        return {None: "number", (0.0, True): "nonneg", (0.0, False): "positive"}[lo]
+    low = f"{'[' if lo[1] else '('}{lo[0]:g}" if lo else "("
+    high = f"{hi[0]:g}{']' if hi[1] else ')'}" if hi else ")"
+    return f"range:{low},{high}"
+
+
 def _forms(cf, src: str) -> dict[str, dict[str, str]]:
     """Keys whose value goes straight to an MBUtils setter that rejects other forms."""
     out: dict[str, dict[str, str]] = {}
@@ -958,6 +1046,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
             form = _inline_form(lines, n, rest)
         if form is None:
             form = _words_or_number(lines, n, rest)
+        if form is None:
+            form = _guard_form(lines, n, rest)
         if form is None:
             bad.add(key)
             continue

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from scripts.generate_catalogue import _words_or_number
+from scripts.generate_catalogue import _guard_form, _words_or_number
 
 RESET_MAX = """\
     else if(param == "reset_max") {
@@ -68,3 +68,54 @@ def test_any_other_shape_is_no_form(change):
     old, new = change
     assert old in RESET_MAX
     assert form_of(RESET_MAX.replace(old, new, 1)) is None
+
+
+def guard_form_of(text: str) -> str | None:
+    lines = text.splitlines()
+    return _guard_form(lines, 1, lines[0][lines[0].index('")') + 1 :])
+
+
+@pytest.mark.parametrize(
+    ("branch", "form"),
+    [
+        # BHV_PeriodicSurface's period: a number above 0
+        (
+            '  if(g_param == "period") {\n'
+            "    double dval = atof(g_val.c_str());\n"
+            "    if((dval <= 0) || (!isNumber(g_val)))\n"
+            "      return(false);\n",
+            "positive",
+        ),
+        # BHV_HeadingChange's heading_delta: 1 up to but not 360
+        (
+            '  if(param == "heading_delta") {\n'
+            "    double dval = atof(val.c_str());\n"
+            "    if((dval < 1) || (dval >= 360) || (!isNumber(val)))\n"
+            "      return(false);\n",
+            "range:[1,360)",
+        ),
+        # the test of the number first, on one line with its rejection
+        (
+            '  else if(param == "swing_time") {\n    if(!isNumber(val)) return(false);\n',
+            "number",
+        ),
+        # a guard without !isNumber lets a word through as 0: not read
+        (
+            '  if(param == "repeat") {\n'
+            "    int ival = atoi(val.c_str());\n"
+            "    if(ival < 0)\n"
+            "      return(false);\n",
+            None,
+        ),
+        # a bound on another variable than the value's: not read
+        (
+            '  if(param == "depth") {\n'
+            "    double dval = atof(val.c_str());\n"
+            "    if((m_max < 0) || (!isNumber(val)))\n"
+            "      return(false);\n",
+            None,
+        ),
+    ],
+)
+def test_guard_forms(branch, form):
+    assert guard_form_of(branch) == form

@@ -90,6 +90,8 @@ def form_text(kind: str) -> str:
     if kind in FORM_TEXT:
         return FORM_TEXT[kind]
     head, _, words = kind.partition(":")
+    if head == "range" and "," in words:
+        return f"a number in {words.replace(',', ', ')}"
     listed = " or ".join(f"`{w}`" for w in words.split("|") if w)
     if head == "enum" and listed:
         return f"one of {listed}"

@@ -16,6 +16,13 @@ as recorded in the catalogue with the source line that enforces it:
   units: `speed = 2m/s` is rejected); `setNonNegDoubleOnString` and
   `setUIntOnString` also reject negative values, `setPosDoubleOnString`
   rejects zero, `setPosUIntOnString` values below 1;
+- a number a behavior's `setParam` guards itself (`double dval =
+  atof(val.c_str()); if((dval < 1) || (dval >= 360) || (!isNumber(val)))
+  return(false);`): the PeriodicSurface behavior's `period` must be a number
+  above 0, the HeadingChange behavior's `heading_delta` lie in [1, 360), the
+  StationKeep behavior's `outer_radius` be above 0 (42 such keys in
+  MOOS-IvP); a guard without `!isNumber` lets a word through as 0, and is not
+  read;
 - a parameter the parser compares with a fixed set of words (any case),
   rejecting any other: `comms_policy` (every AppCasting app: `open`, `lean`,
   `dire`), `app_logging` (`true`, `log`, `file`, `off`), `deprecated_ok`
@@ -176,6 +183,17 @@ def problem(form: str, value: str) -> str | None:
     if form == "moos_double":
         if not _MOOS_DOUBLE.match(value):
             return "does not start with a digit or `-`"
+        return None
+    if form.startswith("range:"):
+        # a number within bounds: `range:[1,360)` takes 1 up to but not 360
+        if not is_number(value):
+            return "is not a number (digits, one `.`, a leading `-`)"
+        low, _, high = form[len("range:") :].partition(",")
+        v = _atof(value)
+        below = low[1:] and (v < float(low[1:]) or (low[0] == "(" and v == float(low[1:])))
+        above = high[:-1] and (v > float(high[:-1]) or (high[-1] == ")" and v == float(high[:-1])))
+        if below or above:
+            return f"is outside {low[0]}{low[1:] or '-∞'}, {high[:-1] or '∞'}{high[-1]}"
         return None
     if form in ("number", "nonneg", "positive", "uint", "posuint", "int"):
         if not is_number(value):
