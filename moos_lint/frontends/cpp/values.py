@@ -517,6 +517,21 @@ text = node_text
 
 
 _NMEA = re.compile(rb'"\$?(?:[A-Z]{2})?(?:' + "|".join(facts.NMEA_SENTENCES).encode() + rb')[",]')
+#: a literal that names a field of a ``KEY=value,...`` report (MOOS-IvP's
+#: ``tokStringParse(report, "HDG", ',', '=')``), not an NMEA sentence
+_KEY_OF_REPORT = re.compile(rb"tok(?:String|Double)Parse\s*\([^;]*?$")
+
+
+def _names_nmea(data: bytes) -> bool:
+    """Whether ``data`` names an NMEA 0183 sentence (``"$GPRMC"``, ``"HDT"``), a report's
+    ``"HDG"`` key aside."""
+    for m in _NMEA.finditer(data):
+        line_start = data.rfind(b"\n", 0, m.start()) + 1
+        if not _KEY_OF_REPORT.search(data, line_start, m.start()):
+            return True
+    return False
+
+
 _PASS_THROUGH = {
     "round",
     "floor",
@@ -542,7 +557,7 @@ class Folder:
         self.defines: dict[str, str] = {}
         self.nmea: set[str] = set()
         for pf in files:
-            if _NMEA.search(pf.data):
+            if _names_nmea(pf.data):
                 self.nmea.add(pf.path)
             for name, val in pf.defines:
                 self.defines[name] = val
