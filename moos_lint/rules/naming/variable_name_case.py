@@ -16,6 +16,9 @@ digits and `_`, wherever a configuration value names a variable:
   `left_context[...]`, uXMS `var` and many more (the full list is the table
   in `moos_lint/semantics/variables.py`).
 
+Each name is reported once per file, at its first place, with the number of
+other places in the file (and its includes) that use it.
+
 Wildcards (`*`, `?`) are accepted where the app accepts them (pLogger
 `WildCardPattern` / `WildCardOmitPattern`, pShare `output`). Elsewhere a
 wildcard is reported: uXMS, for example, registers `VAR = IMS_*` literally
@@ -102,7 +105,8 @@ def check(ctx):
         yield from cpp_check(ctx)
         return
     allow = [str(a) for a in ctx.options.get("allow", [])]
-    seen = set()
+    seen: set[tuple[int, str]] = set()
+    found: dict[str, list[tuple]] = {}  # name -> (ref, message, subject) at each place
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if bare is None:
@@ -124,6 +128,14 @@ def check(ctx):
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
         seen.add((ref.span.line, ref.name))
+        found.setdefault(ref.name, []).append((ref, message, subject))
+    for places in found.values():
+        # one finding per name, at its first place: a name misspelt once is misspelt at
+        # every use, and each line would say the same
+        ref, message, subject = places[0]
+        more = len({(r.span.path, r.span.line) for r, _, _ in places}) - 1
+        if more:
+            message += f"; the file uses it in {more} more place{'s' if more > 1 else ''}"
         yield ctx.report(ref.span, message, line=ref.line, subject=subject)
     if ctx.moos is not None:
         yield from _configured(ctx, allow, seen)
