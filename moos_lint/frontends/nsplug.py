@@ -827,6 +827,11 @@ class Preprocessor:
         if found is None:
             exp.incomplete = True
             message = f"included file `{target}` not found"
+            if "//" in target:
+                message += (
+                    ": nsplug takes the rest of the line as the path, the `//` comment "
+                    "included (put the comment on a line of its own)"
+                )
             twin = _case_twin(target, (top_dir, *self.include_paths, including_dir))
             if twin is not None:
                 message += (

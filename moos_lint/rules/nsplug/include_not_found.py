@@ -11,7 +11,9 @@ launch scripts beside the top-level file (`*.sh`, read as text, never run)
 hand nsplug with `--path=DIR` or `-p DIR`. When one of those folders holds the
 file under the same name in another case (`plug_v1_origin.moos` for
 `#include plug_V1_origin.moos`), the message says so: the mission then works
-on a case-insensitive file system (macOS's default) and fails on Linux.
+on a case-insensitive file system (macOS's default) and fails on Linux. A
+`// comment` behind the path is part of it for nsplug (Expander.cpp reads the
+rest of the line as the path, an `<tag>` aside), and the message says so.
 
 ## Why is this bad?
 nsplug stops with an error and writes no mission file, so the launch script
