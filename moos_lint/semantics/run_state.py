@@ -50,12 +50,8 @@ class RunMemos:
     mission_files: dict[str, list[str]] = field(default_factory=dict)
     #: the names of the C++ files and classes of the project: lower case -> as written
     repo_cpp_stems: dict[str, str] | None = None
-    #: the project's own ``BHV_*`` C++ files: class name, lower case -> their paths
-    repo_behavior_files: dict[str, list[str]] = field(default_factory=dict)
-    #: the folders of the project's copies of MOOS-IvP's ``BFactoryStatic.cpp`` (a helm
-    #: it builds itself, which makes the copies of the stock behaviors beside it)
-    repo_helm_factories: list[str] = field(default_factory=list)
-    #: behavior kind, lower case -> the keys the project's own source of it compares with
+    #: ``KIND@folder`` -> the keys the project's own copy of behavior KIND, beside a helm
+    #: it builds itself above that folder, compares with
     repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)
     #: program name -> whether the project's CMake builds a program of exactly that name
     built_programs: dict[str, bool] = field(default_factory=dict)

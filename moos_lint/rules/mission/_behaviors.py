@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import glob
 import os
 import re
 from typing import TYPE_CHECKING
@@ -37,13 +38,7 @@ def repo_classes(ctx: Context) -> dict[str, str]:
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
             if is_cpp(name):
-                stem = os.path.splitext(name)[0]
-                stems.add(stem)
-                if name == "BFactoryStatic.cpp":
-                    run.memos.repo_helm_factories.append(dirpath)
-                if stem.lower().startswith("bhv_"):
-                    own = run.memos.repo_behavior_files.setdefault(stem.lower(), [])
-                    own.append(os.path.join(dirpath, name))
+                stems.add(os.path.splitext(name)[0])
             if name == "CMakeLists.txt":
                 # the helm loads a behavior by its library's name (libBHV_X.so)
                 stems.update(_library_behaviors(os.path.join(dirpath, name)))
@@ -95,44 +90,57 @@ def _root(ctx: Context) -> str:
 _LITERAL = re.compile(rb'"([A-Za-z_][A-Za-z0-9_]*)"')
 
 
-def own_source_keys(ctx: Context, kind: str) -> frozenset[str]:
+def own_source_keys(ctx: Context, kind: str, bhv_path: str) -> frozenset[str]:
     """The keys (lower case) that the project's own copy of behavior ``kind`` may read:
-    every string literal of its C++ files named after the class (``BHV_AvoidCollision.cpp``
+    every string literal of its C++ file named after the class (``BHV_AvoidCollision.cpp``
     of a vendored older MOOS-IvP, whose ``setParam`` still takes ``active_grade``).
 
     Only a project that builds its own helm runs its copies of the stock behaviors: the
     helm makes a stock kind with its static factory before it looks for a library of that
     name (BehaviorSet.cpp), so a student's own ``BHV_ZigZag`` never replaces MOOS-IvP's.
-    Empty when the project builds no helm, or has no file of that name."""
-    low = kind.lower()
+    The helm is looked for as MOOS-IvP lays it out, a ``lib_helmivp/BFactoryStatic.cpp``
+    in a ``src`` (or ``ivp/src``) folder at or above the behavior file's, and the copy
+    beside it (``src/*/BHV_X.cpp``): a few look-ups, not a walk of the project (the
+    language server asks at every edit). Empty when there is no such helm or copy."""
     memo = ctx.run.memos.repo_behavior_keys
-    if low in memo:
-        return memo[low]
-    repo_classes(ctx)  # (fills the project's behavior files and helm factories)
+    key = f"{kind}@{os.path.dirname(os.path.abspath(bhv_path))}"
+    if key in memo:
+        return memo[key]
     keys: set[str] = set()
-    factories = ctx.run.memos.repo_helm_factories
-    for path in ctx.run.memos.repo_behavior_files.get(low, []):
-        if not any(_same_tree(os.path.dirname(path), f) for f in factories):
-            continue  # no helm of the project makes this copy
-        try:
-            with open(path, "rb") as fh:
-                data = fh.read(1024 * 1024)
-        except OSError:
-            continue
-        keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
-    memo[low] = found = frozenset(keys)
+    for src in _helm_sources(os.path.dirname(os.path.abspath(bhv_path))):
+        for path in glob.glob(os.path.join(glob.escape(src), "*", glob.escape(kind) + ".cpp")):
+            try:
+                with open(path, "rb") as fh:
+                    data = fh.read(1024 * 1024)
+            except OSError:
+                continue
+            keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
+    memo[key] = found = frozenset(keys)
     return found
 
 
-def _same_tree(folder: str, factory: str) -> bool:
-    """Whether a behavior's folder and a helm factory's folder are parts of one source
-    tree: their common folder is at most two levels above the behavior's
-    (``ivp/src/lib_behaviors-marine`` and ``ivp/src/lib_helmivp``)."""
-    try:
-        common = os.path.commonpath([folder, factory])
-    except ValueError:
-        return False
-    return len(os.path.relpath(folder, common).split(os.sep)) <= 2
+#: where a source tree keeps the helm's library, from a folder at or above a mission's
+_HELM_LIBRARY = (
+    "lib_helmivp",
+    os.path.join("src", "lib_helmivp"),
+    os.path.join("ivp", "src", "lib_helmivp"),
+)
+
+
+def _helm_sources(folder: str, levels: int = 6) -> list[str]:
+    """The source folders (the parents of ``lib_helmivp``) holding a copy of the helm's
+    factory of stock behaviors, at or above ``folder``."""
+    found: list[str] = []
+    here = folder
+    for _ in range(levels):
+        for lib in _HELM_LIBRARY:
+            if os.path.isfile(os.path.join(here, lib, "BFactoryStatic.cpp")):
+                found.append(os.path.dirname(os.path.join(here, lib)))
+        parent = os.path.dirname(here)
+        if parent == here:
+            break
+        here = parent
+    return found
 
 
 def lookup(ctx: Context, kind: str) -> tuple[BehaviorInfo | None, bool]:

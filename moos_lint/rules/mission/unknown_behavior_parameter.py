@@ -33,11 +33,12 @@ MOOS-IvP caveats, deliberately not reported:
 - behaviors of kinds the catalogue does not describe (the project's own
   behaviors, unless a catalogue file lists their parameters);
 - parameters holding an nsplug macro;
-- in a project that builds its own helm (a vendored, often older, MOOS-IvP
-  with its `BFactoryStatic.cpp`), a parameter that its own copy of a stock
-  behavior names (a C++ file named after the class, `BHV_AvoidCollision.cpp`,
-  that holds `"key"`): that helm runs its copies (`active_grade`, read by
-  MOOS-IvP 15.5's BHV_AvoidCollision). A project's own `BHV_ZigZag` without
+- in a project that builds its own helm (a vendored, often older, MOOS-IvP:
+  a `lib_helmivp/BFactoryStatic.cpp` in a `src` or `ivp/src` folder at or
+  above the behavior file's), a parameter that its own copy of a stock
+  behavior beside it names (`src/*/BHV_AvoidCollision.cpp` holding `"key"`):
+  that helm runs its copies (`active_grade`, read by MOOS-IvP 15.5's
+  BHV_AvoidCollision). A project's own `BHV_ZigZag` without
   its own helm is not: the helm makes stock kinds itself before it loads any
   library, so MOOS-IvP's BHV_ZigZag runs and judges the parameters.
 """
@@ -66,7 +67,7 @@ def check(ctx):
             key = p.lkey
             if not key or key in info.params or has_macro(p.key):
                 continue
-            if key in own_source_keys(ctx, bhv.kind.strip()):
+            if key in own_source_keys(ctx, bhv.kind.strip(), ctx.path):
                 continue  # the project's own copy of the behavior reads it
             close = suggestions(key, info.params)
             msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
