@@ -130,7 +130,7 @@ def check(ctx):
                 f"connects as `{reads[0]}` (its main passes that name to Run) and has no "
                 f"`ProcessConfig = {reads[0]}` block"
             )
-        if cat.app(program) is None and program.lower() not in cat.programs:
+        if cat.program_name(program) is None and cat.app(program) is None:
             then = (
                 f": `{program}` is no MOOS-IvP or core MOOS program and no app of the linted "
                 "C++ (is it installed?); if it runs, it runs on its defaults"

@@ -2,8 +2,9 @@
 
 ## What it does
 Reports an Antler `Run` line whose program is a program the app catalogue
-knows (a MOOS-IvP or core MOOS app, MOOSDB, pAntler, an app of a catalogue
-file or of the linted C++) written in another case: `Run = pHelmIvp`,
+knows (any program MOOS-IvP and the core MOOS it ships build, by their CMake
+files; an app of a catalogue file or of the linted C++) written in another
+case: `Run = pHelmIvp`,
 `Run = uMacView`, `Run = moosdb`. A program the project builds itself under
 that exact name (an `add_executable(iBlinkstick ...)` in one of its
 CMakeLists.txt files) is its own, and is left alone.
@@ -62,18 +63,18 @@ def check(ctx):
         program = run.program
         if not program or has_macro(program) or "/" in run.binary.replace("\\", "/"):
             continue  # a path names a file, not a program looked up on the PATH
-        known = cat.app(program) or cat.programs.get(program.lower())
-        if known is None or known.name == program or known.name.lower() != program.lower():
-            continue  # (an app may be filed under another name too: its folder's)
+        name = cat.program_name(program)
+        if name is None or name == program:
+            continue
         if _built_by_project(ctx, program):
             continue
         yield ctx.report(
             run.binary_span,
-            f"`{program}`: the program is `{known.name}`; pAntler starts it by the name "
+            f"`{program}`: the program is `{name}`; pAntler starts it by the name "
             "written here, which a case-insensitive file system (macOS's) finds and Linux "
             "does not: there the process never starts",
             line=run.param.line,
-            fix=Fix(f"respell as `{known.name}`", (Edit(run.binary_span, known.name),)),
+            fix=Fix(f"respell as `{name}`", (Edit(run.binary_span, name),)),
         )
 
 

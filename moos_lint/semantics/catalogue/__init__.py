@@ -161,6 +161,9 @@ class Catalogue:
         #: lists (lower case -> name): those MOOS-IvP's editor mode lists from MIT's other
         #: public trees (``editor_behaviors`` in ``stock.json``)
         self.outside_behaviors: dict[str, str] = {}
+        #: every program the stock trees build (lower case -> as named), apps with facts or
+        #: not (``executables`` in ``stock.json``: MOOS-IvP's and its core MOOS's CMake)
+        self.executables: dict[str, str] = {}
         self.generic_behavior_params: set[str] = set()
         self.source: dict[str, str] = {}
         #: what a lint run's catalogue was made from (the stock catalogue, each user
@@ -170,6 +173,14 @@ class Catalogue:
 
     def app(self, name: str) -> AppInfo | None:
         return self.apps.get(name.lower())
+
+    def program_name(self, program: str) -> str | None:
+        """The name, in its own case, of the program ``program`` names in any case: an app
+        or program of the catalogue, or a program the stock trees build; None if none."""
+        known = self.app(program) or self.programs.get(program.lower())
+        if known is not None and known.name.lower() == program.lower():
+            return known.name
+        return self.executables.get(program.lower())
 
     def behavior(self, kind: str) -> BehaviorInfo | None:
         return self.behaviors.get(kind.lower())
@@ -204,6 +215,7 @@ class Catalogue:
         c.programs = dict(self.programs)
         c.behaviors = dict(self.behaviors)
         c.outside_behaviors = dict(self.outside_behaviors)
+        c.executables = dict(self.executables)
         c.generic_behavior_params = set(self.generic_behavior_params)
         c.source = dict(self.source)
         return c
@@ -297,6 +309,8 @@ def stock() -> Catalogue:
         )
     for name in data.get("editor_behaviors", {}):
         cat.outside_behaviors[name.lower()] = name
+    for name in data.get("executables", []):
+        cat.executables[name.lower()] = name
     return cat
 
 
