@@ -124,25 +124,36 @@ def _because(v: Any) -> str:
     return f" ({v.explanation})" if v is not None and v.why else ""
 
 
+#: (published as, unit, sense of the value, a name's word enough, what it is, the rule)
+_SIGN_SLIPS = (
+    (
+        angles.is_yaw_var,
+        "rad",
+        "heading",
+        True,
+        "a heading turned into radians",
+        "yaw is −heading·π/180 (heading turns clockwise, yaw counter-clockwise)",
+    ),
+    (
+        angles.is_heading_var,
+        "deg",
+        "yaw",
+        False,  # a device's yaw may be about Z-down: only a yaw MOOS gives is one
+        "a yaw turned into degrees",
+        "heading is −yaw·180/π (yaw turns counter-clockwise, heading clockwise)",
+    ),
+)
+
+
 def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
-    for p, v in _valued(app, angles.is_yaw_var):
-        if v is None or v.unit != "rad" or v.sense != "heading":
-            continue
-        yield (
-            p.value.span,  # type: ignore[union-attr]
-            f"{_shown(p)} is a heading turned into radians without the minus sign"
-            f"{_because(v)}; yaw is −heading·π/180 (heading turns clockwise, yaw "
-            "counter-clockwise)",
-        )
-    for p, v in _valued(app, angles.is_heading_var):
-        if v is None or v.unit != "deg" or v.sense != "yaw" or v.hint:
-            continue
-        yield (
-            p.value.span,  # type: ignore[union-attr]
-            f"{_shown(p)} is a yaw turned into degrees without the minus sign"
-            f"{_because(v)}; heading is −yaw·180/π (yaw turns counter-clockwise, heading "
-            "clockwise)",
-        )
+    for published_as, unit, sense, hint_ok, what, rule in _SIGN_SLIPS:
+        for p, v in _valued(app, published_as):
+            if v is None or v.unit != unit or v.sense != sense or (v.hint and not hint_ok):
+                continue
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"{_shown(p)} is {what} without the minus sign{_because(v)}; {rule}",
+            )
 
 
 def heading_in_radians(app: AppModel) -> Iterator[Finding]:
