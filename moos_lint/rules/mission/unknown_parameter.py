@@ -63,7 +63,9 @@ MOOS-IvP caveats, deliberately not reported:
 - a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
   those from anywhere in the file with `GetValue`;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
-  or `/` (not-a-comment reports those);
+  or `/` (not-a-comment reports those); a key with a `[...]` part
+  (pMarineViewer's `left_context[return]`) is judged by the word before it, so
+  `left_contect[return]` is reported;
 - parameters handed to a library the app links: the catalogue counts every
   key the library's configuration functions compare against, so some
   misspellings that match another app's key go unnoticed;
@@ -77,8 +79,9 @@ MOOS-IvP caveats, deliberately not reported:
 
 import difflib
 import functools
+import re
 
-from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.files.diagnostics import Edit, Fix, Severity, Span
 from moos_lint.files.launch import scripts_beside
 from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, has_macro
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
@@ -89,6 +92,7 @@ from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_f
 #: included: `term_reporting = false` inside a block is read by every AppCasting app
 #: (AppCastingMOOSApp.cpp:349). global-key-in-block (R009) judges such lines.
 _FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
+_WORD = re.compile(r"[a-z_][a-z0-9_]*")
 
 
 def _programs(moos, cat) -> dict[str, str]:
@@ -175,15 +179,23 @@ def check(ctx):
             key = p.lkey
             if not key or app.reads(key) or has_macro(p.key) or key in _FILE_WIDE:
                 continue
-            if key.startswith(("#", "/", "[")) or "[" in key or "]" in key:
+            if key.startswith(("#", "/", "[")):
                 continue
-            close = suggestions(key, app.params)
+            word, span = key, p.key_span
+            if "[" in key or "]" in key:
+                # pMarineViewer's `left_context[return] = ...`: the word before `[` is
+                # the key the app compares (strBegins); a section name is no key
+                word = key.split("[", 1)[0].strip()
+                if not _WORD.fullmatch(word) or app.reads(word) or "]" not in key:
+                    continue
+                span = Span(span.path, span.line, span.col, span.line, span.col + len(word))
+            close = suggestions(word, app.params)
             msg = f"`{p.key.strip()}`: {app.name} does not read this parameter"
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
             if len(close) == 1:
-                fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
+                fix = Fix(f"respell as `{close[0]}`", (Edit(span, close[0]),))
             yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
     schema = text_format_schema()
     for block, tapp in text_blocks(ctx):
