@@ -734,14 +734,13 @@ def executables(src: str) -> list[str]:
     """Every program the tree's CMakeLists.txt files build (``add_executable``, names
     resolved through ``set()`` as the C++ front end reads them): the names a Run line may
     start, MOOS-IvP's and the core MOOS it ships, in their own case."""
-    from moos_lint.frontends.cpp.cmake import _executables
+    from moos_lint.frontends.cpp.cmake import executables_in
 
     names: set[str] = set()
     for here, dirs, files in os.walk(src):
         dirs[:] = sorted(d for d in dirs if not d.startswith(".") and d != "build")
         if "CMakeLists.txt" in files:
-            text = _read(os.path.join(here, "CMakeLists.txt"))
-            names.update(name for name, _srcs, _line in _executables(text))
+            names.update(executables_in(here))
     return sorted((n for n in names if re.fullmatch(r"[A-Za-z][\w.-]*", n)), key=str.lower)
 
 

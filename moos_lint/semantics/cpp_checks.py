@@ -13,7 +13,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.cpp import angle_exprs as angles
-from moos_lint.frontends.cpp.model import AppModel, Publication
+from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
@@ -287,37 +287,41 @@ def geodesy_argument_order(app: AppModel) -> Iterator[Finding]:
     """Arguments of CMOOSGeodesy's conversions whose names say the opposite of the
     parameter they are given to: one finding per pair (latitude and longitude, north and
     east)."""
+    for call in app.geodesy_calls:
+        if call.own_signature is None:  # (else the repository's own function: its order)
+            yield from geodesy_call_findings(call)
+
+
+def geodesy_call_findings(call: GeodesyCall) -> Iterator[Finding]:
+    """What :func:`geodesy_argument_order` says of one call, by CMOOSGeodesy's order."""
     from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
 
     words = {"lat": "latitude", "lon": "longitude", "north": "north", "east": "east"}
-    for call in app.geodesy_calls:
-        if call.own_signature is not None:
-            continue  # the repository's own function of that name: its order is its own
-        roles = GEODESY_ARGUMENTS[call.function]
-        said = [axis_of(text) for text, _ in call.arguments]
-        signature = f"`{call.function}({', '.join(words[r] for r in roles)})`"
-        for pair in (("lat", "lon"), ("north", "east")):
-            i, j = sorted(roles.index(r) for r in pair)
-            if said[i] == said[j]:
-                continue  # named alike, or neither named: not a swap we can read
-            wrong = [k for k in (i, j) if said[k] == roles[i + j - k]]
-            if len(wrong) == 2:
-                a, b = call.arguments[i][1], call.arguments[j][1]
-                yield (
-                    Span(a.path, a.line, a.col, b.end_line, b.end_col),
-                    f"`{_flat(call.arguments[i][0])}` and `{_flat(call.arguments[j][0])}` are "
-                    f"swapped: {signature} takes the {words[roles[i]]} before the "
-                    f"{words[roles[j]]}",
-                )
-            elif wrong:
-                k = wrong[0]
-                text, span = call.arguments[k]
-                meant = roles[i + j - k]  # what its name says, the other argument's role
-                yield (
-                    span,
-                    f"`{_flat(text)}` is given as the {words[roles[k]]} of {signature}, but "
-                    f"its name says {words[meant]}, which goes in argument {i + j - k + 1}",
-                )
+    roles = GEODESY_ARGUMENTS[call.function]
+    said = [axis_of(text) for text, _ in call.arguments]
+    signature = f"`{call.function}({', '.join(words[r] for r in roles)})`"
+    for pair in (("lat", "lon"), ("north", "east")):
+        i, j = sorted(roles.index(r) for r in pair)
+        if said[i] == said[j]:
+            continue  # named alike, or neither named: not a swap we can read
+        wrong = [k for k in (i, j) if said[k] == roles[i + j - k]]
+        if len(wrong) == 2:
+            a, b = call.arguments[i][1], call.arguments[j][1]
+            yield (
+                Span(a.path, a.line, a.col, b.end_line, b.end_col),
+                f"`{_flat(call.arguments[i][0])}` and `{_flat(call.arguments[j][0])}` are "
+                f"swapped: {signature} takes the {words[roles[i]]} before the "
+                f"{words[roles[j]]}",
+            )
+        elif wrong:
+            k = wrong[0]
+            text, span = call.arguments[k]
+            meant = roles[i + j - k]  # what its name says, the other argument's role
+            yield (
+                span,
+                f"`{_flat(text)}` is given as the {words[roles[k]]} of {signature}, but "
+                f"its name says {words[meant]}, which goes in argument {i + j - k + 1}",
+            )
 
 
 def differs_from_geodesy(function: str, parameters: list[str]) -> bool:

@@ -71,11 +71,9 @@ def _own_geodesy(apps: list[AppModel], paths: list[str]) -> None:
     calls that would be reported."""
     from moos_lint.files.source import read_bytes
     from moos_lint.frontends.cpp.declarations import parameter_names
-    from moos_lint.semantics.cpp_checks import differs_from_geodesy, geodesy_argument_order
+    from moos_lint.semantics.cpp_checks import differs_from_geodesy, geodesy_call_findings
 
-    suspects = [
-        g for a in apps for g in a.geodesy_calls if any(geodesy_argument_order(_only(a, g)))
-    ]
+    suspects = [g for a in apps for g in a.geodesy_calls if any(geodesy_call_findings(g))]
     if not suspects:
         return
     declared = parameter_names({g.function for g in suspects}, paths, read_bytes)
@@ -83,8 +81,3 @@ def _own_geodesy(apps: list[AppModel], paths: list[str]) -> None:
         own = [p for p in declared.get(g.function, []) if differs_from_geodesy(g.function, p)]
         if own:
             g.own_signature = tuple(own[0])
-
-
-def _only(app: AppModel, call) -> AppModel:
-    """An app model holding one geodesy call, to ask whether it would be reported."""
-    return AppModel(folder=app.folder, files=[CppFile(path=call.span.path, geodesy_calls=[call])])

@@ -173,6 +173,15 @@ def strip_parens(n: Any) -> Any:
     return n
 
 
+def nodes_under(n: Any) -> Iterator[Any]:
+    """``n`` and every named node under it (none for ``None``)."""
+    stack = [n] if n is not None else []
+    while stack:
+        x = stack.pop()
+        yield x
+        stack.extend(x.named_children)
+
+
 def target_name(n: Any) -> str:
     """``m_x`` for ``m_x``, ``this->m_x``, ``&m_x`` or ``m_x[3]`` declarators and left sides."""
     n = strip_parens(n)
@@ -254,15 +263,11 @@ def _returns_its_parameter(fn_def: Any) -> bool:
     if len(params) != 1 or "string" not in params[0][0] or not params[0][1]:
         return False
     name = params[0][1]
-    body = fn_def.child_by_field_name("body")
-    stack = [body] if body is not None else []
-    while stack:
-        n = stack.pop()
+    for n in nodes_under(fn_def.child_by_field_name("body")):
         if n.type == "return_statement" and n.named_children:
             value = strip_parens(n.named_children[0])
             if value is not None and value.type == "identifier" and text(value) == name:
                 return True
-        stack.extend(n.named_children)
     return False
 
 
@@ -1157,12 +1162,7 @@ class Extractor:
 
     def _mail_handling(self, fn: Any) -> None:
         """Prefix matches on the key, and whether messages go to code we cannot follow."""
-        body = fn.child_by_field_name("body")
-        if body is None:
-            return
-        stack = [body]
-        while stack:
-            n = stack.pop()
+        for n in nodes_under(fn.child_by_field_name("body")):
             if n.type == "call_expression":
                 f = n.child_by_field_name("function")
                 args = n.child_by_field_name("arguments").named_children
@@ -1198,7 +1198,6 @@ class Extractor:
                     right = strip_parens(n.child_by_field_name("right"))
                     if left is not None and right is not None:
                         self._key_against(left, right)
-            stack.extend(n.named_children)
 
     def _wrapper_calls(self) -> None:
         """Calls of the folder's own functions that publish their arguments
@@ -1209,9 +1208,7 @@ class Extractor:
         if not any(name.encode() + b"(" in data for name in wrappers):
             return
         found = []
-        stack = [self.pf.tree.root_node]
-        while stack:
-            n = stack.pop()
+        for n in nodes_under(self.pf.tree.root_node):
             if n.type == "call_expression":
                 fn = n.child_by_field_name("function")
                 spec = wrappers.get(callee(fn)) if fn is not None else None
@@ -1220,7 +1217,6 @@ class Extractor:
                     argv = [a for a in args.named_children if a.type != "comment"]
                     if len(argv) > max(spec) and not in_if0(n):
                         found.append((n.start_byte, n, args, argv[spec[0]], argv[spec[1]], spec[1]))
-            stack.extend(n.named_children)
         for _at, n, args, name_arg, value_arg, index in sorted(found, key=lambda f: f[0]):
             self._publish(n, args, name_arg, value_arg, index)
 
@@ -1228,12 +1224,7 @@ class Extractor:
         """Configuration keys compared with a name held elsewhere (``param == m_x_key`` of
         a member set to a literal in the constructor, ``MOOSStrCmp(param, KEY_X)`` of a
         ``#define``): the key, when it can be read."""
-        body = fn.child_by_field_name("body")
-        if body is None:
-            return
-        stack = [body]
-        while stack:
-            n = stack.pop()
+        for n in nodes_under(fn.child_by_field_name("body")):
             pair = None
             if n.type == "binary_expression":
                 op = n.child_by_field_name("operator")
@@ -1249,7 +1240,6 @@ class Extractor:
                 a, b = strip_parens(pair[0]), strip_parens(pair[1])
                 if a is not None and b is not None:
                     self._config_against(a, b)
-            stack.extend(n.named_children)
 
     def _config_against(self, a: Any, b: Any) -> None:
         for subject, other in ((a, b), (b, a)):

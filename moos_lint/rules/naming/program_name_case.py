@@ -39,7 +39,6 @@ None.
 from __future__ import annotations
 
 import os
-import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
@@ -83,18 +82,13 @@ def _built_by_project(ctx, program: str) -> bool:
     memo = ctx.run.memos.built_programs
     if program in memo:
         return memo[program]
-    pattern = re.compile(rb"add_executable\s*\(\s*" + re.escape(program.encode()) + rb"[\s)]")
+    from moos_lint.frontends.cpp.cmake import executables_in
+
     found = False
     for dirpath, dirs, files in os.walk(os.path.abspath(ctx.settings.root)):
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
-        if "CMakeLists.txt" in files:
-            try:
-                with open(os.path.join(dirpath, "CMakeLists.txt"), "rb") as fh:
-                    data = fh.read(256 * 1024)
-            except OSError:
-                continue
-            if program.encode() in data and pattern.search(data):
-                found = True
-                break
+        if "CMakeLists.txt" in files and program in executables_in(dirpath):
+            found = True
+            break
     memo[program] = found
     return found
