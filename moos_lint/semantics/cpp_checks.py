@@ -13,6 +13,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.cpp import angle_exprs as angles
+from moos_lint.frontends.cpp import facts, values
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
@@ -182,6 +183,36 @@ def angle_from_east(app: AppModel) -> Iterator[Finding]:
             p.value.span,  # type: ignore[union-attr]
             f"{_shown(p)} is an angle from east, counter-clockwise{because}: a heading is "
             "clockwise from north: atan2(Δx, Δy), or 90° − the math angle",
+        )
+
+
+#: how to turn each speed unit into metres per second, as a message says it
+_TO_MPS = {
+    "kn": "multiply by 0.514444 (1852 m / 3600 s)",
+    "km/h": "divide by 3.6",
+    "mph": "multiply by 0.44704",
+}
+
+
+def speed_in_knots(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_speed_var):
+        if v is None:
+            continue
+        unit, why = v.unit, list(v.why)
+        if unit not in facts.SPEED_UNITS:
+            if v.nmea_speed is None or not (v.unit is None or (v.unit == "deg" and v.hint)):
+                continue
+            unit, sentence = v.nmea_speed
+            field = f"a field of NMEA's {sentence} sentence, in {values.speed_label(unit)},"
+            why = [
+                w.replace("; NMEA 0183 angles are degrees", "").replace("an NMEA field", field)
+                for w in why
+            ]
+        because = f" ({'; '.join(why[-3:])})" if why else ""
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published in {values.speed_label(unit)}{because}: MOOS speeds "
+            f"are metres per second; {_TO_MPS[unit]}",
         )
 
 

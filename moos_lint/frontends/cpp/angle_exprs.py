@@ -63,6 +63,19 @@ def is_latlong_var(name: str) -> bool:
     return last_word(name) in ("LAT", "LON", "LONG", "LATITUDE", "LONGITUDE")
 
 
+#: the last words of a speed (``NAV_SPEED``, ``GPS_SOG``, ``WATER_STW``)
+SPEED_WORDS = ("SPEED", "SOG", "STW")
+#: words that name a speed's unit in a variable's own name (``SPEED_KNOTS``)
+SPEED_UNIT_WORDS = {"KNOTS", "KNOT", "KTS", "KN", "KMH", "KPH", "KMPH", "MPH"}
+
+
+def is_speed_var(name: str) -> bool:
+    """A speed in metres per second by its name: ``NAV_SPEED``, ``GPS_SOG``; not one whose
+    name gives it another unit (``SPEED_KNOTS``: non-si-unit's business)."""
+    ws = [w.upper() for w in words(name)]
+    return bool(ws) and ws[-1] in SPEED_WORDS and not SPEED_UNIT_WORDS & set(ws)
+
+
 def is_other_angle_var(name: str) -> bool:
     return axis_word(name) in ("ROLL", "PITCH")
 

@@ -80,6 +80,24 @@ NMEA_SENTENCES = (
     "THS",
 )
 
+#: Speeds in another unit than metres per second -> metres per second in one of them: the
+#: knot is one nautical mile (1852 m) an hour, the mile an hour 1609.344 m an hour (both
+#: exact by definition). MOOS speeds are metres per second (the MOOS conventions, SI units;
+#: uSimMarine's NAV_SPEED, the helm's DESIRED_SPEED).
+SPEED_UNITS: dict[str, float] = {"kn": 1852.0 / 3600.0, "km/h": 1.0 / 3.6, "mph": 0.44704}
+
+#: NMEA 0183 sentences whose speed fields are knots or km/h, never metres per second:
+#: sentence -> {field index, the sentence's name at 0: unit}; a field of the sentence not
+#: listed is knots. RMC: 7 speed over ground, knots. VTG: 5 knots, 7 km/h. VHW: 5 speed
+#: through water in knots, 7 in km/h. VBW: speeds in knots. (A sentence split without its
+#: name shifts each index down by one: 4 and 6 are then VTG's knots and km/h.)
+NMEA_SPEED_FIELDS: dict[str, dict[int, str]] = {
+    "RMC": {},
+    "VTG": {4: "kn", 5: "kn", 6: "km/h", 7: "km/h"},
+    "VHW": {4: "kn", 5: "kn", 6: "km/h", 7: "km/h"},
+    "VBW": {},
+}
+
 #: Library getters whose angle is known: name -> (unit, sense, range, what it is). MAVLink's
 #: ATTITUDE message gives "the attitude in the aeronautical frame (right-handed, Z-down,
 #: Y-right, X-front, ZYX, intrinsic)", yaw in rad, -pi..+pi (mavlink message_definitions

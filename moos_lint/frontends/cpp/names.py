@@ -23,6 +23,9 @@ _VALUED_WORDS = {
     "LATITUDE",
     "LONGITUDE",
     "RATE",
+    "SPEED",
+    "SOG",
+    "STW",
 }
 _RATE_WORDS = {"GYRO", "GYR", "RATE"}
 #: the bytes of a C++ word (``\w`` on bytes), for scans that walk a word byte by byte

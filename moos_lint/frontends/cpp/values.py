@@ -40,7 +40,7 @@ _EPS = 1e-3
 class AbstractValue:
     """What is known of a value. ``None`` fields are unknown."""
 
-    unit: str | None = None  # "deg" | "rad" | "deg/s" | "rad/s"
+    unit: str | None = None  # "deg" | "rad" | "deg/s" | "rad/s" | "m/s" | "kn" | "km/h" | "mph"
     sense: str | None = None  # "heading" (clockwise from north) | "yaw" | "math"
     range: Range | None = None  # in the value's own unit
     sign: str | None = None  # "down" (a depth) | "up" (a Z)
@@ -55,6 +55,8 @@ class AbstractValue:
     #: for a variable passed to a function defined elsewhere (``pending`` is ``name#index``):
     #: its value before the call, kept when that function turns out not to set it
     fallback: Any = None
+    #: a field of an NMEA speed sentence: (its unit if it is read as a speed, the sentence)
+    nmea_speed: tuple[str, str] | None = None
 
     @property
     def known(self) -> bool:
@@ -109,7 +111,33 @@ def settle(v: AbstractValue, why: str = "") -> AbstractValue:
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("scale", s)))
     rng = (v.range[0] * s, v.range[1] * s) if v.range else None
-    return replace(v, unit=None, range=rng, sense=None, hint=False, why=())
+    unit = _speed_scaled(v, s)
+    out = replace(v, unit=unit, range=rng, sense=None, hint=False, why=(), nmea_speed=None)
+    if unit in facts.SPEED_UNITS and why:
+        out = out.because(f"{why} converts to {speed_label(unit)}")
+    return out
+
+
+def _speed_scaled(v: AbstractValue, s: float) -> str | None:
+    """The unit of a speed ``v`` times ``s``: a conversion to metres per second from the
+    unit it has (``kts * 0.514444``, ``kmh / 3.6``), or from metres per second (or a value
+    of unknown unit) to knots or miles an hour by their factors (``* 1.94384``); any other
+    factor leaves no unit known. Only from metres per second is ``* 3.6`` km/h."""
+    unit = v.unit if v.unit in facts.SPEED_UNITS or v.unit == "m/s" else None
+    if unit is None and v.nmea_speed is not None:
+        unit = v.nmea_speed[0]
+    if unit in facts.SPEED_UNITS and _near(s, facts.SPEED_UNITS[unit]):
+        return "m/s"
+    if unit in (None, "m/s") and v.unit in (None, "m/s"):
+        for to, factor in facts.SPEED_UNITS.items():
+            if (to != "km/h" or unit == "m/s") and _near(s, 1.0 / factor):
+                return to
+    return None
+
+
+def _near(a: float, b: float) -> bool:
+    """Equal to the precision a conversion factor is written with (1.944, 0.5144)."""
+    return abs(a - b) < 5e-4 * abs(b)
 
 
 def neg(v: AbstractValue) -> AbstractValue:
@@ -198,6 +226,7 @@ def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
         why=a.why if a.unit == b.unit else (),
         hint=a.hint and b.hint,
         origin=origin,
+        nmea_speed=a.nmea_speed if a.nmea_speed == b.nmea_speed else None,
     )
 
 
@@ -384,7 +413,43 @@ def name_hint(name: str) -> AbstractValue:
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a NED z, positive down",))
     if _DEPTH_NAME.search(base) and not re.search(r"(?:^|_)z(?:_|$)", base, re.I):
         return AbstractValue(sign="down", hint=True, why=(f"`{name}` is a depth",))
+    speed = speed_name_unit(base)
+    if speed is not None:
+        return AbstractValue(unit=speed, hint=True, why=(why,))
     return UNKNOWN
+
+
+#: the words of a name that give a speed's unit (``speed_kts``, ``dSpeedKnots``, ``sog_kmh``)
+_SPEED_NAME_WORDS = {
+    "kts": "kn",
+    "knot": "kn",
+    "knots": "kn",
+    "kmh": "km/h",
+    "kph": "km/h",
+    "kmph": "km/h",
+    "mph": "mph",
+}
+#: ``kn`` alone may be anything (a gain); beside one of these words it is knots (``sog_kn``)
+_SPEED_WORDS = {"speed", "spd", "sog", "stw", "vel", "velocity"}
+_NAME_WORDS = re.compile(r"[A-Z]+(?![a-z])|[A-Z]?[a-z]+|\d+")
+
+
+def speed_name_unit(name: str) -> str | None:
+    """The speed unit other than metres per second that a name says (``kts`` → knots)."""
+    words = [w.lower() for w in _NAME_WORDS.findall(name.rsplit("::", 1)[-1])]
+    for w in words:
+        unit = _SPEED_NAME_WORDS.get(w)
+        if unit is not None:
+            return unit
+    if "kn" in words and _SPEED_WORDS & set(words):
+        return "kn"
+    return None
+
+
+def _speed_named(key: str, v: AbstractValue) -> bool:
+    """Whether ``key``'s name gives the unit of a speed whose value says none but an
+    NMEA field's angle hint (``double dbl_kts = atof(flds[7].c_str())``)."""
+    return v.hint and v.unit == "deg" and v.nmea_speed is None and speed_name_unit(key) is not None
 
 
 def comment_hint(line: str) -> AbstractValue:
@@ -823,6 +888,8 @@ class Evaluator:
             or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
         ):
             v = settle(v, f"{_clip(text(n))} at {_at(pf, n)}")
+        elif v.const is None and s != 1.0 and v.pending is None and _speed_scaled(v, s):
+            v = settle(v, f"`{_clip(text(n))}` at {_at(pf, n)}")
         return v
 
     def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -934,6 +1001,7 @@ class Evaluator:
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
         if name in facts.TEXT_TO_NUMBER:
+            speed = _nmea_speed(pf, n, args)
             if pf.path in self.folder.nmea:
                 return AbstractValue(
                     unit="deg",
@@ -941,6 +1009,11 @@ class Evaluator:
                     why=(
                         f"an NMEA field read with {name}() at {at}; NMEA 0183 angles are degrees",
                     ),
+                    nmea_speed=speed,
+                )
+            if speed is not None:
+                return AbstractValue(
+                    nmea_speed=speed, why=(f"an NMEA field read with {name}() at {at}",)
                 )
             return UNKNOWN
         if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
@@ -1148,7 +1221,9 @@ class Evaluator:
                 a = _as_compound(a, key)  # ``yaw = yaw + 2*M_PI`` as ``yaw += 2*M_PI``
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
-                if (v.pending is not None or _parsed_text(a.rhs, v)) and name_hint(key).known:
+                if (
+                    v.pending is not None or _parsed_text(a.rhs, v) or _speed_named(key, v)
+                ) and name_hint(key).known:
                     # an opaque getter, or a number parsed from a device's text, kept in a
                     # variable that names its unit (``double dfHeading = atof(field)``)
                     v = name_hint(key)
@@ -1316,6 +1391,8 @@ class Evaluator:
                 if a.op != "=":
                     continue
                 v = settle(self._eval(pf, a.rhs, depth + 1))
+                if _speed_named(key, v):
+                    v = name_hint(key)
                 if v.known and v.pending is None and a.fn is not None:
                     v = v.because(f"`{key}` set at {place(pf.path, a.node.start_point[0] + 1)}")
                 yield v
@@ -1354,6 +1431,51 @@ def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractVa
         return replace(out, why=(*v.why, *why)) if v.why or why else out
     out = replace(v, scale=v.scale * c)
     return replace(out, why=(*out.why, *why)) if why else out
+
+
+_SPEED_SENTENCE = re.compile(rb"RMC|VTG|VHW|VBW")
+_SENTENCES = "|".join((*facts.NMEA_SENTENCES, "VHW", "VBW"))
+#: a sentence named in a condition (``flds[0] == "$GPRMC"``, ``key == "VTG"``)
+_SENTENCE_IN_TEXT = re.compile(r"\b(?:\$?[A-Z]{2})?(" + _SENTENCES + r")\b")
+#: a sentence in a function's name, in capitals (``handleMsgGPRMC``, ``parseVTG``)
+_SENTENCE_IN_NAME = re.compile(_SENTENCES)
+_FIELD_INDEX = re.compile(r"\[\s*(\d+)\s*\]|[(,]\s*(\d+)\s*[,)]")
+
+
+def _nmea_speed(pf: Any, call: Any, args: list[Any]) -> tuple[str, str] | None:
+    """For a number parsed from text where the code handles one NMEA speed sentence (an
+    ``if`` on the sentence's name, or a function named for it: ``handleGPRMC``), the unit
+    the field has when it is a speed, and the sentence; None elsewhere."""
+    if not _SPEED_SENTENCE.search(pf.data):
+        return None
+    sentence = None
+    p, child = call.parent, call
+    while p is not None and p.type != "function_definition":
+        if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
+            found = set(_SENTENCE_IN_TEXT.findall(text(p.child_by_field_name("condition"))))
+            if found:
+                sentence = found.pop() if len(found) == 1 else None
+                break
+        p, child = p.parent, p
+    else:
+        if p is not None:
+            found = set(_SENTENCE_IN_NAME.findall(_function_short_name(p)))
+            sentence = found.pop() if len(found) == 1 else None
+    fields_of = facts.NMEA_SPEED_FIELDS.get(sentence or "")
+    if fields_of is None:
+        return None
+    index = None
+    for m in _FIELD_INDEX.finditer(text(args[0]) if args else ""):
+        index = int(m.group(1) or m.group(2))
+        break
+    if fields_of and index not in fields_of:
+        return None  # VTG, VHW: a field that is not a speed we know the unit of
+    unit = fields_of.get(index, "kn") if index is not None else "kn"
+    return unit, str(sentence)
+
+
+def speed_label(unit: str) -> str:
+    return {"kn": "knots", "km/h": "km/h", "mph": "miles an hour", "m/s": "m/s"}.get(unit, unit)
 
 
 def _parsed_text(rhs: Any, v: AbstractValue) -> bool:
