@@ -52,6 +52,29 @@ def looks_commented(text: str) -> bool:
     return text.startswith("#") or (text.startswith("/") and not text.startswith("//"))
 
 
+def block_comments(lines: list[Line]) -> list[tuple[int, int, int]]:
+    """The C block comments of a file, which MOOS does not know: for each ``/*`` line (with
+    no ``*/`` after it) that a later ``*/`` line closes, (the opening line's index, the
+    closing line's index, the block depth at the opening line: 0 at the top of the file)."""
+    out: list[tuple[int, int, int]] = []
+    start: int | None = None
+    depth = opened_at = 0
+    for i, line in enumerate(lines):
+        text = strip_comment(line.text).strip()
+        if start is None:
+            if text.startswith("/*") and "*/" not in text[2:]:
+                start, opened_at = i, depth
+        elif "*/" in text:
+            out.append((start, i, opened_at))
+            start = None
+            continue
+        if text == "{":
+            depth += 1
+        elif text == "}":
+            depth = max(0, depth - 1)
+    return out
+
+
 def split_param(line: Line) -> Param | None:
     """``key = value`` on one line, or None when the line has no ``=``."""
     text = strip_comment(line.text)
@@ -148,7 +171,12 @@ def parse_moos(expansion: Expansion) -> MoosFile:
                 current = None
             continue
         if stripped.startswith("{"):
-            if current is not None:
+            if strip_comment(stripped)[1:].strip():
+                # `{ configuration block`: MOOS opens a block only right after a header;
+                # elsewhere this is a line it drops
+                mf.malformed.append(line)
+                continue
+            if current is not None and current.header is not None:
                 mf.unclosed_blocks.append(current)
             current = Block(name="", header=None, open=line)
             mf.orphan_blocks.append(current)
@@ -163,8 +191,10 @@ def parse_moos(expansion: Expansion) -> MoosFile:
         if header is not None:
             name, brace = header
             if current is not None:
-                # MOOS reads this header as a parameter of the block left open.
-                mf.unclosed_blocks.append(current)
+                # MOOS reads this header as a parameter of the block left open (a block
+                # without a header of its own is no app's: orphan-block reports it)
+                if current.header is not None:
+                    mf.unclosed_blocks.append(current)
                 current = None
             block = Block(name=name, header=line, brace_on_header=brace)
             block.name_start = line.text.find(name[:1], param.value_start) if name else 0
@@ -187,7 +217,7 @@ def parse_moos(expansion: Expansion) -> MoosFile:
             mf.malformed.append(line)
     if pending is not None and pending.header is not None:
         mf.headers_without_block.append(pending.header)
-    if current is not None:
+    if current is not None and current.header is not None:
         mf.unclosed_blocks.append(current)
     return mf
 

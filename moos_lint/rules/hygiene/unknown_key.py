@@ -62,7 +62,11 @@ MOOS-IvP caveats, deliberately not reported:
 - keys holding an unexpanded `$(X)` macro, `define:` lines and `[section]`
   keys;
 - a key starting with `#` or a single `/` while the not-a-comment rule (R007)
-  is enabled: that rule reports the line already (`#Run = pX`).
+  is enabled: that rule reports the line already (`#Run = pX`);
+- a key between the markers of a C block comment (`/*` and `*/` on lines of
+  their own): its author meant it switched off, and MOOS ignores an unknown
+  top-of-file key anyway; malformed-line names the markers when the lines
+  between them are read.
 
 A top-of-file key that an app of the linted repository reads with
 `m_MissionReader.GetValue("KEY", value)` is known.
@@ -84,7 +88,7 @@ import re
 from collections.abc import Sequence
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
-from moos_lint.frontends.parsers.moos import looks_commented
+from moos_lint.frontends.parsers.moos import block_comments, looks_commented
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
@@ -178,8 +182,11 @@ def check(ctx):
         globals_known += list(text_format_schema().moos_globals)
     fragment = ctx.unit.path in ctx.run.included_elsewhere
     if not fragment and (moos.is_mission or moos.blocks):
+        # lines between `/*` and `*/` were meant to be off: malformed-line names the markers
+        off = {id(line) for s, e, _ in block_comments(moos.lines) for line in moos.lines[s:e]}
         for p in moos.globals:
-            yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS)
+            if id(p.line) not in off:
+                yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS)
     for block in moos.antler_blocks:
         known = [*ANTLER_KEYS, *APP_KEYS]
         for run in (r for r in moos.runs if r.param.block is block):

@@ -11,10 +11,12 @@ a missing `=`) or a leftover note, and whatever the author meant it to set is
 not set. The markers of a C block comment (`/*` alone on its line, `*/`)
 around lines MOOS reads are named as such: MOOS has only `//` comments, so the
 lines between the two markers, meant to be switched off, are read (a block
-comment around lines MOOS drops anyway, a one-line `/* ... */`, is harmless
-and not reported). A merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as
-such: the file was committed in the middle of a merge, and MOOS reads the lines
-of both sides, the later line of a key winning or both kept.
+comment around lines MOOS drops anyway, or around top-of-file keys that
+neither MOOS nor its apps read there, such as timer events kept below the
+blocks, and a one-line `/* ... */` are harmless and not reported). A
+merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as such:
+the file was committed in the middle of a merge, and MOOS reads the lines of
+both sides, the later line of a key winning or both kept.
 
 ## Example
 ```moos
@@ -39,8 +41,8 @@ None.
 """
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.frontends.parsers.moos import looks_commented, strip_comment
-from moos_lint.frontends.parsers.nodes import conflict_marker
+from moos_lint.frontends.parsers.moos import block_comments, looks_commented, strip_comment
+from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS, conflict_marker
 from moos_lint.rules.kit.declare import Scope, rule
 
 
@@ -76,23 +78,27 @@ def check(ctx):
 
 def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
     """The ids of the lines that open (``/*`` with no ``*/`` after it) a C block comment
-    around at least one line MOOS reads (a ``key = value``, a brace), and of the lines
-    that close one (``*/``), with whether it is around such a line."""
+    around at least one line MOOS reads, and of the lines that close one (``*/``), with
+    whether it is around such a line. MOOS reads a ``key = value`` inside a block and a
+    brace; at the top of the file, only the keys MOOS and its apps read there (an
+    ``event = ...`` between the markers, below the blocks, is dropped anyway)."""
     opens: set[int] = set()
     closes: dict[int, bool] = {}
-    start = None
-    reads = False
-    for line in lines:
-        text = strip_comment(line.text).strip()
-        if start is None:
-            if text.startswith("/*") and "*/" not in text[2:]:
-                start, reads = line, False
-            continue
-        if "*/" in text:
+    known = {k.lower() for k in MOOS_GLOBALS}
+    for start, end, depth in block_comments(lines):
+        reads = False
+        for line in lines[start + 1 : end]:
+            text = strip_comment(line.text).strip()
+            if text in ("{", "}"):
+                reads = True
+            elif "=" in text:
+                key = text.split("=", 1)[0].strip().lower()
+                reads = depth > 0 or key in known
+            depth += text == "{"
+            depth -= text == "}"
             if reads:
-                opens.add(id(start))
-            closes[id(line)] = reads
-            start = None
-        elif "=" in text or text in ("{", "}"):
-            reads = True
+                break
+        if reads:
+            opens.add(id(lines[start]))
+        closes[id(lines[end])] = reads
     return opens, closes

@@ -2,7 +2,11 @@
 
 ## What it does
 Reports a block that is not closed by a line starting with `}` before the
-next block header or the end of the file.
+next block header or the end of the file. A `{` with no header of its own is
+no app's block and MOOS reads nothing into it: orphan-block reports that one.
+A line that starts with `{` and goes on (`{ configuration block`) opens a
+block only right after a header; elsewhere it is a line MOOS drops
+(malformed-line).
 
 ## Why is this bad?
 MOOS reads on past the end of the intended block: the next
