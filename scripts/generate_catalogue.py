@@ -20,6 +20,7 @@ entry so changed lists the correction in its ``corrected`` field.
 from __future__ import annotations
 
 import argparse
+import glob
 import json
 import os
 import re
@@ -580,14 +581,28 @@ def _read(path: str) -> str:
         return ""
 
 
-def generate(src: str, commit: str = "", repository: str = "") -> dict:
+def _moos_core(src: str) -> str:
+    """The core MOOS folder of a moos-ivp tree: where its ``MOOS`` link points (``MOOS_Jul2724``
+    today, ``MOOS_Jul0519`` in 2019), else the newest ``MOOS_*`` folder."""
+    link = os.path.join(src, "MOOS")
+    if os.path.isdir(link):
+        return os.path.realpath(link)
+    found = sorted(glob.glob(os.path.join(src, "MOOS_*")))
+    return found[-1] if found else os.path.join(src, "MOOS_Jul2724")
+
+
+def generate(src: str, commit: str = "", repository: str = "", strict: bool = True) -> dict:
+    """The catalogue of the moos-ivp tree ``src``. ``strict``: a correction or extra fact for
+    an app the tree does not have is an error (for the tree the catalogue is made from; an
+    older release read for its retired keys lacks some of today's apps)."""
     src = os.path.abspath(src)
     sha, date = _git_commit(src)
     commit = commit or sha
     ivp = os.path.join(src, "ivp", "src")
+    moos = _moos_core(src)
     core = [
-        os.path.join(src, "MOOS_Jul2724", "MOOSEssentials", "Essentials"),
-        os.path.join(src, "MOOS_Jul2724", "MOOSCore", "Core", "MOOSDB"),
+        os.path.join(moos, "MOOSEssentials", "Essentials"),
+        os.path.join(moos, "MOOSCore", "Core", "MOOSDB"),
     ]
     folders = sorted(
         os.path.join(ivp, d) for d in os.listdir(ivp) if os.path.isdir(os.path.join(ivp, d))
@@ -654,6 +669,8 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
         apps.setdefault(name, dict(entry))
     for name, corr in CORRECTIONS.items():
         if name not in apps:
+            if not strict:
+                continue
             raise SystemExit(f"a correction names an app the sources do not have: {name}")
         if name in apps:
             entry = apps[name]

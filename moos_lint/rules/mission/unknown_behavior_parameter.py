@@ -9,6 +9,13 @@ generic keys: `name`, `pwt`, `condition`, `endflag`, `updates`, ...;
 them: in lower case, with a leading `_` ignored. A close known parameter is
 suggested, and when there is exactly one it is offered as a fix.
 
+A parameter an older MOOS-IvP's behavior read is reported as such, with no
+respelling (`activation_dist`, which BHV_AvoidObstacle read in 2015): the
+mission was likely written for that release. Today's helm rejects it all the
+same. The older keys are those of MOOS-IvP of June 2015, August 2019 and
+August 2022 that the behavior read and that the behavior files of that tree
+set (`retired.json`, written by `scripts/retired_keys.py` from their sources).
+
 ## Why is this bad?
 The helm is strict: an unknown parameter fails the behavior ("Line N: ..."),
 the behavior set is rejected and the helm posts `IVPHELM_STATE = MALCONFIG`.
@@ -48,6 +55,7 @@ from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission.unknown_parameter import suggestions
+from moos_lint.semantics.catalogue import catalogue_for
 
 
 @rule(
@@ -69,6 +77,15 @@ def check(ctx):
                 continue
             if key in own_source_keys(ctx, bhv.kind.strip(), ctx.path):
                 continue  # the project's own copy of the behavior reads it
+            old = catalogue_for(ctx.run).retired_key("behaviors", info.name, key)
+            if old is not None:
+                msg = (
+                    f"`{p.key.strip()}`: {info.name} no longer has this parameter (MOOS-IvP of "
+                    f"{old} read it; today's helm rejects the behavior file): written for an "
+                    "older release?"
+                )
+                yield ctx.report(p.key_span, msg, line=p.line)
+                continue
             close = suggestions(key, info.params)
             msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             fix = None
