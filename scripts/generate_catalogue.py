@@ -832,6 +832,30 @@ _INLINE = re.compile(
 )
 
 
+#: ``m_desired_depth = vclip_min(dval, 0);`` (MBUtils: vclip, vclip_min, vclip_max)
+_CLIP = re.compile(
+    r"^\s*[\w.>-]+\s*=\s*vclip(_min|_max)?\s*\(\s*\w+\s*,\s*(-?[\d.]+)\s*"
+    r"(?:,\s*(-?[\d.]+)\s*)?\)\s*;"
+)
+
+
+def _clipped(lines: list[str], n: int) -> str | None:
+    """``clip:LO,HI`` (a bound empty when there is none) for a key whose branch, checked a
+    number inline, keeps it clipped to bounds: ``m_desired_depth = vclip_min(dval, 0)``
+    on the line after the key's. A value beyond a bound is taken as the bound."""
+    m = _CLIP.match(lines[n]) if n < len(lines) else None
+    if m is None:
+        return None
+    which, a, b = m.group(1), float(m.group(2)), m.group(3)
+    if which is None and b is not None:
+        return f"clip:{a:g},{float(b):g}"
+    if which == "_min" and b is None:
+        return f"clip:{a:g},"
+    if which == "_max" and b is None:
+        return f"clip:,{a:g}"
+    return None
+
+
 def _inline_form(lines: list[str], n: int, rest: str) -> str | None:
     """The value form a key's branch checks inline (``number``, ``nonneg``, ``positive``)."""
     text = rest.split("//", 1)[0]
@@ -1076,6 +1100,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
                 break
         if form is None:
             form = _inline_form(lines, n, rest)
+            if form is not None:
+                form = _clipped(lines, n) or form
         if form is None:
             form = _words_or_number(lines, n, rest)
         if form is None:

@@ -92,6 +92,15 @@ def form_text(kind: str) -> str:
     head, _, words = kind.partition(":")
     if head == "range" and "," in words:
         return f"a number in {words.replace(',', ', ')}"
+    if head == "clip" and "," in words:
+        low, _, high = words.partition(",")
+        parts = [f"one below {low} is taken as {low}"] if low else []
+        parts += (
+            [f"one above {high} as {high}" if low else f"one above {high} is taken as {high}"]
+            if high
+            else []
+        )
+        return "a number; " + ", ".join(parts)
     listed = " or ".join(f"`{w}`" for w in words.split("|") if w)
     if head == "enum" and listed:
         return f"one of {listed}"

@@ -23,6 +23,11 @@ as recorded in the catalogue with the source line that enforces it:
   StationKeep behavior's `outer_radius` be above 0 (42 such keys in
   MOOS-IvP); a guard without `!isNumber` lets a word through as 0, and is not
   read;
+- a number a behavior clips to bounds without a word (`m_desired_depth =
+  vclip_min(dval, 0)`): the ConstantDepth behavior's `depth = -10` runs at the
+  surface, taken as 0 (a depth is positive down; the conventions' Z is its
+  negative), the ConstantSpeed behavior's `speed = -1` as 0, a `summitdelta`
+  above 100 as 100 (17 such keys in MOOS-IvP);
 - a parameter the parser compares with a fixed set of words (any case),
   rejecting any other: `comms_policy` (every AppCasting app: `open`, `lean`,
   `dire`), `app_logging` (`true`, `log`, `file`, `off`), `deprecated_ok`
@@ -139,6 +144,17 @@ _GEOMETRY_WHAT = {
 }
 
 
+def clipped(form: str, value: str) -> tuple[str, float] | None:
+    """For a number beyond a bound of a ``clip:LO,HI`` form: why, and the bound taken."""
+    low, _, high = form[len("clip:") :].partition(",")
+    v = _atof(value)
+    if low and v < float(low):
+        return f"is below {float(low):g}", float(low)
+    if high and v > float(high):
+        return f"is above {float(high):g}", float(high)
+    return None
+
+
 def problem(form: str, value: str) -> str | None:
     """Why ``value`` does not have the ``form``, or None."""
     if is_geometry_form(form):
@@ -184,6 +200,12 @@ def problem(form: str, value: str) -> str | None:
         if not _MOOS_DOUBLE.match(value):
             return "does not start with a digit or `-`"
         return None
+    if form.startswith("clip:"):
+        # a number, taken as the nearest bound when beyond one: `clip:0,` clips at 0
+        if not is_number(value):
+            return "is not a number (digits, one `.`, a leading `-`)"
+        got = clipped(form, value)
+        return None if got is None else got[0]
     if form.startswith("range:"):
         # a number within bounds: `range:[1,360)` takes 1 up to but not 360
         if not is_number(value):
@@ -327,6 +349,11 @@ def _judge(ctx, p, value, got, owner):
         return
     where = f" ({at})" if at else ""
     effect = "ignores it and keeps its default" if form == "moos_double" else "rejects it"
+    got = clipped(form, value) if form.startswith("clip:") and is_number(value) else None
+    if got is not None:
+        effect = f"takes it as {got[1]:g}, silently"
+        if "depth" in p.key.lower() and _atof(value) < 0:
+            effect += " (a depth is positive down: a negative one is a Z)"
     yield ctx.report(
         p.value_span, f"`{p.key.strip()} = {value}` {why}: {owner} {effect}{where}", line=p.line
     )
