@@ -47,8 +47,8 @@ def test_the_shipped_catalogue_answers_in_any_case():
     cat = stock()
     assert cat.retired_key("behaviors", "bhv_avoidobstacle", "Activation_Dist") == "June 2015"
     assert cat.retired_key("behaviors", "BHV_AvoidObstacle", "poly") is None
-    assert cat.retired_key("apps", "uFldNodeComms", "VERBOSE") == "August 2022"
-    assert cat.copy().retired_key("apps", "uFldNodeComms", "verbose") == "August 2022"
+    assert cat.retired_key("apps", "uFldNodeComms", "VERBOSE") == "August 2023"
+    assert cat.copy().retired_key("apps", "uQueryDB", "max_time") == "January 2021"
     # a key the old app compared but no old mission set (a field of a value): left out
     assert cat.retired_key("apps", "uFldNodeBroker", "ip") is None
 

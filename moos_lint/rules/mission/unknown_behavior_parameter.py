@@ -9,12 +9,13 @@ generic keys: `name`, `pwt`, `condition`, `endflag`, `updates`, ...;
 them: in lower case, with a leading `_` ignored. A close known parameter is
 suggested, and when there is exactly one it is offered as a fix.
 
-A parameter an older MOOS-IvP's behavior read is reported as such, with no
-respelling (`activation_dist`, which BHV_AvoidObstacle read in 2015): the
-mission was likely written for that release. Today's helm rejects it all the
-same. The older keys are those of MOOS-IvP of June 2015, August 2019 and
-August 2022 that the behavior read and that the behavior files of that tree
-set (`retired.json`, written by `scripts/retired_keys.py` from their sources).
+A parameter an older MOOS-IvP's behavior read is reported as such
+(`activation_dist`, which BHV_AvoidObstacle read in 2015), with a respelling
+only when one is close: the mission was likely written for that release.
+Today's helm rejects it all the same. The older keys are those that MOOS-IvP of
+June 2012, June 2015, June 2017, August 2019, January 2021, August 2022 and
+August 2023 read and that the behavior files of that tree set
+(`retired.json`, written by `scripts/retired_keys.py` from their sources).
 
 ## Why is this bad?
 The helm is strict: an unknown parameter fails the behavior ("Line N: ..."),
@@ -78,16 +79,14 @@ def check(ctx):
             if key in own_source_keys(ctx, bhv.kind.strip(), ctx.path):
                 continue  # the project's own copy of the behavior reads it
             old = catalogue_for(ctx.run).retired_key("behaviors", info.name, key)
+            close = suggestions(key, info.params)
+            msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             if old is not None:
                 msg = (
                     f"`{p.key.strip()}`: {info.name} no longer has this parameter (MOOS-IvP of "
-                    f"{old} read it; today's helm rejects the behavior file): written for an "
-                    "older release?"
+                    f"{old} read it, and today's helm rejects the behavior file: written for an "
+                    "older release?)"
                 )
-                yield ctx.report(p.key_span, msg, line=p.line)
-                continue
-            close = suggestions(key, info.params)
-            msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"

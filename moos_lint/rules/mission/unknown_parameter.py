@@ -17,11 +17,12 @@ Every app also accepts the keys its base classes read (`AppTick`,
 `CommsTick`, `MaxAppTick`, `IterateMode`, the `moos_*` flags, and
 AppCasting's `comms_policy`, `app_logging`, `term_report_interval`, ...).
 
-A key an older MOOS-IvP's app read (uFldNodeComms's `verbose` in 2022) is
-reported as such, with no respelling: the mission was likely written for that
-release, and today's app ignores the line. The older keys are those of
-MOOS-IvP of June 2015, August 2019 and August 2022 that the app read and that
-the missions of that tree set (`retired.json`, written by
+A key an older MOOS-IvP's app read (uQueryDB's `max_time`, which became
+`halt_max_time` in 2021) is reported as such, with the respelling when one is
+close: the mission was likely written for that release, and today's app
+ignores the line. The older keys are those that MOOS-IvP of June 2012, June
+2015, June 2017, August 2019, January 2021, August 2022 and August 2023 read
+and that the missions of that tree set (`retired.json`, written by
 `scripts/retired_keys.py` from their sources).
 
 ## Why is this bad?
@@ -197,15 +198,13 @@ def check(ctx):
                     continue
                 span = Span(span.path, span.line, span.col, span.line, span.col + len(word))
             old = catalogue_for(ctx.run).retired_key("apps", app.name, word)
+            close = suggestions(word, app.params)
+            msg = f"`{p.key.strip()}`: {app.name} does not read this parameter"
             if old is not None:
                 msg = (
                     f"`{p.key.strip()}`: {app.name} no longer reads this parameter (MOOS-IvP of "
-                    f"{old} did): written for an older release?"
+                    f"{old} did: written for an older release?)"
                 )
-                yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line)
-                continue
-            close = suggestions(word, app.params)
-            msg = f"`{p.key.strip()}`: {app.name} does not read this parameter"
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
