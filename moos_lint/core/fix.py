@@ -199,10 +199,12 @@ class OverlayReader:
         self.docs = docs
 
     def __call__(self, path: Path) -> SourceFile | ReadProblem:
+        return self.in_memory(path) or read_source(path)
+
+    def in_memory(self, path: Path) -> SourceFile | ReadProblem | None:
+        """The fixed text of a file being fixed; None for any other file."""
         doc = self.docs.get(os.path.normpath(os.path.abspath(path)))
-        if doc is None:
-            return read_source(path)
-        return decode(doc.encode(), path)
+        return decode(doc.encode(), path) if doc is not None else None
 
 
 @dataclass

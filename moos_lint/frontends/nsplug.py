@@ -322,6 +322,12 @@ class FileCache:
         """Every file this cache was asked for (read or not), here or in worker processes."""
         return {*self._cache, *self.read_elsewhere}
 
+    def in_memory(self, path: str) -> SourceFile | ReadProblem | None:
+        """The text of ``path`` when the reader holds it in memory (a file being fixed),
+        which differs from the file on disk; None for a file read from disk."""
+        held = getattr(self._reader, "in_memory", None)
+        return held(Path(path)) if held is not None else None
+
 
 def _case_twin(name: str, folders: Sequence[str]) -> str | None:
     """The file name, as it is written on disk, that ``name`` names in one of ``folders``

@@ -11,7 +11,7 @@ import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from moos_lint.files.diagnostics import Span
+from moos_lint.files.diagnostics import Edit, Fix, Span
 from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp import facts, values
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
@@ -214,6 +214,22 @@ def speed_in_knots(app: AppModel) -> Iterator[Finding]:
             f"{_shown(p)} is published in {values.speed_label(unit)}{because}: MOOS speeds "
             f"are metres per second; {_TO_MPS[unit]}",
         )
+
+
+def decimal_comma(app: AppModel) -> Iterator[tuple[Span, str, Fix]]:
+    for d in app.decimal_commas:
+        number = d.written.replace(",", ".", 1)
+        yield (
+            d.span,
+            f"`{d.written}` is not a number in C++: the comma operator evaluates "
+            f"`{_clip_text(d.kept)}` and throws the digits after the comma away; "
+            f"write `{number}`",
+            Fix(f"write `{number}`", (Edit(d.span, number),)),
+        )
+
+
+def _clip_text(s: str, n: int = 60) -> str:
+    return s if len(s) <= n else s[: n - 1] + "…"
 
 
 def depth_z_sign(app: AppModel) -> Iterator[Finding]:

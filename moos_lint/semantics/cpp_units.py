@@ -29,8 +29,11 @@ def build_cpp_units(
     ``parsed`` (folder -> (relevant sources, extracted files)) is what worker
     processes already read and parsed (:mod:`moos_lint.speed.parallel`).
     """
+    in_memory = run.preprocessor.cache.in_memory
+    if parsed is not None and any(in_memory(p) is not None for p in paths):
+        parsed = None  # files being fixed: the workers read the disk's text
     if parsed is None:
-        sources = read_relevant(paths)
+        sources = read_relevant(paths, in_memory)
         run.sources.update(sources)
         apps = {a.folder: a for a in build_apps(sources)}
     else:

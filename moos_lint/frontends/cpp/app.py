@@ -6,7 +6,7 @@ import os
 import re
 import threading
 from collections import OrderedDict
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 from moos_lint.files.diagnostics import Span
@@ -17,15 +17,23 @@ from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
 
-def read_relevant(paths: Iterable[str]) -> dict[str, SourceFile]:
+def read_relevant(
+    paths: Iterable[str], in_memory: Callable[[str], object] | None = None
+) -> dict[str, SourceFile]:
     """The C++ files that can be read and mention the MOOS API.
 
     The prefilter runs on the bytes, before decoding: most C++ files of a
     repository never mention the MOOS API and are never decoded. (The pattern is
-    ASCII, so bytes and the re-encoded text match alike.)
+    ASCII, so bytes and the re-encoded text match alike.) ``in_memory``: the text of
+    a file held in memory instead of the disk's (a file ``--fix`` is fixing), or None.
     """
     out: dict[str, SourceFile] = {}
     for path in paths:
+        held = in_memory(path) if in_memory is not None else None
+        if held is not None:
+            if isinstance(held, SourceFile) and mentions_moos(held.text.encode("utf-8")):
+                out[path] = held
+            continue
         data = read_bytes(path)
         if not isinstance(data, bytes):
             continue

@@ -20,6 +20,7 @@ from moos_lint.frontends.cpp.model import (
     ConfigParam,
     CppClass,
     CppFile,
+    DecimalComma,
     GeodesyCall,
     IOUse,
     MailKey,
@@ -915,6 +916,8 @@ class Extractor:
                 self._config_handling(fn)
         for call, fn, args in pf.calls:
             self._call(call, fn, args)
+        if _DECIMAL_COMMA.search(pf.data):
+            self._decimal_commas()
         if self.tables.notify_wrappers:
             self._wrapper_calls()
         for cmp, left, right in pf.cmps:
@@ -1022,6 +1025,40 @@ class Extractor:
         argv = [a for a in args.named_children if a.type != "comment"]
         if len(argv) >= 3 and text(argv[0]).strip() in NOTIFY_KINDS and not in_if0(node):
             self._publish(node, args, argv[1], argv[2], 2)
+
+    def _decimal_commas(self) -> None:
+        """``x = y * 0,514444;``: a comma expression whose left side ends in a number and
+        whose right side is digits, written together: a decimal comma."""
+        pf = self.pf
+        for n in nodes_under(pf.tree.root_node):
+            if n.type != "comma_expression":
+                continue
+            left, right = n.child_by_field_name("left"), n.child_by_field_name("right")
+            if left is None or right is None or right.type != "number_literal":
+                continue
+            if left.type == "comma_expression" or (n.parent and n.parent.type == n.type):
+                continue  # a list of values (a decimal comma makes one comma)
+            if (
+                left.type == "binary_expression"
+                and text(left.child_by_field_name("operator")) == "<<"
+            ):
+                continue  # Eigen's comma initialiser: `m << 0,0;`
+            last = _last_leaf(left)
+            if last.type != "number_literal" or pf.data[last.end_byte : right.start_byte] != b",":
+                continue
+            if not (text(right).isdigit() and text(last).replace(".", "").isdigit()):
+                continue
+            if in_if0(n):
+                continue
+            span = pf.spans.of(last)
+            end = pf.spans.of(right)
+            self.out.decimal_commas.append(
+                DecimalComma(
+                    f"{text(last)},{text(right)}",
+                    Span(span.path, span.line, span.col, end.end_line, end.end_col),
+                    " ".join(text(left).split()),
+                )
+            )
 
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)
@@ -1332,6 +1369,16 @@ def _in_condition(n: Any) -> bool:
             return True
         p = p.parent
     return False
+
+
+#: a digit, a comma and a digit with no space between: where a decimal comma may be
+_DECIMAL_COMMA = re.compile(rb"[0-9],[0-9]")
+
+
+def _last_leaf(n: Any) -> Any:
+    while n.child_count:
+        n = n.children[-1]
+    return n
 
 
 def in_if0(n: Any) -> bool:

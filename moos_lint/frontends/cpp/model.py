@@ -128,6 +128,17 @@ class IOUse:
 
 
 @dataclass(slots=True)
+class DecimalComma:
+    """A number written with a decimal comma (``0,514444``), which C++ reads as the comma
+    operator: the expression up to the comma, then the digits after it, thrown away."""
+
+    written: str  # ``0,514444``
+    span: Span  # the number as written
+    #: the expression the comma operator evaluates and keeps
+    kept: str
+
+
+@dataclass(slots=True)
 class GeodesyCall:
     """A call of one of CMOOSGeodesy's conversions (``facts.GEODESY_ARGUMENTS``), with its
     arguments as written."""
@@ -163,6 +174,7 @@ class CppFile:
     consumed_degrees: list[tuple[str, Span, str]] = field(default_factory=list)
     run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
     geodesy_calls: list[GeodesyCall] = field(default_factory=list)
+    decimal_commas: list[DecimalComma] = field(default_factory=list)
     has_main: bool = False
     has_on_new_mail: bool = False
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)
@@ -212,6 +224,10 @@ class AppModel:
     @property
     def geodesy_calls(self) -> list[GeodesyCall]:
         return [g for f in self.files for g in f.geodesy_calls]
+
+    @property
+    def decimal_commas(self) -> list[DecimalComma]:
+        return [d for f in self.files for d in f.decimal_commas]
 
     @property
     def mail_keys(self) -> list[MailKey]:

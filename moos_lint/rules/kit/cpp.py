@@ -13,5 +13,5 @@ def cpp_findings(ctx: Any, check: Callable[..., Any], **kw: Any) -> Iterator[Dia
     app = ctx.unit.cpp
     if app is None:
         return
-    for span, message in check(app, **kw):
-        yield ctx.report(span, message)
+    for span, message, *fix in check(app, **kw):
+        yield ctx.report(span, message, fix=fix[0] if fix else None)
