@@ -916,8 +916,7 @@ class Extractor:
                 self._config_handling(fn)
         for call, fn, args in pf.calls:
             self._call(call, fn, args)
-        if _DECIMAL_COMMA.search(pf.data):
-            self._decimal_commas()
+        self._decimal_commas()
         if self.tables.notify_wrappers:
             self._wrapper_calls()
         for cmp, left, right in pf.cmps:
@@ -1030,8 +1029,13 @@ class Extractor:
         """``x = y * 0,514444;``: a comma expression whose left side ends in a number and
         whose right side is digits, written together: a decimal comma."""
         pf = self.pf
-        for n in nodes_under(pf.tree.root_node):
-            if n.type != "comma_expression":
+        root = pf.tree.root_node
+        for m in _DECIMAL_COMMA.finditer(pf.data):
+            # the comma's own node: only a comma expression's is looked at (arrays and
+            # arguments, most digit-comma-digit in C++, are not)
+            comma = root.descendant_for_byte_range(m.start() + 1, m.start() + 2)
+            n = comma.parent if comma is not None else None
+            if n is None or n.type != "comma_expression":
                 continue
             left, right = n.child_by_field_name("left"), n.child_by_field_name("right")
             if left is None or right is None or right.type != "number_literal":
