@@ -17,7 +17,7 @@ from moos_lint.commands.lsp.catalogue import Catalogue, Component, ParamInfo, fr
 from moos_lint.commands.lsp.documents import (
     DiskReads,
     DocumentStore,
-    memory_reader,
+    MemoryReader,
     path_to_uri,
     uri_to_path,
 )
@@ -179,9 +179,9 @@ def test_memory_reader_prefers_editor_text_but_keeps_disk_facts(tmp_path: Path):
     f = tmp_path / "a.moos"
     f.write_bytes("name = caf\xe9\n".encode("latin-1"))
     seen: set[str] = set()
-    same = memory_reader({str(f): "name = café\n"}, seen)(f)
+    same = MemoryReader({str(f): "name = café\n"}, seen)(f)
     assert isinstance(same, SourceFile) and same.encoding == "latin-1"
-    edited = memory_reader({str(f): "name = cafe\n"})(f)
+    edited = MemoryReader({str(f): "name = cafe\n"})(f)
     assert edited.text == "name = cafe\n" and edited.encoding == "utf-8"
     assert seen == {str(f)}
 
@@ -312,3 +312,22 @@ def test_the_rules_app_catalogue_plugs_in():
     assert cat.app("PHELMIVP").param("Behaviors").name == "behaviors"
     assert cat.behavior("bhv_loiter").param("polygon") is not None
     assert from_app_catalogue(object()).empty
+
+
+def test_a_cpp_document_is_linted_as_the_editor_holds_it(tmp_path: Path):
+    """An unsaved edit of a C++ file is what the diagnostics show, not the file on disk."""
+    app = tmp_path / "pTrack"
+    app.mkdir()
+    path = app / "Track.cpp"
+    saved = (
+        '#include "MOOS/libMOOS/MOOSLib.h"\n'
+        "class Track : public CMOOSApp {\n public:\n  bool Iterate();\n  double m_kts;\n};\n"
+        'bool Track::Iterate()\n{\n  Notify("TRACK_SPEED", m_kts * 0.514444);\n'
+        "  return true;\n}\n"
+    )
+    path.write_text(saved)
+    edited = saved.replace("m_kts * 0.514444", "m_kts")
+    codes = lambda result: [f.diagnostic.code for f in result.findings]  # noqa: E731
+    assert "C010" not in codes(analyse(str(path), {str(path): saved}))
+    assert "C010" in codes(analyse(str(path), {str(path): edited}))
+    assert path.read_text() == saved

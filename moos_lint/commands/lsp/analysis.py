@@ -18,7 +18,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from moos_lint.commands.lsp.documents import DiskReads, memory_reader, norm
+from moos_lint.commands.lsp.documents import DiskReads, MemoryReader, norm
 from moos_lint.core.config import ConfigError, Settings, resolve_settings
 from moos_lint.core.engine import Unit, lint_files
 from moos_lint.files.diagnostics import Diagnostic, IncludeSite, Span
@@ -236,7 +236,7 @@ def analyse(
             return True  # a C++ app reports in any of its files
         return is_bhv and unit.moos is not None and unit.moos.is_mission
 
-    reader = FileCache(reader=memory_reader(texts, seen, _DISK.read), store=_EXPANSIONS)
+    reader = FileCache(reader=MemoryReader(texts, seen, _DISK.read), store=_EXPANSIONS)
     result = lint_files(files, settings, cache=reader, checked=can_report_here, stop=stop)
     out.reads = seen | {path}
     for unit in result.units:

@@ -94,31 +94,37 @@ class DiskReads:
         return src
 
 
-def memory_reader(
-    texts: dict[str, str],
-    seen: set[str] | None = None,
-    disk: Callable[[Path], SourceFile | ReadProblem] = read_source,
-) -> Callable[[Path], SourceFile | ReadProblem]:
+class MemoryReader:
     """A FileCache reader: ``texts`` (path -> editor text) first, then the disk.
 
     Every path asked for is added to ``seen``. A document whose text equals the
     file on disk is served from the disk read, which keeps what only the bytes
-    tell (the encoding, a byte-order mark).
+    tell (the encoding, a byte-order mark). :meth:`in_memory` answers for the
+    documents whose text differs from the disk's (the C++ reader asks it).
     """
 
-    def read(path: Path) -> SourceFile | ReadProblem:
-        key = norm(path)
-        if seen is not None:
-            seen.add(key)
-        text = texts.get(key)
-        if text is None:
-            return disk(path)
-        on_disk = disk(path)
-        if isinstance(on_disk, SourceFile) and on_disk.text == text:
-            return on_disk
-        return decode(text.encode("utf-8", "surrogatepass"), path)
+    def __init__(
+        self,
+        texts: dict[str, str],
+        seen: set[str] | None = None,
+        disk: Callable[[Path], SourceFile | ReadProblem] = read_source,
+    ) -> None:
+        self.texts, self.seen, self.disk = texts, seen, disk
 
-    return read
+    def __call__(self, path: Path) -> SourceFile | ReadProblem:
+        return self.in_memory(path) or self.disk(path)
+
+    def in_memory(self, path: Path) -> SourceFile | ReadProblem | None:
+        key = norm(path)
+        if self.seen is not None:
+            self.seen.add(key)
+        text = self.texts.get(key)
+        if text is None:
+            return None
+        on_disk = self.disk(path)
+        if isinstance(on_disk, SourceFile) and on_disk.text == text:
+            return None
+        return decode(text.encode("utf-8", "surrogatepass"), path)
 
 
 class DocumentStore:
