@@ -1209,6 +1209,16 @@ def _app_entry(m: AppModel, src: str, by_folder: dict, lib_folder: dict) -> dict
     return entry
 
 
+def write_json(data: dict, output: str) -> None:
+    """``data`` as the catalogue files are written, to ``output`` (``-``: standard output)."""
+    text = json.dumps(data, indent=1, sort_keys=False) + "\n"
+    if output == "-":
+        sys.stdout.write(text)
+    else:
+        with open(output, "w", encoding="utf-8") as fh:
+            fh.write(text)
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python scripts/generate_catalogue.py")
     ap.add_argument("src", help="a moos-ivp work tree")
@@ -1220,12 +1230,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{args.src}: not a moos-ivp work tree (no ivp/src)", file=sys.stderr)
         return 2
     data = generate(args.src, args.commit, args.repository)
-    text = json.dumps(data, indent=1, sort_keys=False) + "\n"
-    if args.output == "-":
-        sys.stdout.write(text)
-    else:
-        with open(args.output, "w", encoding="utf-8") as fh:
-            fh.write(text)
+    write_json(data, args.output)
     return 0
 
 

@@ -28,7 +28,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from generate_catalogue import generate
+from generate_catalogue import generate, write_json
 
 
 def _keys(entry: dict) -> set[str]:
@@ -121,12 +121,7 @@ def main(argv: list[str] | None = None) -> int:
                 used[kind].setdefault(name, set()).update(keys)
     data = {"source": {"repository": args.repository, "releases": releases}}
     data.update(retired(stock, olds, used))
-    text = json.dumps(data, indent=1, sort_keys=False) + "\n"
-    if args.output == "-":
-        sys.stdout.write(text)
-    else:
-        with open(args.output, "w", encoding="utf-8") as fh:
-            fh.write(text)
+    write_json(data, args.output)
     return 0
 
 

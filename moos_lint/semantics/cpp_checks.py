@@ -13,7 +13,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Edit, Fix, Span
 from moos_lint.frontends.cpp import angle_exprs as angles
-from moos_lint.frontends.cpp import facts, values
+from moos_lint.frontends.cpp import values
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
@@ -196,18 +196,10 @@ _TO_MPS = {
 
 def speed_in_knots(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, angles.is_speed_var):
-        if v is None:
+        speed = values.speed_unit(v) if v is not None else None
+        if speed is None:
             continue
-        unit, why = v.unit, list(v.why)
-        if unit not in facts.SPEED_UNITS:
-            if v.nmea_speed is None or not (v.unit is None or (v.unit == "deg" and v.hint)):
-                continue
-            unit, sentence = v.nmea_speed
-            field = f"a field of NMEA's {sentence} sentence, in {values.speed_label(unit)},"
-            why = [
-                w.replace("; NMEA 0183 angles are degrees", "").replace("an NMEA field", field)
-                for w in why
-            ]
+        unit, why = speed
         because = f" ({'; '.join(why[-3:])})" if why else ""
         yield (
             p.value.span,  # type: ignore[union-attr]
@@ -222,14 +214,10 @@ def decimal_comma(app: AppModel) -> Iterator[tuple[Span, str, Fix]]:
         yield (
             d.span,
             f"`{d.written}` is not a number in C++: the comma operator evaluates "
-            f"`{_clip_text(d.kept)}` and throws the digits after the comma away; "
+            f"`{values.brief(d.kept, 60)}` and throws the digits after the comma away; "
             f"write `{number}`",
             Fix(f"write `{number}`", (Edit(d.span, number),)),
         )
-
-
-def _clip_text(s: str, n: int = 60) -> str:
-    return s if len(s) <= n else s[: n - 1] + "…"
 
 
 def depth_z_sign(app: AppModel) -> Iterator[Finding]:

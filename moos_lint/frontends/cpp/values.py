@@ -270,7 +270,7 @@ def _atan2_frame(written: list[str], shown: list[str]) -> tuple[str | None, str]
     a heading (from north, clockwise); None when the names do not tell. With the call as
     a reason quotes it."""
     axes = tuple(displacement_axis(w) for w in written)
-    call = f"atan2({', '.join(_clip(' '.join(a.split())) for a in shown)})"
+    call = f"atan2({', '.join(brief(' '.join(a.split())) for a in shown)})"
     if axes == ("north", "east"):
         return "math", f"{call}, north over east,"
     if axes == ("east", "north"):
@@ -621,9 +621,13 @@ class Folder:
         self.functions: dict[str, list[tuple[Any, Any]]] = {}
         self.defines: dict[str, str] = {}
         self.nmea: set[str] = set()
+        #: the files that name an NMEA speed sentence (:func:`_nmea_speed` looks only there)
+        self.nmea_speed: set[str] = set()
         for pf in files:
             if _names_nmea(pf.data):
                 self.nmea.add(pf.path)
+            if _SPEED_SENTENCE.search(pf.data):
+                self.nmea_speed.add(pf.path)
             for name, val in pf.defines:
                 self.defines[name] = val
             for a in pf.asgs:
@@ -887,9 +891,9 @@ class Evaluator:
             abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG
             or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
         ):
-            v = settle(v, f"{_clip(text(n))} at {_at(pf, n)}")
+            v = settle(v, f"{brief(text(n))} at {_at(pf, n)}")
         elif v.const is None and s != 1.0 and v.pending is None and _speed_scaled(v, s):
-            v = settle(v, f"`{_clip(text(n))}` at {_at(pf, n)}")
+            v = settle(v, f"`{brief(text(n))}` at {_at(pf, n)}")
         return v
 
     def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -1001,20 +1005,17 @@ class Evaluator:
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
         if name in facts.TEXT_TO_NUMBER:
-            speed = _nmea_speed(pf, n, args)
+            speed = _nmea_speed(n, args) if pf.path in self.folder.nmea_speed else None
             if pf.path in self.folder.nmea:
                 return AbstractValue(
                     unit="deg",
                     hint=True,
-                    why=(
-                        f"an NMEA field read with {name}() at {at}; NMEA 0183 angles are degrees",
-                    ),
+                    why=(f"{_NMEA_FIELD} read with {name}() at {at}{_NMEA_ANGLES}",),
                     nmea_speed=speed,
                 )
             if speed is not None:
-                return AbstractValue(
-                    nmea_speed=speed, why=(f"an NMEA field read with {name}() at {at}",)
-                )
+                why = f"{_NMEA_FIELD} read with {name}() at {at}"
+                return AbstractValue(nmea_speed=speed, why=(why,))
             return UNKNOWN
         if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
             return self._mail(pf, n)
@@ -1051,7 +1052,7 @@ class Evaluator:
                     v = settle(self._eval(pf, expr, depth + 1))
                     field = v.pending is not None and v.pending.startswith(".")
                     if (v.known and v.pending is None) or field:
-                        v = v.because(f"{name}() returns {_clip(text(expr))} at {_at(pf, r)}")
+                        v = v.because(f"{name}() returns {brief(text(expr))} at {_at(pf, r)}")
                     yield v
 
         return self._once(("fn", name), lambda: _join_all(values()) or UNKNOWN)
@@ -1154,7 +1155,7 @@ class Evaluator:
             aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
             anywhere = AbstractValue(
                 pending=f".{cls}.{'|'.join(aliases)}",
-                why=(f"`{_clip(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
+                why=(f"`{brief(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
                 fallback=anywhere,
             )
         if n.type == "field_expression":
@@ -1165,7 +1166,7 @@ class Evaluator:
                 call, name, index = setter
                 return AbstractValue(
                     pending=f"{name}#{index}.{field}",
-                    why=(f"{_clip(text(call))} at {_at(pf, call)}",),
+                    why=(f"{brief(text(call))} at {_at(pf, call)}",),
                     fallback=anywhere,
                 )
         return anywhere if cls else None
@@ -1261,7 +1262,7 @@ class Evaluator:
                 prior = self._assigned(pf, fnode, call, key, before, declared, depth)
                 v = AbstractValue(
                     pending=f"{name}#{index}",
-                    why=(f"{_clip(text(call))} at {at}",),
+                    why=(f"{brief(text(call))} at {at}",),
                     fallback=prior if prior is not None else UNKNOWN,
                 )
             cond = _guard(call, fnode)
@@ -1304,7 +1305,7 @@ class Evaluator:
                 if pointer:
                     for rhs in _pointer_writes(fn, pname):
                         yield settle(self._eval(pf, rhs, depth + 1)).because(
-                            f"{name}() sets `*{pname}` to {_clip(text(rhs))} at {_at(pf, rhs)}"
+                            f"{name}() sets `*{pname}` to {brief(text(rhs))} at {_at(pf, rhs)}"
                         )
                     continue
                 writes = [a for a in pf.local.get(fn.id, {}).get(pname, []) if a.op]
@@ -1314,7 +1315,7 @@ class Evaluator:
                 v = self._assigned(pf, fn, body.children[-1], pname, writes, False, depth + 1)
                 if v is not None:
                     last = writes[-1]
-                    step = f"{name}() sets `{pname}`: {_clip(text(last.node))}"
+                    step = f"{name}() sets `{pname}`: {brief(text(last.node))}"
                     yield settle(v).because(f"{step} at {_at(pf, last.node)}")
 
         return self._once(("out", name, index), lambda: _join_all(values()), on_cycle=None)
@@ -1331,8 +1332,8 @@ class Evaluator:
                 pname = found[0]
                 for node, rhs in _param_field_writes(fn, pname, field):
                     yield settle(self._eval(pf, rhs, depth + 1)).because(
-                        f"{name}() sets `{_clip(text(node.child_by_field_name('left')), 30)}` "
-                        f"to {_clip(text(rhs))} at {_at(pf, rhs)}"
+                        f"{name}() sets `{brief(text(node.child_by_field_name('left')), 30)}` "
+                        f"to {brief(text(rhs))} at {_at(pf, rhs)}"
                     )
 
         return self._once(("field", name, index, field), lambda: _join_all(values()), on_cycle=None)
@@ -1413,7 +1414,7 @@ def _at(pf: Any, n: Any) -> str:
     return place(pf.path, n.start_point[0] + 1)
 
 
-def _clip(s: str, n: int = 48) -> str:
+def brief(s: str, n: int = 48) -> str:
     """An expression for a message: call arguments elided, one line, at most ``n`` characters."""
     s = " ".join(s.split())
     for _ in range(8):
@@ -1433,8 +1434,12 @@ def _scaled(v: AbstractValue, c: float, why: tuple[str, ...] = ()) -> AbstractVa
     return replace(out, why=(*out.why, *why)) if why else out
 
 
-_SPEED_SENTENCE = re.compile(rb"RMC|VTG|VHW|VBW")
-_SENTENCES = "|".join((*facts.NMEA_SENTENCES, "VHW", "VBW"))
+#: the wording of an NMEA field's reason (:func:`speed_unit` rewords it for a speed)
+_NMEA_FIELD = "an NMEA field"
+_NMEA_ANGLES = "; NMEA 0183 angles are degrees"
+#: the speed sentences, named anywhere in a file (which then is looked at more closely)
+_SPEED_SENTENCE = re.compile("|".join(facts.NMEA_SPEED_FIELDS).encode())
+_SENTENCES = "|".join(dict.fromkeys((*facts.NMEA_SENTENCES, *facts.NMEA_SPEED_FIELDS)))
 #: a sentence named in a condition (``flds[0] == "$GPRMC"``, ``key == "VTG"``)
 _SENTENCE_IN_TEXT = re.compile(r"\b(?:\$?[A-Z]{2})?(" + _SENTENCES + r")\b")
 #: a sentence in a function's name, in capitals (``handleMsgGPRMC``, ``parseVTG``)
@@ -1442,12 +1447,10 @@ _SENTENCE_IN_NAME = re.compile(_SENTENCES)
 _FIELD_INDEX = re.compile(r"\[\s*(\d+)\s*\]|[(,]\s*(\d+)\s*[,)]")
 
 
-def _nmea_speed(pf: Any, call: Any, args: list[Any]) -> tuple[str, str] | None:
+def _nmea_speed(call: Any, args: list[Any]) -> tuple[str, str] | None:
     """For a number parsed from text where the code handles one NMEA speed sentence (an
     ``if`` on the sentence's name, or a function named for it: ``handleGPRMC``), the unit
     the field has when it is a speed, and the sentence; None elsewhere."""
-    if not _SPEED_SENTENCE.search(pf.data):
-        return None
     sentence = None
     p, child = call.parent, call
     while p is not None and p.type != "function_definition":
@@ -1464,14 +1467,25 @@ def _nmea_speed(pf: Any, call: Any, args: list[Any]) -> tuple[str, str] | None:
     fields_of = facts.NMEA_SPEED_FIELDS.get(sentence or "")
     if fields_of is None:
         return None
-    index = None
-    for m in _FIELD_INDEX.finditer(text(args[0]) if args else ""):
-        index = int(m.group(1) or m.group(2))
-        break
+    m = _FIELD_INDEX.search(text(args[0])) if args else None
+    index = int(m.group(1) or m.group(2)) if m else None
     if fields_of and index not in fields_of:
         return None  # VTG, VHW: a field that is not a speed we know the unit of
-    unit = fields_of.get(index, "kn") if index is not None else "kn"
-    return unit, str(sentence)
+    return (fields_of.get(index, "kn") if index is not None else "kn"), str(sentence)
+
+
+def speed_unit(v: AbstractValue) -> tuple[str, list[str]] | None:
+    """The speed unit other than metres per second that ``v`` is in, with the reasons,
+    source first: its unit, or the NMEA speed field it was read from (whose angle hint
+    then says nothing); None when neither."""
+    if v.unit in facts.SPEED_UNITS:
+        return v.unit, list(v.why)
+    if v.nmea_speed is None or not (v.unit is None or (v.unit == "deg" and v.hint)):
+        return None
+    unit, sentence = v.nmea_speed
+    field = f"a field of NMEA's {sentence} sentence, in {speed_label(unit)},"
+    steps = [w.replace(_NMEA_ANGLES, "").replace(_NMEA_FIELD, field) for w in v.why]
+    return unit, steps
 
 
 def speed_label(unit: str) -> str:
@@ -1707,7 +1721,7 @@ def _wrap_step(
             new = (bound + step, bound)
         else:
             return None
-        why = f"wrapped by `{_clip(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
+        why = f"wrapped by `{brief(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
         return wrapped(base, new, base.unit or turn, why)
     if op in ("<", "<=") and step > 0:
         if lo >= bound:
@@ -1731,7 +1745,7 @@ def _wrap_step(
             new = (min(lo, bound + step), math.inf)
     else:
         return None
-    why = f"wrapped by `{_clip(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
+    why = f"wrapped by `{brief(text(stmt).split(chr(10))[0], 40)}` at {_at(pf, stmt)}"
     return (
         replace(base, range=new, const=None).because(why)
         if base.known
@@ -2054,7 +2068,7 @@ class RepositoryResolver:
                     first = names_text.split("|")[0]
                     alias = f" (the storage of `{first}`)" if field != first else ""
                     v = v.because(
-                        f"`{_clip(text(left), 30)}`{alias} set to {_clip(text(rhs))} "
+                        f"`{brief(text(left), 30)}`{alias} set to {brief(text(rhs))} "
                         f"at {_at(pf, node)}"
                     )
                 out = v if out is None else join(out, v)

@@ -170,7 +170,7 @@ class Catalogue:
         self.executables: dict[str, str] = {}
         self.generic_behavior_params: set[str] = set()
         #: "apps" / "behaviors" -> name (lower case) -> key (lower case) -> the older
-        #: MOOS-IvP (``retired.json``'s label: ``2019-08``) that last read it
+        #: MOOS-IvP (``retired.json``'s label: ``August 2019``) that last read it
         self.retired: dict[str, dict[str, dict[str, str]]] = {}
         self.source: dict[str, str] = {}
         #: what a lint run's catalogue was made from (the stock catalogue, each user
