@@ -83,6 +83,38 @@ def test_the_language_server_reparses_only_changed_cpp(tmp_path, monkeypatch):
     assert len(parsed) == 3 and b'"B", 3' in parsed[-1]
 
 
+def test_the_language_server_keeps_an_unchanged_neighbours_share_of_the_tables(
+    tmp_path, monkeypatch
+):
+    from moos_lint.frontends.cpp import app, extract, values
+
+    monkeypatch.setattr(app, "PARSE_MEMO_SIZE", 8)
+    monkeypatch.setattr(app, "_parse_memo", app.OrderedDict())
+    folder = tmp_path / "pApp"
+    folder.mkdir()
+    (folder / "A.cpp").write_text('void A::a() { m_var = "A_OUT"; Notify(m_var, 1); }\n')
+    (folder / "B.cpp").write_text('void A::b() { m_var = "B_OUT"; Notify("B", 2); }\n')
+    tabled: list[str] = []
+    parted: list[str] = []
+    real_tables, real_part = extract._name_tables, values._names_nmea
+    monkeypatch.setattr(
+        extract, "_name_tables", lambda pf: tabled.append(pf.path) or real_tables(pf)
+    )
+    monkeypatch.setattr(values, "_names_nmea", lambda data: parted.append(data) or real_part(data))
+    files = [str(folder / "A.cpp"), str(folder / "B.cpp")]
+    first = _json(engine.lint_files(files, _settings(tmp_path)))
+    assert len(tabled) == len(parted) == 2
+    (folder / "A.cpp").write_text('void A::a() { m_var = "A_OUT"; Notify(m_var, 1); } // x\n')
+    second = _json(engine.lint_files(files, _settings(tmp_path)))
+    assert [os.path.basename(p) for p in tabled[2:]] == ["A.cpp"]
+    assert len(parted) == 3
+    # the folder's tables merge as one pass over its files: A's member value comes first
+    assert first == second
+    pa, pb = (app._parse_memo[k] for k in list(app._parse_memo)[-2:])
+    merged = extract.collect_tables(sorted([pa, pb], key=lambda pf: pf.path))
+    assert merged.assigns["m_var"] == ["A_OUT", "B_OUT"]
+
+
 def test_a_run_expands_a_shared_behavior_file_once(tmp_path, monkeypatch):
     from moos_lint.frontends.nsplug import Preprocessor
 
@@ -286,6 +318,7 @@ def test_rule_workers_take_a_folder_at_a_time():
 
 def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch):
     from moos_lint.frontends.cpp import app as cpp_app
+    from moos_lint.frontends.cpp.extract import ParsedFile
     from moos_lint.frontends.cpp.parse import backend
 
     be = backend()
@@ -309,11 +342,16 @@ def test_an_edited_cpp_file_is_parsed_incrementally_to_the_same_tree(monkeypatch
         text[:cut] + b"void f( {\n" + text[cut:],  # a broken one: parsed afresh
         text[:cut] + b"// fixed\n" + text[cut:],  # and valid again
     ]
+
+    def kinds(pf):
+        return [len(x) for x in (pf.calls, pf.cmps, pf.asgs, pf.strings, pf.functions)]
+
     for data in versions:
-        tree, matches = cpp_app._parse(be, path, data)
-        fresh = real(data)
-        assert str(tree.root_node) == str(fresh.root_node)
-        assert len(matches) == len(be.matches(fresh))
+        pf = cpp_app._parse(be, path, data)
+        fresh_tree = real(data)
+        fresh = ParsedFile(path, data, fresh_tree, be.matches(fresh_tree))
+        assert str(pf.tree.root_node) == str(fresh.tree.root_node)
+        assert kinds(pf) == kinds(fresh)
     # the first parse is fresh; each edit starts incrementally; the broken text is redone
     assert incremental == [False, True, True, False, True]
 

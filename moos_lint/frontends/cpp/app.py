@@ -104,7 +104,7 @@ def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[C
     is what libclang knows of the files: what the compiler skipped is blanked before
     the parse, and the value analysis asks it for constants and types.
     """
-    from moos_lint.frontends.cpp.extract import Extractor, ParsedFile, collect_tables
+    from moos_lint.frontends.cpp.extract import Extractor, collect_tables
     from moos_lint.frontends.cpp.parse import backend
 
     be = backend()
@@ -115,8 +115,7 @@ def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[C
         data = text.encode("utf-8", "replace")
         if compiled is not None:
             data = compiled.live(path, data)
-        tree, matches = _parse(be, path, data)
-        parsed.append(ParsedFile(path, data, tree, matches))
+        parsed.append(_parse(be, path, data))
     tables = collect_tables(parsed)
     from moos_lint.frontends.cpp.values import Evaluator, Folder
 
@@ -124,12 +123,13 @@ def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[C
     return [Extractor(pf, tables, evaluator).run() for pf in parsed]
 
 
-#: How many parsed files (tree and query matches, by path and bytes) a process keeps. The
-#: language server turns it on: re-linting one file then reparses only the files that
-#: changed, not every neighbour, and an edited file incrementally from its last tree.
-#: A command-line run parses each file once and keeps none.
+#: How many parsed files (tree, query matches and what the file gives its folder's tables,
+#: by path and bytes) a process keeps. The language server turns it on: re-linting one
+#: file then reparses only the files that changed, not every neighbour, and an edited
+#: file incrementally from its last tree. A command-line run parses each file once and
+#: keeps none.
 PARSE_MEMO_SIZE = 0
-_parse_memo: OrderedDict[tuple[str, bytes], tuple[Any, Any]] = OrderedDict()
+_parse_memo: OrderedDict[tuple[str, bytes], Any] = OrderedDict()
 
 
 #: the last tree of each path (language server): an edited file is parsed incrementally
@@ -141,12 +141,15 @@ _last_tree: OrderedDict[str, tuple[bytes, Any]] = OrderedDict()
 _PARSE_LOCK = threading.Lock()
 
 
-def _parse(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+def _parse(be: Any, path: str, data: bytes) -> Any:
+    """The :class:`~moos_lint.frontends.cpp.extract.ParsedFile` of ``data``."""
     with _PARSE_LOCK:
         return _parse_locked(be, path, data)
 
 
-def _parse_locked(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
+def _parse_locked(be: Any, path: str, data: bytes) -> Any:
+    from moos_lint.frontends.cpp.extract import ParsedFile
+
     key = (path, data)
     hit = _parse_memo.get(key) if PARSE_MEMO_SIZE else None
     if hit is not None:
@@ -162,7 +165,7 @@ def _parse_locked(be: Any, path: str, data: bytes) -> tuple[Any, Any]:
             tree = None
     if tree is None:
         tree = be.parse(data)
-    hit = (tree, be.matches(tree))
+    hit = ParsedFile(path, data, tree, be.matches(tree))
     if PARSE_MEMO_SIZE:
         _parse_memo[key] = hit
         while len(_parse_memo) > PARSE_MEMO_SIZE:

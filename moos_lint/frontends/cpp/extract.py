@@ -375,6 +375,10 @@ class ParsedFile:
         self._fn_starts = [f.start_byte for f in fns]
         self._fns = fns
         self._fn_names: dict[int, str] = {}
+        #: what the file gives its folder's tables (:func:`_file_tables`)
+        self.tables: FolderTables | None = None
+        #: what the file gives its folder's look-ups (``values.FilePart``)
+        self.folder_part: Any = None
         for _idx, caps in matches:
             if "call" in caps:
                 self.calls.append((caps["call"][0], caps["call.fn"][0], caps["call.args"][0]))
@@ -433,59 +437,87 @@ class ParsedFile:
         return name
 
 
+def _file_tables(pf: ParsedFile) -> FolderTables:
+    """What one file gives its folder's tables; kept on the file, which the language
+    server keeps while its bytes are unchanged (see :func:`collect_tables`)."""
+    if pf.tables is not None:
+        return pf.tables
+    t = FolderTables()
+    t.registers_moos_vars = b"RegisterMOOSVariables" in pf.data
+    for fn in pf.functions:
+        if _returns_its_parameter(fn):
+            t.passthrough.add(short(function_name(fn)))
+    for call, fn, args in pf.calls:
+        if callee(fn) in PUBLISH:
+            wrapper = _notify_wrapper(pf, call, args)
+            if wrapper is not None:
+                t.notify_wrappers.setdefault(*wrapper)
+    for name, define in pf.defines:
+        m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
+        if m:
+            t.defines[name] = m.group(1)
+    declared: dict[tuple, bool] = {}  # (function, target) -> a local of it
+    for a in pf.asgs:
+        # members, globals and constants; locals are followed per function
+        if a.fn is not None:
+            key = (a.fn.id, a.target)
+            local = declared.get(key)
+            if local is None:
+                local = declared[key] = _declared_in(pf, a)
+            if local:
+                continue
+        val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
+        if val is None and a.fn is not None:
+            ckey = _config_branch_key(pf, a)
+            if ckey is not None:  # the configuration may change it: the default stands
+                t.config_keys.setdefault(a.target, ckey)
+                continue
+        t.assigns.setdefault(a.target, []).append(val)
+    for name, entries in _name_tables(pf):
+        t.name_tables.setdefault(name, entries)
+    for name, args in pf.inits:
+        vals = args.named_children
+        val = string_value(vals[0]) if len(vals) == 1 else None
+        t.assigns.setdefault(name, []).append(val)
+    for _call, fn, args in pf.calls:
+        argv = args.named_children
+        if callee(fn) == ADD_MOOS_VAR and len(argv) >= 3:
+            var = string_value(strip_parens(argv[0]))
+            pub = string_value(strip_parens(argv[2]))
+            if var is not None and pub:
+                known = t.moos_vars.setdefault(var, pub)
+                if known != pub:
+                    t.moos_vars[var] = None
+        if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
+            ckey = string_value(strip_parens(argv[-2]))
+            member = target_name(argv[-1])
+            if ckey is not None and member:
+                t.config_keys.setdefault(member, ckey.lower())
+    pf.tables = t
+    return t
+
+
 def collect_tables(files: list[ParsedFile]) -> FolderTables:
+    """The folder's tables: each file's, merged in the files' order (a name a first file
+    gives keeps its value, as if one pass read the files in turn)."""
     t = FolderTables()
     for pf in files:
-        t.registers_moos_vars = t.registers_moos_vars or b"RegisterMOOSVariables" in pf.data
-        for fn in pf.functions:
-            if _returns_its_parameter(fn):
-                t.passthrough.add(short(function_name(fn)))
-        for call, fn, args in pf.calls:
-            if callee(fn) in PUBLISH:
-                wrapper = _notify_wrapper(pf, call, args)
-                if wrapper is not None:
-                    t.notify_wrappers.setdefault(*wrapper)
-        for name, define in pf.defines:
-            m = re.fullmatch(r'"((?:[^"\\]|\\.)*)"', define)
-            if m:
-                t.defines[name] = m.group(1)
-        declared: dict[tuple, bool] = {}  # (function, target) -> a local of it
-        for a in pf.asgs:
-            # members, globals and constants; locals are followed per function
-            if a.fn is not None:
-                key = (a.fn.id, a.target)
-                local = declared.get(key)
-                if local is None:
-                    local = declared[key] = _declared_in(pf, a)
-                if local:
-                    continue
-            val = string_value(strip_parens(a.rhs)) if a.op == "=" else None
-            if val is None and a.fn is not None:
-                ckey = _config_branch_key(pf, a)
-                if ckey is not None:  # the configuration may change it: the default stands
-                    t.config_keys.setdefault(a.target, ckey)
-                    continue
-            t.assigns.setdefault(a.target, []).append(val)
-        for name, entries in _name_tables(pf):
+        part = _file_tables(pf)
+        t.registers_moos_vars = t.registers_moos_vars or part.registers_moos_vars
+        t.passthrough |= part.passthrough
+        for name, wrapper in part.notify_wrappers.items():
+            t.notify_wrappers.setdefault(name, wrapper)
+        t.defines.update(part.defines)
+        for name, vals in part.assigns.items():
+            t.assigns.setdefault(name, []).extend(vals)
+        for name, ckey in part.config_keys.items():
+            t.config_keys.setdefault(name, ckey)
+        for name, entries in part.name_tables.items():
             t.name_tables.setdefault(name, entries)
-        for name, args in pf.inits:
-            vals = args.named_children
-            val = string_value(vals[0]) if len(vals) == 1 else None
-            t.assigns.setdefault(name, []).append(val)
-        for _call, fn, args in pf.calls:
-            argv = args.named_children
-            if callee(fn) == ADD_MOOS_VAR and len(argv) >= 3:
-                var = string_value(strip_parens(argv[0]))
-                pub = string_value(strip_parens(argv[2]))
-                if var is not None and pub:
-                    known = t.moos_vars.setdefault(var, pub)
-                    if known != pub:
-                        t.moos_vars[var] = None
-            if callee(fn) in CONFIG_CALLS and len(argv) >= 2:
-                ckey = string_value(strip_parens(argv[-2]))
-                member = target_name(argv[-1])
-                if ckey is not None and member:
-                    t.config_keys.setdefault(member, ckey.lower())
+        for var, pub in part.moos_vars.items():
+            known = t.moos_vars.setdefault(var, pub)
+            if known != pub:
+                t.moos_vars[var] = None
     t.files = files
     return t
 

@@ -612,6 +612,28 @@ _PASS_THROUGH = {
 MAX_DEPTH = 12
 
 
+@dataclass
+class FilePart:
+    """What one file gives its folder's look-ups (:class:`Folder`): kept on the file, which
+    the language server keeps while its bytes are unchanged."""
+
+    nmea: bool
+    nmea_speed: bool
+    members: list[Any]  # the assignments to members, globals and constants
+    functions: list[tuple[str, Any]]  # (short name, definition)
+
+
+def _folder_part(pf: Any) -> FilePart:
+    if pf.folder_part is None:
+        pf.folder_part = FilePart(
+            _names_nmea(pf.data),
+            bool(_SPEED_SENTENCE.search(pf.data)),
+            [a for a in pf.asgs if a.fn is None or not _declared_local(pf, a)],
+            [(name, fn) for fn in pf.functions if (name := _function_short_name(fn))],
+        )
+    return pf.folder_part
+
+
 class Folder:
     """What evaluation may look up across the files of one folder (or one library file)."""
 
@@ -624,19 +646,16 @@ class Folder:
         #: the files that name an NMEA speed sentence (:func:`_nmea_speed` looks only there)
         self.nmea_speed: set[str] = set()
         for pf in files:
-            if _names_nmea(pf.data):
+            part = _folder_part(pf)
+            if part.nmea:
                 self.nmea.add(pf.path)
-            if _SPEED_SENTENCE.search(pf.data):
+            if part.nmea_speed:
                 self.nmea_speed.add(pf.path)
-            for name, val in pf.defines:
-                self.defines[name] = val
-            for a in pf.asgs:
-                if a.fn is None or not _declared_local(pf, a):
-                    self.members.setdefault(a.target, []).append((pf, a))
-            for fn in pf.functions:
-                name = _function_short_name(fn)
-                if name:
-                    self.functions.setdefault(name, []).append((pf, fn))
+            self.defines.update(pf.defines)
+            for a in part.members:
+                self.members.setdefault(a.target, []).append((pf, a))
+            for name, fn in part.functions:
+                self.functions.setdefault(name, []).append((pf, fn))
         self.memo: dict[tuple, Any] = {}  # AbstractValue, or None where a flow is unknown
         self._calls: dict[str, list[tuple[Any, Any]]] | None = None
         self._printed: dict[tuple[int | None, str], list[tuple[str, str]]] | None = None

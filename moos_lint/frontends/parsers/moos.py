@@ -57,6 +57,8 @@ def block_comments(lines: list[Line]) -> list[tuple[int, int, int]]:
     no ``*/`` after it) that a later ``*/`` line closes, (the opening line's index, the
     closing line's index, the block depth at the opening line: 0 at the top of the file)."""
     out: list[tuple[int, int, int]] = []
+    if not any("/*" in line.text for line in lines):
+        return out
     start: int | None = None
     depth = opened_at = 0
     for i, line in enumerate(lines):
