@@ -60,6 +60,21 @@ def test_programs_a_script_or_a_patch_starts_with_the_mission(tmp_path):
     assert patch_launches(str(tmp_path)) == {"plogger", "utimerscript", "utimerscript_ping"}
 
 
+def test_programs_a_cmake_harness_starts_with_the_mission(tmp_path):
+    (tmp_path / "alpha.moos").write_text("ServerPort = 9000\n")
+    (tmp_path / "run_test.cmake").write_text(
+        "EXECUTE_PROCESS( COMMAND uMissionTester alpha.moos\n"
+        "    WORKING_DIRECTORY ${TEST_DIR} )\n"
+        "EXECUTE_PROCESS( COMMAND alogcheck -i alpha.chk ${LOG_FILE} )\n"
+    )
+    (tmp_path / "CMakeLists.txt").write_text(
+        "add_test(NAME beta COMMAND ${BIN}/pAntler beta.moos)\n"
+        "add_test(NAME other COMMAND uSimMarine other.moos)\n"
+    )
+    assert script_launches(str(tmp_path), str(tmp_path / "alpha.moos")) == {"umissiontester"}
+    assert script_launches(str(tmp_path), str(tmp_path / "beta.moos")) == {"pantler"}
+
+
 def test_a_script_line_of_any_length_is_read_in_one_pass(tmp_path):
     """A self-extracting script holds one line of a payload: it is read in linear time
     (in a child process with a deadline, so that a regression fails, not hangs)."""

@@ -250,7 +250,32 @@ def script_launches(folder: str, mission: str) -> frozenset[str]:
     ``"$BIN" targ_shoreside.moos --alias=pTraffic``): the program's own name, and the name
     ``--alias=`` gives it. Read as text, never run."""
     name = os.path.basename(mission)
-    return frozenset(p for p, arg in _started(shell_scripts(folder)) if _names_mission(arg, name))
+    started = (*_started(shell_scripts(folder)), *_cmake_started(cmake_scripts(folder)))
+    return frozenset(p for p, arg in started if _names_mission(arg, name))
+
+
+def cmake_scripts(folder: str) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each CMake file of ``folder`` (``*.cmake``, ``CMakeLists.txt``):
+    a test harness may start a program with a mission (MOOS-IvP's nightly tests run
+    ``EXECUTE_PROCESS( COMMAND uMissionTester alpha.moos ...)``). Read as text, never run."""
+    return (*_texts(folder, ".cmake"), *_texts(folder, "CMakeLists.txt"))
+
+
+#: a CMake ``COMMAND`` (``execute_process``, ``add_test``, ``add_custom_command``): its
+#: program and its words, up to the closing parenthesis or the line's end
+_CMAKE_COMMAND = re.compile(r"\bCOMMAND[ \t]+([^\s()]+)([^()\n]*)", re.I)
+
+
+@functools.lru_cache(maxsize=256)
+def _cmake_started(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+    out: set[tuple[str, str]] = set()
+    for _path, text in scripts:
+        for m in _CMAKE_COMMAND.finditer(text):
+            mission = _mission_arg(m.group(2))
+            program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
+            if mission is not None and re.fullmatch(r"[A-Za-z_][\w\-]*", program):
+                out.add((program.lower(), mission))
+    return tuple(sorted(out))
 
 
 def _names_mission(arg: str, mission: str) -> bool:

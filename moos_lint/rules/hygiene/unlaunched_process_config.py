@@ -69,8 +69,10 @@ MOOS-IvP caveats, deliberately not reported:
   --stem=meta_shoreside.moos full-logging.xmoos` overwrites or augments the
   stem's ANTLER block), or a shell script beside it that starts the program
   with this mission or nsplug's output of it (`uMAC targ_shoreside.moos` for
-  `meta_shoreside.moos`, `"$BIN" targ_shoreside.moos --alias=pTrafficManager`).
-  Both are read as text, never run;
+  `meta_shoreside.moos`, `"$BIN" targ_shoreside.moos --alias=pTrafficManager`),
+  or a CMake file beside it whose `COMMAND` does (a test harness's
+  `EXECUTE_PROCESS( COMMAND uMissionTester alpha.moos ...)`). All are read as
+  text, never run;
 - a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
   be any name, so it launches (or is launched by) anything it could match;
 - a block and a Run line in mutually exclusive `#ifdef` branches do not launch

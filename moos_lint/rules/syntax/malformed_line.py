@@ -2,8 +2,8 @@
 
 ## What it does
 Reports a line in a `.moos` file that MOOS cannot read as anything: it has no
-`key =` (a name before an `=`: a banner line of `=====` has none), is not a
-`//` comment, not a block brace and not an nsplug directive.
+`key =` (a name before an `=`), is not a `//` comment, not a block brace and
+not an nsplug directive.
 
 ## Why is this bad?
 MOOS drops such a line without a word. It is usually a typo (`AppTick 4`,
@@ -17,6 +17,13 @@ blocks, and a one-line `/* ... */` are harmless and not reported). A
 merge-conflict marker (`<<<<<<< HEAD`, `>>>>>>> branch`) is named as such:
 the file was committed in the middle of a merge, and MOOS reads the lines of
 both sides, the later line of a key winning or both kept.
+
+A ruler (a line of only `=`, `-`, `*`, `_`, `~`, `+` or `.`, such as
+`=====`) and the title between the two rulers that open a file (the banner
+that MOOS-IvP apps' `--example` output began with, pasted into a file without
+its `//`) are decoration: MOOS drops them, and nothing was meant to be set
+there, so they are not reported. A line between two rulers further down is
+reported: it may be a key that lost its `=`.
 
 ## Example
 ```moos
@@ -49,8 +56,11 @@ from moos_lint.rules.kit.declare import Scope, rule
 @rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
     opens, closes = _block_comments(ctx.moos.lines)
+    banners = _banners(ctx.moos.lines) if ctx.moos.malformed else set()
     for line in ctx.moos.malformed:
         text = line.text.strip()
+        if id(line) in banners:
+            continue
         if id(line) in opens:
             msg = "MOOS has no `/* */` comments: it drops this line, but reads the lines "
             yield ctx.at_line(line, msg + "after it up to `*/` as usual")
@@ -74,6 +84,29 @@ def check(ctx):
                 f"{block.name} reads this block as protobuf text: {why}",
                 line=line,
             )
+
+
+#: what a ruler line is made of (``=====``, ``-----``, ``*****``)
+_RULER = frozenset("=-*_~+. \t")
+
+
+def _ruler(text: str) -> bool:
+    return len(text) >= 3 and set(text) <= _RULER
+
+
+def _banners(lines) -> set[int]:
+    """The ids of the rulers among ``lines``, and of the title of a banner that opens the
+    file: a line without an ``=`` between two rulers, the first of them the file's first
+    line with text (a line between two rulers further down may be a key that lost its
+    ``=``: it is reported)."""
+    texts = [strip_comment(line.text).strip() for line in lines]
+    out = {id(line) for line, text in zip(lines, texts, strict=True) if _ruler(text)}
+    first = next((i for i, text in enumerate(texts) if text), None)
+    if first is not None and first + 2 < len(texts) and _ruler(texts[first]):
+        title = texts[first + 1]
+        if title and "=" not in title and _ruler(texts[first + 2]):
+            out.add(id(lines[first + 1]))
+    return out
 
 
 def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
