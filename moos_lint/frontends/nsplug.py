@@ -30,7 +30,7 @@ import os
 import re
 import threading
 from collections import OrderedDict
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -40,6 +40,24 @@ from moos_lint.files.source import ReadProblem, SourceFile, read_source
 from moos_lint.files.stamps import folder_mtime
 
 DIRECTIVES = ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif", "#include", "#define")
+#: directives of the C preprocessor that nsplug does not have: a file that uses them was
+#: written for ``cpp`` (MOOS-IvP's behavior templates of 2011 and before were expanded with
+#: it), not for nsplug, and only cpp's output reaches the helm
+CPP_ONLY_DIRECTIVES = frozenset({"warning", "error", "pragma", "undef"})
+_CPP_DIRECTIVE = re.compile(r"[ \t]*#[ \t]*([a-z]+)\b")
+
+
+def written_for_cpp(lines: Iterable[str]) -> bool:
+    """Whether a file's lines use a directive only the C preprocessor knows
+    (``#warning``, ``#error``, ``#pragma``, ``#undef``)."""
+    for text in lines:
+        if "#" in text:
+            m = _CPP_DIRECTIVE.match(text)
+            if m is not None and m.group(1) in CPP_ONLY_DIRECTIVES:
+                return True
+    return False
+
+
 #: A macro whose value depends on the branch taken: its value is unknown.
 UNKNOWN = object()
 #: nsplug's value for ``#define NAME`` with no value.

@@ -12,7 +12,10 @@ A run of consecutive lines rejected for the same reason (a `/* ... */` block,
 a pasted paragraph) is one finding, on its first line. A `.bhv` file with no
 line shaped like a behavior file's (`Behavior`, `initialize`, `set`, a brace,
 `key = value`) is not one (the test inputs of nsplug, notes) and is left
-alone.
+alone, and so is a file written for the C preprocessor (one that uses
+`#warning`, `#error`, `#pragma` or `#undef`, which nsplug does not have): the
+behavior templates of MOOS-IvP's early years were expanded with `cpp`, which
+also strips their `/* ... */` comments, and only its output reaches the helm.
 
 ## Why is this bad?
 The helm reports `Problem with line N in the BehaviorSet file` and the *whole*
@@ -39,6 +42,7 @@ None.
 import re
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.nsplug import written_for_cpp
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 
 #: a line shaped like one of a behavior file: a brace, a `Behavior`/`Behaviour` header,
@@ -59,6 +63,8 @@ def check(ctx):
         _SHAPED.match(line.text) for line in bhv.lines
     ):
         return  # nothing shaped like a behavior file's lines: not one
+    if written_for_cpp(line.text for line in bhv.lines):
+        return  # a template of the C preprocessor: the helm reads only its output
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
     runs: list[list] = []  # consecutive lines rejected for one reason: one finding
     for line, reason in ctx.bhv.invalid:

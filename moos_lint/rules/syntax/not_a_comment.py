@@ -14,7 +14,9 @@ handed to the app, and an AppCasting app reports `#share = ...` as an
 unhandled configuration line. A line without `=` (a `/--------` banner, the
 lines of a `/* ... */` comment) is dropped by MOOS unread, as a comment would
 be, so it is not reported (`ProcessConfigReader::GetConfiguration` keeps only
-`key=value` lines and lines with `[` or `]`).
+`key=value` lines and lines with `[` or `]`). Inside a block that an app
+reads as protobuf text (goby's pAcommsHandler), `#` does start a comment, and
+such lines are not reported.
 
 ## Example
 ```moos
@@ -44,10 +46,13 @@ def check(ctx):
         for p in ctx.expansion.problems
         if p.kind in ("unknown-directive", "malformed-directive")
     }
+    protobuf = _text_format_lines(ctx.moos)
     for line in ctx.moos.lines:
         text = line.text
         if not looks_commented(text) or not _kept(text) or (line.path, line.lineno) in flagged:
             continue
+        if id(line) in protobuf:
+            continue  # protobuf text: `#` starts a comment there
         if text.lstrip().startswith("#"):
             yield ctx.at_line(
                 line,
@@ -58,6 +63,21 @@ def check(ctx):
                 line,
                 "a single `/` does not start a comment: MOOS reads this line (use `//`)",
             )
+
+
+def _text_format_lines(moos) -> set[int]:
+    """The ids of the lines inside the blocks an app reads as protobuf text (goby's
+    pAcommsHandler), where ``#`` does start a comment."""
+    out: set[int] = set()
+    spans = [(b.open, b.close) for b in moos.blocks if b.text_format and b.open and b.close]
+    if not spans:
+        return out
+    index = {id(line): i for i, line in enumerate(moos.lines)}
+    for first, last in spans:
+        start, end = index.get(id(first)), index.get(id(last))
+        if start is not None and end is not None:
+            out.update(id(line) for line in moos.lines[start : end + 1])
+    return out
 
 
 def _kept(text: str) -> bool:
