@@ -272,9 +272,9 @@ def _cmake_started(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str
     for _path, text in scripts:
         for m in _CMAKE_COMMAND.finditer(text):
             mission = _mission_arg(m.group(2))
-            program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
-            if mission is not None and re.fullmatch(r"[A-Za-z_][\w\-]*", program):
-                out.add((program.lower(), mission))
+            program = _program_name(m.group(1))
+            if mission is not None and program is not None:
+                out.add((program, mission))
     return tuple(sorted(out))
 
 
@@ -302,11 +302,21 @@ def _started(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...
             mission = _mission_arg(args)
             if mission is None:
                 continue
-            program = m.group(1).strip("\"'").rsplit("/", 1)[-1]
-            if re.fullmatch(r"[A-Za-z_][\w\-]*", program):
-                out.add((program.lower(), mission))
+            program = _program_name(m.group(1))
+            if program is not None:
+                out.add((program, mission))
             out.update((a.lower(), mission) for a in _ALIAS_ARG.findall(args))
     return tuple(sorted(out))
+
+
+_PROGRAM = re.compile(r"[A-Za-z_][\w\-]*")
+
+
+def _program_name(word: str) -> str | None:
+    """The lower-case program a command's first word names (``"$BIN_DIR/pAntler"``:
+    ``pantler``), or None when it is no plain name (``$BIN``)."""
+    program = word.strip("\"'").rsplit("/", 1)[-1]
+    return program.lower() if _PROGRAM.fullmatch(program) else None
 
 
 def _mission_arg(args: str) -> str | None:

@@ -44,7 +44,6 @@ DIRECTIVES = ("#ifdef", "#ifndef", "#elseifdef", "#else", "#endif", "#include", 
 #: written for ``cpp`` (MOOS-IvP's behavior templates of 2011 and before were expanded with
 #: it), not for nsplug, and only cpp's output reaches the helm
 CPP_ONLY_DIRECTIVES = frozenset({"warning", "error", "pragma", "undef"})
-_CPP_DIRECTIVE = re.compile(r"[ \t]*#[ \t]*([a-z]+)\b")
 
 
 def written_for_cpp(lines: Iterable[str]) -> bool:
@@ -52,8 +51,8 @@ def written_for_cpp(lines: Iterable[str]) -> bool:
     (``#warning``, ``#error``, ``#pragma``, ``#undef``)."""
     for text in lines:
         if "#" in text:
-            m = _CPP_DIRECTIVE.match(text)
-            if m is not None and m.group(1) in CPP_ONLY_DIRECTIVES:
+            m = _DIRECTIVE_LIKE.match(text)
+            if m is not None and m.group(2).lower() in CPP_ONLY_DIRECTIVES:
                 return True
     return False
 

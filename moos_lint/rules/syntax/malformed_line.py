@@ -56,11 +56,11 @@ from moos_lint.rules.kit.declare import Scope, rule
 @rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
     opens, closes = _block_comments(ctx.moos.lines)
-    banners = _banners(ctx.moos.lines) if ctx.moos.malformed else set()
+    title = _banner_title(ctx.moos.lines) if ctx.moos.malformed else None
     for line in ctx.moos.malformed:
         text = line.text.strip()
-        if id(line) in banners:
-            continue
+        if line is title or _ruler(strip_comment(text).strip()):
+            continue  # decoration
         if id(line) in opens:
             msg = "MOOS has no `/* */` comments: it drops this line, but reads the lines "
             yield ctx.at_line(line, msg + "after it up to `*/` as usual")
@@ -94,19 +94,16 @@ def _ruler(text: str) -> bool:
     return len(text) >= 3 and set(text) <= _RULER
 
 
-def _banners(lines) -> set[int]:
-    """The ids of the rulers among ``lines``, and of the title of a banner that opens the
-    file: a line without an ``=`` between two rulers, the first of them the file's first
-    line with text (a line between two rulers further down may be a key that lost its
-    ``=``: it is reported)."""
-    texts = [strip_comment(line.text).strip() for line in lines]
-    out = {id(line) for line, text in zip(lines, texts, strict=True) if _ruler(text)}
-    first = next((i for i, text in enumerate(texts) if text), None)
-    if first is not None and first + 2 < len(texts) and _ruler(texts[first]):
-        title = texts[first + 1]
-        if title and "=" not in title and _ruler(texts[first + 2]):
-            out.add(id(lines[first + 1]))
-    return out
+def _banner_title(lines):
+    """The title of a banner that opens the file: a line without an ``=`` between two
+    rulers, the first of them the file's first line with text (a line between two rulers
+    further down may be a key that lost its ``=``: it is reported)."""
+    for i, line in enumerate(lines):
+        if strip_comment(line.text).strip():
+            texts = [strip_comment(x.text).strip() for x in lines[i : i + 3]]
+            banner = len(texts) == 3 and _ruler(texts[0]) and _ruler(texts[2])
+            return lines[i + 1] if banner and texts[1] and "=" not in texts[1] else None
+    return None
 
 
 def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
