@@ -168,6 +168,35 @@ def heading_in_radians(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def trig_of_degrees(app: AppModel) -> Iterator[Finding]:
+    """``sin``, ``cos`` or ``tan`` of an angle known to be in degrees (not by its name
+    alone): once per argument and function, the first use, with how many more."""
+    uses: dict[tuple[str, str], list[Any]] = {}
+    for f in app.files:
+        for t in f.trig_uses:
+            v = t.value.abstract
+            if v is None or v.unit != "deg" or v.hint:
+                continue
+            uses.setdefault((t.within, " ".join(t.value.text.split())), []).append(t)
+    for (within, arg), found in uses.items():
+        t = found[0]
+        v = t.value.abstract
+        more = len(found) - 1
+        also = f"; and {more} more use{'s' if more > 1 else ''} in `{within}`" if more else ""
+        convert = (
+            "a heading becomes the math angle with headingToRadians() (MOOS-IvP's "
+            "AngleUtils: (90 − h)·π/180), or take `h·π/180` where the formula is written "
+            "for a compass angle (x += d·sin(h·π/180))"
+            if v.sense == "heading"
+            else "multiply by π/180 (MOOSDeg2Rad(), degToRadians())"
+        )
+        yield (
+            t.value.span,
+            f"`{t.function}()` is given `{values.brief(arg)}` in degrees{_because(v)}: "
+            f"C++'s sin, cos and tan take radians: {convert}{also}",
+        )
+
+
 def angle_from_east(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, angles.is_heading_var):
         if v is None or v.sense != "math":

@@ -11,15 +11,23 @@ worker processes:
    The workers send back plain facts (the relevant sources and the extracted
    :class:`~moos_lint.frontends.cpp.model.CppFile` records); the main process links them
    into apps exactly as a single process does.
-2. **Running the rules.** Once every unit is built, a second pool is forked:
-   each worker inherits the whole run (every unit, the cross-unit sets) and
-   runs the rules on the units it is given: a folder at a time (missions there
-   share models), heaviest folders first. It sends back the
-   findings of each unit; the main process merges them in unit order, then
-   applies suppressions and runs the run-wide rules (``unused-suppression``)
-   itself. Caches that rules build lazily on the run (mission models, the app
-   catalogue) are rebuilt in each worker from the same units, so every worker
-   sees what a single process would.
+2. **Running the rules.** Once every unit is built, a second pool of one
+   worker fewer is forked: each worker inherits the whole run (every unit, the
+   cross-unit sets) and runs the rules on the units it is given: a folder at
+   a time (missions there share models), heaviest folders first. The main
+   process takes the lightest folders meanwhile, until it meets the workers
+   (it would otherwise sit idle; one worker fewer is one fork fewer). The
+   workers send back the findings of each unit; the main process merges them
+   in unit order, then applies suppressions and runs the run-wide rules
+   (``unused-suppression``) itself. Caches that rules build lazily on the run
+   (mission models, the app catalogue) are rebuilt in each worker from the
+   same units, so every worker sees what a single process would.
+
+Each task is done by whichever process claims it first (:class:`Claims`, a
+flag per task in memory the workers share): a worker that finds its task
+claimed by the main process returns at once. (Cancelling the pool's futures
+instead races with a worker's death: Python's pool then fails to mark the
+futures left, and the run would wait for them forever.)
 
 Workers are forked, which shares the run with them for free; where ``fork``
 is not available (Windows, macOS, where it is unsafe) a run stays in one
@@ -106,12 +114,42 @@ def stop(workers: Any) -> None:
     workers.shutdown(wait=True, cancel_futures=True)
 
 
+class Claims:
+    """Which of ``n`` tasks some process has taken, in memory shared with the workers
+    forked after it is made: each task is done by the first process to claim it."""
+
+    def __init__(self, n: int) -> None:
+        import multiprocessing
+
+        self._taken = multiprocessing.get_context("fork").Array("b", max(1, n))
+
+    def claim(self, i: int) -> bool:
+        """Take task ``i``; False when another process has it."""
+        with self._taken.get_lock():
+            if self._taken[i]:
+                return False
+            self._taken[i] = 1
+            return True
+
+
+# The claims of the tasks a pool's workers run (set before the pool forks them).
+_CLAIMS: Claims | None = None
+
+
+def _claimed(i: int) -> bool:
+    """In a worker: whether this worker takes task ``i`` (the main process may have it)."""
+    return _CLAIMS is None or _CLAIMS.claim(i)
+
+
 # ------------------------------------------------------------------ phase 1: C++
-def _cpp_folder(paths: list[str]) -> tuple[tuple, list]:
-    """In a worker: read, prefilter and parse one folder of C++ files; with the reads
-    noted meanwhile (see :func:`moos_lint.files.source.keep_journal`)."""
+def _cpp_folder(i: int, paths: list[str]) -> tuple[tuple, list] | None:
+    """In a worker: read, prefilter and parse one folder of C++ files (task ``i``); with
+    the reads noted meanwhile (see :func:`moos_lint.files.source.keep_journal`). None
+    when the main process took the task."""
     from moos_lint.files import source
 
+    if not _claimed(i):
+        return None
     size = source.journal_size()
     facts = cpp_folder_facts(paths)
     return facts, source.journal_since(size)
@@ -139,28 +177,40 @@ def _folder_weight(paths: list[str]) -> int:
 
 def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
     """Submit the C++ folders of ``paths`` to ``workers``, largest first; results in any order."""
+    global _CLAIMS
     folders: dict[str, list[str]] = {}
     for p in paths:
         folders.setdefault(os.path.dirname(p), []).append(p)
     tasks = sorted(folders.values(), key=lambda ps: (-_folder_weight(ps), ps[0]))
-    futures = [workers.submit(_cpp_folder, t) for t in tasks]
-    return _completed(futures, tasks)
+    claims = _CLAIMS = Claims(len(tasks))  # before the first submit, which forks the workers
+    futures: list[Any] = []
+    try:
+        for i, t in enumerate(tasks):
+            futures.append(workers.submit(_cpp_folder, i, t))
+    except Exception:  # a worker died already: the tasks not submitted are done here
+        pass
+    finally:
+        _CLAIMS = None
+    return _completed(futures, tasks, claims)
 
 
-def _completed(futures: list[Any], tasks: list[list[str]]) -> Iterator[Any]:
+def _completed(futures: list[Any], tasks: list[list[str]], claims: Claims) -> Iterator[Any]:
     """The results; the folders no worker has started yet are taken here, smallest first,
     so that this process (done with the missions) shares the tail of the work."""
     from concurrent.futures import as_completed
 
     try:
-        for i in range(len(futures) - 1, -1, -1):
-            if not futures[i].cancel():  # a worker has it (or had it)
+        for i in range(len(tasks) - 1, -1, -1):
+            if not claims.claim(i):  # a worker has it (or had it)
                 break
             yield cpp_folder_facts(tasks[i])
         from moos_lint.files.source import merge_journal
 
-        for fut in as_completed([f for f in futures if not f.cancelled()]):
-            facts, reads = fut.result()
+        for fut in as_completed(futures):
+            got = fut.result()
+            if got is None:  # taken here
+                continue
+            facts, reads = got
             merge_journal(reads)
             yield facts
     except Exception as exc:  # a worker died: the main process redoes the C++
@@ -172,15 +222,18 @@ _REPORTED: set[str] = set()
 
 
 def _unit_rules(
-    indices: list[int],
-) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]]:
-    """In a worker: the findings of some units, the files and folders newly read, and
-    the reads noted meanwhile (see :func:`moos_lint.files.source.keep_journal`)."""
+    b: int, indices: list[int]
+) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]] | None:
+    """In a worker: the findings of some units (task ``b``), the files and folders newly
+    read, and the reads noted meanwhile (see :func:`moos_lint.files.source.keep_journal`).
+    None when the main process took the task."""
     from moos_lint.files import source
 
     run = _RUN
     if run is None:
         raise RuntimeError("a rule worker started without a run")
+    if not _claimed(b):
+        return None
     size = source.journal_size()
     out = []
     for i in indices:
@@ -216,24 +269,48 @@ def rule_batches(units: list[Unit]) -> list[list[int]]:
 def run_rules_parallel(
     run: LintRun, jobs: int, progress: Progress | None = None
 ) -> list[tuple[list[Diagnostic], int]]:
-    """``run.run_rules(unit)`` for every unit, in worker processes; results in unit order.
-    ``progress``: told of each unit done (:mod:`moos_lint.commands.progress`)."""
-    global _RUN
+    """``run.run_rules(unit)`` for every unit, in ``jobs`` processes: this one and
+    ``jobs - 1`` workers; results in unit order. ``progress``: told of each unit done
+    (:mod:`moos_lint.commands.progress`).
+
+    The workers take the folders from the heaviest; this process takes the ones no
+    worker has started yet, from the lightest, until the two meet. It would
+    otherwise sit idle while the workers run, and one worker fewer is one fork
+    fewer and one less copy of the lazily built caches (each worker builds its
+    own, as it does the mission models of its folders)."""
+    global _RUN, _CLAIMS
     batches = rule_batches(run.units)
     results: list[tuple[list[Diagnostic], int]] = [([], 0)] * len(run.units)
     done: set[int] = set()
-    _RUN = run  # before the first submit, which forks the workers
+
+    def here(batch: list[int]) -> None:
+        for i in batch:
+            results[i] = run.run_rules(run.units[i])
+            done.add(i)
+        if progress is not None:
+            progress.advance(len(batch))
+
+    # before the first submit, which forks the workers
+    _RUN = run
+    claims = _CLAIMS = Claims(len(batches))
     _REPORTED.clear()
     _REPORTED.update(run.cache.paths())
-    workers = pool(jobs)
+    workers = pool(max(1, jobs - 1))
     from concurrent.futures import as_completed
 
     from moos_lint.files.source import merge_journal
 
     try:
-        futures = [workers.submit(_unit_rules, b) for b in batches]
+        futures = [workers.submit(_unit_rules, b, batch) for b, batch in enumerate(batches)]
+        for b in range(len(batches) - 1, -1, -1):
+            if not claims.claim(b):  # a worker has it (or had it)
+                break
+            here(batches[b])
         for fut in as_completed(futures):
-            batch, read, probed, reads = fut.result()
+            got = fut.result()
+            if got is None:  # taken here
+                continue
+            batch, read, probed, reads = got
             merge_journal(reads)
             for i, diags, errors in batch:
                 results[i] = (diags, errors)
@@ -247,6 +324,7 @@ def run_rules_parallel(
         pass
     finally:
         _RUN = None
+        _CLAIMS = None
         stop(workers)
     for i, unit in enumerate(run.units):
         if i not in done:
@@ -256,6 +334,7 @@ def run_rules_parallel(
 
 __all__ = [
     "MIN_FILES",
+    "Claims",
     "default_jobs",
     "effective_jobs",
     "pool",

@@ -25,8 +25,10 @@ from moos_lint.frontends.cpp.model import (
     IOUse,
     MailKey,
     Name,
+    OriginRead,
     Publication,
     Subscription,
+    TrigUse,
     Value,
 )
 from moos_lint.frontends.cpp.names import (
@@ -44,6 +46,12 @@ NOTIFY_MSG = "CMOOSMsg"
 NOTIFY_KINDS = ("MOOS_NOTIFY", "'N'")
 SUBSCRIBE = {"Register"}
 CONFIG_CALLS = {"GetConfigurationParam", "GetConfigurationParamNoCase", "GetConfiguration"}
+#: ``m_MissionReader.GetValue("LatOrigin", lat)``: a top-of-file key of the mission
+GLOBAL_VALUE = "GetValue"
+#: the keys of the local grid's origin, as apps read them
+ORIGIN_KEYS = {"latorigin", "longorigin"}
+#: C++'s sine, cosine and tangent (``std::`` or not; float and long double forms): radians in
+TRIG = {f"{f}{s}" for f in ("sin", "cos", "tan") for s in ("", "f", "l")}
 STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
 PREFIX_CALLS = {"strBegins", "find", "compare", "rfind", "starts_with", "MOOSStrCmpN"}
 IO_TYPES = re.compile(
@@ -51,12 +59,13 @@ IO_TYPES = re.compile(
 )
 #: a MOOS client of another community: a bridge's sockets carry MOOS itself
 MOOS_CLIENT_TYPES = re.compile(r"^(?:CMOOSCommClient|MOOSAsyncCommClient|CMOOSAsyncCommClient)$")
-SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp")
+SOCKET_TYPES = re.compile(r"[Ss]ocket|TCP|UDP|Udp|Tcp|^gpsmm$")  # gpsmm: libgps's gpsd client
 DEVICE_STRING = re.compile(
     r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video|input/|js\d|gpiochip)"
 )
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
-SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom"}
+#: ``gps_open(host, port, &data)``: libgps's C client of the gpsd service
+SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom", "gps_open"}
 #: MAVSDK's ``Mavsdk::add_*_connection(url)``: a link to an autopilot over UDP, TCP or serial
 VEHICLE_LINK_CALLS = {
     "add_any_connection",
@@ -83,6 +92,8 @@ CALLED = (
     | SUBSCRIBE
     | {"Run"}
     | CONFIG_CALLS
+    | {GLOBAL_VALUE}
+    | TRIG
     | BAUD_CALLS
     | SOCKET_CALLS
     | VEHICLE_LINK_CALLS
@@ -1051,6 +1062,18 @@ class Extractor:
                 )
             )
 
+    def _trig(self, call: Any, name: str, arg: Any) -> None:
+        """A sine, cosine or tangent of a value that is not a number written out: its
+        value, for the unit it is in (trig-of-degrees)."""
+        if self.evaluator is None or in_if0(call) or self._fn_of(call) == "":
+            return
+        s = strip_parens(arg)
+        if s is None or s.type == "number_literal":
+            return
+        value = self.value(arg)
+        value.abstract = self.evaluator.of(self.pf, arg)
+        self.out.trig_uses.append(TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call)))
+
     def _notify_msg(self, node: Any, args: Any) -> None:
         """``CMOOSMsg(MOOS_NOTIFY, NAME, VALUE[, time])``: a notification built to be posted."""
         argv = [a for a in args.named_children if a.type != "comment"]
@@ -1147,6 +1170,12 @@ class Extractor:
                 if lit is not None:
                     out.config_params.append(ConfigParam(lit.lower(), spans.of(a)))
                     break
+        elif name in TRIG and len(argv) == 1 and fn.type in ("identifier", "qualified_identifier"):
+            self._trig(call, name, argv[0])
+        elif name == GLOBAL_VALUE and argv and fn.type == "field_expression":
+            key = string_value(strip_parens(argv[0]))
+            if key is not None and key.lower() in ORIGIN_KEYS:
+                out.origin_reads.append(OriginRead(key, spans.of(call), _optional_read(call)))
         elif name in GEODESY_ARGUMENTS and not in_if0(call):
             given = [a for a in argv if a.type != "comment"]
             if len(given) == 4:
@@ -1395,6 +1424,28 @@ _NOT_HANDLERS = {
     "c_str",
 }
 _TESTS = STRCMP | PREFIX_CALLS | {"strEnds", "strContains", "tolower", "toupper", "MOOSToUpper"}
+
+
+def _optional_read(call: Any) -> bool:
+    """The call is the test of an ``if`` that has no ``else``, alone or joined by
+    ``&&`` (``if (GetValue("LatOrigin", a) && GetValue("LongOrigin", b)) { ... }``): the
+    code goes on the same way when the value is missing. Negated (``if (!GetValue(...))``),
+    kept in a flag (``bool ok = GetValue(...)``) or followed by an ``else``, the app
+    reacts to the value's absence."""
+    p = call.parent
+    while p is not None and (
+        p.type == "parenthesized_expression"
+        or (p.type == "binary_expression" and text(p.child_by_field_name("operator")) == "&&")
+    ):
+        p = p.parent
+    if p is None or p.type != "condition_clause":
+        return False
+    stmt = p.parent
+    return (
+        stmt is not None
+        and stmt.type == "if_statement"
+        and stmt.child_by_field_name("alternative") is None
+    )
 
 
 def _in_condition(n: Any) -> bool:

@@ -114,6 +114,28 @@ class ConfigParam:
 
 
 @dataclass(slots=True)
+class TrigUse:
+    """``sin(x)``, ``cos(x)`` or ``tan(x)`` (C++'s, which take radians): the function and
+    its argument, with the argument's value (:mod:`moos_lint.frontends.cpp.values`)."""
+
+    function: str
+    value: Value
+    span: Span  # the call
+    within: str  # the enclosing function
+
+
+@dataclass(slots=True)
+class OriginRead:
+    """``m_MissionReader.GetValue("LatOrigin", lat)``: a read of the local grid's origin.
+    ``optional``: the read is the test of an ``if`` with no ``else`` (the app goes on
+    without an origin and says nothing: it makes its own, or does without)."""
+
+    key: str
+    span: Span
+    optional: bool
+
+
+@dataclass(slots=True)
 class IOUse:
     """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network
     (``moos``: a client of another MOOS community, the I/O of a bridge)."""
@@ -169,12 +191,14 @@ class CppFile:
     ned_writes: list[Assignment] = field(default_factory=list)
     mail_keys: list[MailKey] = field(default_factory=list)
     config_params: list[ConfigParam] = field(default_factory=list)
+    origin_reads: list[OriginRead] = field(default_factory=list)
     io: list[IOUse] = field(default_factory=list)
     #: MOOS variables this file converts from degrees on arrival: (name, span, helper)
     consumed_degrees: list[tuple[str, Span, str]] = field(default_factory=list)
     run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
     geodesy_calls: list[GeodesyCall] = field(default_factory=list)
     decimal_commas: list[DecimalComma] = field(default_factory=list)
+    trig_uses: list[TrigUse] = field(default_factory=list)
     has_main: bool = False
     has_on_new_mail: bool = False
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)

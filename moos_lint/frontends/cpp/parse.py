@@ -16,7 +16,8 @@ QUERY_TEMPLATE = r"""
 (struct_specifier name: (_) @cls.name (base_class_clause) @cls.bases) @cls
 (call_expression function: (_) @call.fn arguments: (argument_list) @call.args
   (#match? @call.fn "CALLEES")) @call
-(binary_expression left: (_) @cmp.l operator: ["==" "!="] right: (string_literal) @cmp.r) @cmp
+[(binary_expression left: (_) @cmp.l operator: ["==" "!="] right: (string_literal) @cmp.r)
+ (binary_expression left: (string_literal) @cmp.r operator: ["==" "!="] right: (_) @cmp.l)] @cmp
 (init_declarator declarator: (_) @asg.l value: (_) @asg.r) @asg
 (assignment_expression left: (_) @asg.l right: (_) @asg.r) @asg
 (field_declaration declarator: (_) @asg.l default_value: (_) @asg.r) @asg
@@ -25,7 +26,7 @@ QUERY_TEMPLATE = r"""
 ((string_literal) @str (#match? @str "/dev/"))
 (preproc_include path: (_) @inc)
 ((type_identifier) @type
-  (#match? @type "Serial|[Ss]ocket|CAN|[Uu]sb|USB|termios|TCP|UDP|Udp|Tcp|CommClient"))
+  (#match? @type "Serial|[Ss]ocket|CAN|[Uu]sb|USB|termios|TCP|UDP|Udp|Tcp|CommClient|^gpsmm$"))
 ((namespace_identifier) @ns (#any-of? @ns "asio" "serial"))
 (function_definition declarator: (_) @fn.decl) @fn
 """

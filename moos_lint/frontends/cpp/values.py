@@ -2155,7 +2155,9 @@ def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = N
     Calls to functions defined outside an app's folder are resolved by name across
     ``paths`` (a file is parsed only when it may define one), and a variable that
     another app converts from degrees on arrival (``MOOSDeg2Rad(msg.GetDouble())``)
-    is taken to be published in degrees when its producer's value is unknown.
+    is taken to be published in degrees when its producer's value is unknown. The
+    arguments of ``sin``, ``cos`` and ``tan`` are finished too; one read by mail of a
+    variable the repository's apps publish, not known to be in degrees, is unknown.
     ``compiled``: libclang's facts (:class:`Compiled`), for the files it parsed.
     """
     from moos_lint.files.source import read_bytes
@@ -2165,11 +2167,11 @@ def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = N
         for f in app.files:
             for var, span, helper in f.consumed_degrees:
                 consumers.setdefault(var, (app.folder, span, helper))
+    trig = [t.value for app in apps for f in app.files for t in f.trig_uses]
     waiting = [
-        pub.value.abstract
-        for app in apps
-        for pub in app.publications
-        if pub.value is not None and pub.value.abstract and pub.value.abstract.pending
+        v.abstract
+        for v in [*(pub.value for app in apps for pub in app.publications), *trig]
+        if v is not None and v.abstract and v.abstract.pending
     ]
     resolver: RepositoryResolver | None = None
     if waiting:
@@ -2193,7 +2195,30 @@ def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = N
                         ),
                     )
             pub.value.abstract = v
+    # a variable the repository's own apps publish with a value not known to be in
+    # degrees carries what they publish, not what the conventions say it holds
+    not_degrees = {
+        pub.name.text
+        for app in apps
+        for pub in app.publications
+        if pub.name.text
+        and (pub.value is None or pub.value.abstract is None or pub.value.abstract.unit != "deg")
+    }
+    for value in trig:  # the arguments of sin, cos and tan (trig-of-degrees)
+        if value.abstract is not None and value.abstract.pending and resolver is not None:
+            value.abstract = resolve_pending(value.abstract, resolver)
+        if value.abstract is not None and mail_source(value.abstract) in not_degrees:
+            value.abstract = UNKNOWN
     _siblings(apps)
+
+
+_MAIL_STEP = re.compile(r"^(\S+) read by mail at ")
+
+
+def mail_source(v: AbstractValue) -> str | None:
+    """The MOOS variable whose mail a value's unit comes from (its first reason), if any."""
+    m = _MAIL_STEP.match(v.why[0]) if v.why else None
+    return m.group(1) if m else None
 
 
 def _siblings(apps: list[Any]) -> None:

@@ -172,9 +172,8 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
                     if param is None and has_macro(text):
                         continue  # the macro's value (given at launch) supplies the line
                     if param is None:
-                        bf.invalid.append(
-                            (src, "a Behavior block line needs the form `parameter = value`")
-                        )
+                        why = "a Behavior block line needs the form `parameter = value`"
+                        bf.invalid.append((src, _CONFLICT if conflict_marker(text) else why))
                     else:
                         behavior.params.append(param)
                     continue
@@ -232,13 +231,15 @@ def parse_bhv(expansion: Expansion) -> BehaviorFile:
             if has_macro(text):
                 continue  # a line an nsplug macro supplies at launch: not known here
             if conflict_marker(text):
-                marker = "a merge-conflict marker: the file was committed mid-merge"
-                bf.invalid.append((src, marker))
+                bf.invalid.append((src, _CONFLICT))
                 continue
             bf.invalid.append((src, "the helm does not understand this line"))
     if state in ("bhv", "bhv-wait") and behavior is not None:
         bf.unclosed.append(behavior.header)
     return bf
+
+
+_CONFLICT = "a merge-conflict marker: the file was committed mid-merge"
 
 
 def _is_keyword(text: str) -> bool:

@@ -8,7 +8,8 @@ code does device I/O: a serial-port class (`CMOOSSerialPort`,
 joystick's `/dev/input/js0`, ...), SocketCAN or libusb. A `p` app is also
 reported for socket I/O (`socket`, `connect`,
 `bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
-`add_any_connection`): a vehicle, a sensor or a service spoken to in a
+`add_any_connection`, a client of the gpsd service: libgps's `gpsmm` or
+`gps_open`): a vehicle, a sensor or a service spoken to in a
 protocol that is not MOOS. The finding is on the first such use. The app's
 own classes are no evidence by their names (`class UdpDecoder : public
 CMOOSApp` decodes what another app received): what they do shows in their

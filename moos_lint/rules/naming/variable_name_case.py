@@ -17,7 +17,11 @@ digits and `_`, wherever a configuration value names a variable:
   in `moos_lint/semantics/variables.py`).
 
 Each name is reported once per file, at its first place, with the number of
-other places in the file (and its includes) that use it.
+other places in the file (and its includes) that use it. In a mission, when
+nothing publishes the name as written but an app or behavior of the mission
+publishes it in upper case (`Log = Nav_Speed` beside uSimMarine's `NAV_SPEED`),
+the finding says who: the name is then not only of the wrong style, it reads
+nothing.
 
 Wildcards (`*`, `?`) are accepted where the app accepts them (pLogger
 `WildCardPattern` / `WildCardOmitPattern`, pShare `output`). Elsewhere a
@@ -126,6 +130,7 @@ def check(ctx):
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
+            message += _posted_in_upper_case(ctx, ref.name)
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
         seen.add((ref.span.line, ref.name))
         found.setdefault(ref.name, []).append((ref, message, subject))
@@ -139,6 +144,21 @@ def check(ctx):
         yield ctx.report(ref.span, message, line=ref.line, subject=subject)
     if ctx.moos is not None:
         yield from _configured(ctx, allow, seen)
+
+
+def _posted_in_upper_case(ctx, name: str) -> str:
+    """In a mission: who publishes the name in upper case, when nothing in the mission
+    publishes it as written (the mistake is then not only of style)."""
+    if ctx.moos is None or not ctx.moos.is_mission or "*" in name or "?" in name:
+        return ""
+    from moos_lint.semantics.mission_model import mission_model
+
+    publishers = mission_model(ctx).publishers
+    upper = name.upper()
+    if name in publishers or upper not in publishers:
+        return ""
+    who = publishers[upper][0].who
+    return f": {who} publishes `{upper}`, and MOOS names are case-sensitive"
 
 
 def _configured(ctx, allow, seen):

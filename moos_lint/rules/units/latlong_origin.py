@@ -63,8 +63,11 @@ LongOrigin = -70.330400
   uSimMarine, uSimMarineV22, uSimMarineV23, pBasicContactMgr,
   pContactMgrV20, uFldNodeComms, uFldObstacleSim, uFldBeaconRangeSensor,
   uFldContactRangeSensor, uFldCollisionDetect and uFldCollObDetect read it;
-  an app linted in the same run reads it when its C++ names `LatOrigin`; a
-  user catalogue says so with `needs_origin = true`.
+  an app linted in the same run reads it when its C++ names `LatOrigin`, unless
+  each read is the test of an `if` with no `else`
+  (`if (m_MissionReader.GetValue("LatOrigin", lat) && ...) { ... }`: the app
+  goes on without an origin and says nothing, as one that makes its own from
+  its first fixes does); a user catalogue says so with `needs_origin = true`.
 """
 
 import math

@@ -447,6 +447,18 @@ OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
 TEMPLATE_KEYS = frozenset({"foo", "bar"})
 #: the app reads the origin of the local grid (the stock catalogue's test, generate.py)
 READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
+
+
+def _needs_origin(app: AppModel, text: str) -> bool:
+    """The app reads the origin of the local grid and needs it: not when each of its
+    reads is the test of an ``if`` without ``else`` (it goes on without one, silently,
+    as an app that makes its own origin from its first fixes does)."""
+    if not READS_ORIGIN.search(text):
+        return False
+    reads = [r for f in app.files for r in f.origin_reads]
+    return not reads or not all(r.optional for r in reads)
+
+
 #: ``else handled = m_viewer.setParam(param, value);``: a final ``else`` that hands any
 #: other key to code elsewhere (a library), whose keys the app's own files do not list; or
 #: ``bool handled = m_gui->setRadioCastAttrib(param, value);``: every key handed over
@@ -499,7 +511,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         publishes_dynamic=dynamic,
         subscribes={s.name.text for s in app.subscriptions if s.name.text},
         subscribes_dynamic=any(s.name.dynamic for s in app.subscriptions),
-        needs_origin=bool(READS_ORIGIN.search(text)),
+        needs_origin=_needs_origin(app, text),
         needs_process_config=_needs_block(app, text),
         provenance=f"C++ {_shown(app.folder)}",
         published_keys=_published_keys(app),
