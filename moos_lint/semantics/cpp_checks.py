@@ -197,6 +197,66 @@ def trig_of_degrees(app: AppModel) -> Iterator[Finding]:
         )
 
 
+#: a published component's name: what comes before its axis, and the axis
+_AXIS_NAME = re.compile(r"^(?P<vector>\w+?)_(?P<axis>[XYZ])$")
+#: a component read from a vector: ``v.x``, ``p->y``, ``v.z()``, ``v[2]``, negated or not
+_COMPONENT = re.compile(
+    r"^(?P<neg>-?)\s*(?:(?P<obj>.+?)\s*(?:\.|->)\s*(?P<field>[xyzXYZ])(?:\(\))?"
+    r"|(?P<arr>.+?)\[\s*(?P<index>[012])\s*\])$"
+)
+
+
+def _component(p: Publication) -> tuple[str, str, bool] | None:
+    """(the vector, the axis read from it, negated) of a value that is one component of
+    a vector, as written or as its local was set."""
+    for written in (p.value.text, p.value.expanded) if p.value is not None else ():
+        m = _COMPONENT.match(" ".join(written.split()))
+        if m is None:
+            continue
+        if m.group("obj") is not None:
+            return m.group("obj"), m.group("field").lower(), bool(m.group("neg"))
+        return m.group("arr"), "xyz"[int(m.group("index"))], bool(m.group("neg"))
+    return None
+
+
+def mirrored_axes(app: AppModel) -> Iterator[Finding]:
+    """A vector's three components published with the vertical and a horizontal axis
+    swapped and the swap not undone by a sign: a mirror image, which no rotation of a
+    sensor gives."""
+    groups: dict[tuple[str, str], dict[str, tuple[str, bool, Publication]]] = {}
+    for p in app.publications:
+        m = _AXIS_NAME.match(p.name.text or "")
+        found = _component(p) if m else None
+        if m is None or found is None:
+            continue
+        obj, source, negated = found
+        axes = groups.setdefault((m.group("vector"), obj), {})
+        axes.setdefault(m.group("axis").lower(), (source, negated, p))
+    for (vector, obj), axes in groups.items():
+        if len(axes) < 3 or sorted(src for src, _, _ in axes.values()) != ["x", "y", "z"]:
+            continue
+        order = [axes[a][0] for a in "xyz"]
+        if order[2] == "z":
+            continue  # the vertical stays vertical (NED to ENU swaps x and y only)
+        swaps = sum(1 for a, b in ((0, 1), (0, 2), (1, 2)) if order[a] > order[b])
+        negations = sum(1 for _, neg, _ in axes.values() if neg)
+        if (swaps + negations) % 2 == 0:
+            continue  # a rotation: a sensor mounted on its side
+        z_from = axes["z"][0]
+        published = ", ".join(
+            f"`{axes[a][2].name.text}` = `{'-' if axes[a][1] else ''}.{axes[a][0]}`" for a in "xyz"
+        )
+        where = axes["z"][2]
+        yield (
+            where.value.span,  # type: ignore[union-attr]
+            f"`{vector}` is published from `{values.brief(obj, 40)}` with its axes exchanged "
+            f"({published}): the vertical is taken from a horizontal axis, and the "
+            "exchange with its signs is a mirror image (a left-handed frame, which no "
+            f"mounting of the sensor gives): publish `.{z_from}` under its own axis, or "
+            "change one sign if the sensor is turned on its side",
+        )
+
+
 def angle_from_east(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, angles.is_heading_var):
         if v is None or v.sense != "math":

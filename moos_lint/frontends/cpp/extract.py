@@ -1072,6 +1072,8 @@ class Extractor:
             return
         value = self.value(arg)
         value.abstract = self.evaluator.of(self.pf, arg)
+        if value.abstract.unit is None and value.abstract.pending is None:
+            value.abstract = self.evaluator.degree_term(self.pf, arg) or value.abstract
         self.out.trig_uses.append(TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call)))
 
     def _notify_msg(self, node: Any, args: Any) -> None:

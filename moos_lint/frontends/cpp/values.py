@@ -827,6 +827,39 @@ class Evaluator:
                 return h
         return v
 
+    def degree_term(self, pf: Any, node: Any) -> AbstractValue | None:
+        """A term of a sum or difference known to be in degrees (not by a name alone), when
+        no term is in radians: ``90 - (heading + offset)`` is in degrees whatever the
+        offset is, as far as a sine is concerned (a sum with degrees in it is not radians)."""
+        terms: list[Any] = []
+        stack = [node]
+        while stack:
+            n = strip(stack.pop())
+            if n is None:
+                continue
+            if n.type == "binary_expression" and node_text(n.child_by_field_name("operator")) in (
+                "+",
+                "-",
+            ):
+                stack += [n.child_by_field_name("left"), n.child_by_field_name("right")]
+            elif n.type == "unary_expression" and node_text(n.child_by_field_name("operator")) in (
+                "-",
+                "+",
+            ):
+                stack.append(n.child_by_field_name("argument"))
+            else:
+                terms.append(n)
+        if len(terms) < 2:
+            return None
+        found = None
+        for t in terms:
+            v = self.of(pf, t)
+            if v.unit == "rad":
+                return None  # radians and degrees mixed: which one is wrong is not known
+            if found is None and v.unit == "deg" and not v.hint:
+                found = v.because(f"a term of `{brief(node_text(node))}`")
+        return found
+
     def _hint(self, pf: Any, node: Any, v: AbstractValue) -> AbstractValue | None:
         """The unit a same-line comment or a print label gives ``node``'s value."""
         row = node.start_point[0]

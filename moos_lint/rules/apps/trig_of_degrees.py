@@ -4,8 +4,11 @@
 Reports a call of C++'s `sin`, `cos` or `tan` (`std::` or not, and their
 `f`/`l` forms) whose argument is known to be in degrees: a heading read by mail
 (`NAV_HEADING`, `DESIRED_HEADING`), a value converted to degrees
-(`MOOSRad2Deg`, `* 180 / M_PI`), or a sum or difference of one with numbers
-(`cos(90 - heading)`). The value comes from moos-lint's value analysis of C++,
+(`MOOSRad2Deg`, `* 180 / M_PI`), or a sum or difference with such a term in
+it, whatever the other terms are (`cos(90 - heading)`,
+`sin(heading + tan(dx / dy))`: a sum with degrees in it is not radians),
+unless another term is in radians (which of the two is wrong is then not
+known). The value comes from moos-lint's value analysis of C++,
 which follows it through locals, members, functions anywhere in the repository
 and struct fields (README, "C++ apps"); the finding says why, as a chain.
 
