@@ -389,6 +389,19 @@ _fact(
     "reads its block only when there is one (ivp/src/uMAC/AppCastMonitor.cpp:177)",
 )
 _fact(
+    "pLogger",
+    "!needs_process_config",
+    "without a block it warns 'unusual but not terminal' and logs every variable "
+    "(wildcard logging) (MOOS_Jul2724/MOOSEssentials/Essentials/pLogger/MOOSLogger.cpp:"
+    "363, 393)",
+)
+_fact(
+    "uFunctionVis",
+    "!needs_process_config",
+    "a plain CMOOSApp whose start-up reads no configuration "
+    "(ivp/src/uFunctionVis/FV_MOOSApp.cpp:155-159)",
+)
+_fact(
     "uPokeDB",
     "!needs_process_config",
     "ignores a missing block: what it pokes comes from the command line "

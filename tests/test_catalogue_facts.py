@@ -28,7 +28,9 @@ def test_the_stock_catalogue_loads_every_start_up_fact():
     assert xms.observer and xms.launched_manually and not xms.needs_process_config
     # AppCastingMOOSApp posts "No mission config block found" for uHelmScope
     assert cat.app("uHelmScope").needs_process_config
-    assert cat.app("pLogger").needs_process_config and cat.app("pLogger").observer
+    # without a block pLogger logs every variable (MOOSLogger.cpp:363, 393)
+    assert not cat.app("pLogger").needs_process_config and cat.app("pLogger").observer
+    assert not cat.app("uFunctionVis").needs_process_config  # it reads no configuration
     assert not cat.app("uMemWatch").subscribes_dynamic  # only <CLIENT>_PID
     assert cat.needs_process_config("MOOSDB") is False
     assert cat.needs_process_config("pAntler") is False

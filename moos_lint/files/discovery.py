@@ -9,7 +9,7 @@ import re
 from pathlib import Path
 
 from moos_lint.files.gitignore import Frame, Ignorer, ignored
-from moos_lint.files.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES
+from moos_lint.files.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES, TEMPLATE_SUFFIXES
 
 #: folders and files never linted, whatever the configuration says
 DEFAULT_EXCLUDE = (
@@ -34,6 +34,38 @@ def kind_of(path: str) -> str | None:
         return "bhv"
     if low.endswith(CPP_SUFFIXES):
         return "cpp"
+    if low.endswith(TEMPLATE_SUFFIXES):
+        return template_kind(path)
+    return None
+
+
+#: what makes a template a mission, or a behavior file
+_MISSION_LINE = re.compile(rb"(?im)^[ \t]*ProcessConfig[ \t]*=")
+_BEHAVIOR_LINE = re.compile(rb"(?im)^[ \t]*Behavior[ \t]*=")
+
+
+def template_kind(path: str) -> str | None:
+    """The kind of an nsplug template named for no kind (``moos.meta``), from its text:
+    ``ProcessConfig =`` lines make a mission, ``Behavior =`` lines a behavior file;
+    anything else with the suffix (a Unity or TensorFlow ``.meta``) is not MOOS."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return _sniffed(path, st.st_mtime_ns, st.st_size)
+
+
+@functools.lru_cache(maxsize=1024)
+def _sniffed(path: str, _mtime: int, _size: int) -> str | None:
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(64 * 1024)
+    except OSError:
+        return None
+    if _MISSION_LINE.search(head):
+        return "moos"
+    if _BEHAVIOR_LINE.search(head):
+        return "bhv"
     return None
 
 
@@ -116,7 +148,9 @@ def discover(
             missing.append(str(given))
             continue
         if not os.path.isdir(p):
-            if not module_definition(p):
+            # (a template's suffix is shared with other tools' files: a Unity ``.meta``)
+            foreign = p.lower().endswith(TEMPLATE_SUFFIXES) and kind_of(p) is None
+            if not module_definition(p) and not foreign:
                 files.add(p)
             continue
         seen_dirs: set[tuple[int, int]] = set()
@@ -161,7 +195,9 @@ def discover(
                 frames[dirpath] = frame
             present = set(filenames)
             for f in filenames:
-                if kind_of(f) is None:
+                # (a template named for no kind is read to know its kind)
+                named = os.path.join(dirpath, f) if f.lower().endswith(TEMPLATE_SUFFIXES) else f
+                if kind_of(named) is None:
                     continue
                 if f.endswith("++"):
                     continue  # pAntler's copy of a mission it launched (``clean.sh`` removes it)

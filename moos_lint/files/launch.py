@@ -151,6 +151,8 @@ def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
 
 
 _REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
+#: ``nsplug IN OUT ...``: the file nsplug writes (options may come first)
+_NSPLUG_OUTPUT = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+[^\s;&|-]\S*[ \t]+([^\s;&|-]\S*)")
 _RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
 
 
@@ -192,9 +194,10 @@ def _read_scripts(stamps: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, 
 
 
 def made_by_scripts(folder: str) -> frozenset[str]:
-    """The names of the files the folder's shell scripts write (``> obstacles.txt``) or
+    """The names of the files the folder's shell scripts (and those of its ``scripts``
+    folder) write (``> obstacles.txt``, nsplug's output: ``nsplug bhv.meta current.bhv``) or
     clean away (``rm -f obstacles.txt``): files that a launch makes, absent at rest."""
-    return _made_by(shell_scripts(folder))
+    return _made_by(shell_scripts(folder) + shell_scripts(os.path.join(folder, "scripts")))
 
 
 @functools.lru_cache(maxsize=256)
@@ -204,6 +207,9 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
         for line in text.splitlines():
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
+            m = _NSPLUG_OUTPUT.search(code)
+            if m and "$" not in m.group(1):
+                out.add(os.path.basename(m.group(1).strip("\"'")))
             for m in _RM.finditer(code):
                 for word in m.group(1).split():
                     word = word.strip("\"'")

@@ -21,6 +21,9 @@ class Kind(enum.Enum):
 MOOS_SUFFIXES = (".moos", ".moos++", ".plug", ".def")
 #: helm behavior files
 BHV_SUFFIXES = (".bhv",)
+#: nsplug templates named for no kind (``moos.meta``, ``ecomapper_bhv.meta``: launch
+#: scripts run ``nsplug moos.meta targ.moos``); their text says which kind they are
+TEMPLATE_SUFFIXES = (".meta",)
 #: C++ translation units
 CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx")
 #: C++ headers
@@ -60,6 +63,7 @@ __all__ = [
     "CPP_SUFFIXES",
     "MOOS_SUFFIXES",
     "SCRIPT_SUFFIXES",
+    "TEMPLATE_SUFFIXES",
     "Kind",
     "is_cpp",
     "is_cpp_source",

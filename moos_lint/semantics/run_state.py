@@ -7,7 +7,9 @@ typed accessor:
 - ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
 - ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``,
   ``mission_files``: :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
-- ``repo_cpp_stems``: :func:`moos_lint.rules.mission._behaviors.repo_classes`;
+- ``repo_cpp_stems``, ``repo_behavior_files``:
+  :func:`moos_lint.rules.mission._behaviors.repo_classes`;
+- ``repo_behavior_posts``: :func:`moos_lint.rules.mission._behaviors.repo_behavior_posts`;
 - ``repo_globals``: :func:`moos_lint.rules.hygiene.unknown_key._repo_globals`.
 
 Those modules see the run through :class:`RunView`, the part of it they read,
@@ -50,6 +52,11 @@ class RunMemos:
     mission_files: dict[str, list[str]] = field(default_factory=dict)
     #: the names of the C++ files and classes of the project: lower case -> as written
     repo_cpp_stems: dict[str, str] | None = None
+    #: the project's ``BHV_*.cpp`` files: lower-case class name -> paths (walked with the stems)
+    repo_behavior_files: dict[str, list[str]] = field(default_factory=dict)
+    #: behavior kind (lower case) -> the variables the project's own C++ of it posts, and
+    #: whether those are all it may post
+    repo_behavior_posts: dict[str, tuple[frozenset[str], bool]] = field(default_factory=dict)
     #: ``KIND@folder`` -> the keys the project's own copy of behavior KIND, beside a helm
     #: it builds itself above that folder, compares with
     repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)

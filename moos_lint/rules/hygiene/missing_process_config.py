@@ -14,8 +14,9 @@ or alias says, and reads only the block of that name.
 ## Why is this bad?
 The process starts on its built-in defaults. MOOS-IvP apps built on
 AppCastingMOOSApp then post the configuration warning "No mission config block
-found for NAME"; core MOOS apps (pLogger, pShare) say nothing and silently log
-or share nothing. The usual causes are a forgotten `#include plug_X.moos`, an
+found for NAME"; core MOOS apps such as pShare say nothing and silently share
+nothing. (pLogger is the exception: without a block it logs every variable.)
+The usual causes are a forgotten `#include plug_X.moos`, an
 `#include plugs.moos <tag>` naming a section the plug file lacks, or an alias
 (`~ pShare_B`) whose block was never written.
 
@@ -24,9 +25,9 @@ or share nothing. The usual causes are a forgotten `#include plug_X.moos`, an
 ProcessConfig = ANTLER
 {
   Run = MOOSDB  @ NewConsole = false
-  Run = pLogger @ NewConsole = false
+  Run = pShare  @ NewConsole = false
 }
-// no "ProcessConfig = pLogger" anywhere
+// no "ProcessConfig = pShare" anywhere
 ```
 
 ## How to fix
@@ -40,7 +41,8 @@ it names the existing block.
   catalogue decides, from the sources: the IvP apps that declare
   `must_have_moosblock=false` at start-up (pRealm, pMissionHash, iSay,
   uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS), those that read their
-  block only when there is one (uMAC, uPokeDB), MOOSDB and the uMS scope
+  block only when there is one (uMAC, uPokeDB), or read none (uFunctionVis),
+  pLogger (without a block it logs every variable), MOOSDB and the uMS scope
   (top-of-file settings only) and pAntler (it reads the ANTLER block); an app
   linted in the same run needs its block unless its C++ declares it optional,
   or it is a plain CMOOSApp whose start-up compares keys with the `foo` and

@@ -38,7 +38,11 @@ def repo_classes(ctx: Context) -> dict[str, str]:
         dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
         for name in files:
             if is_cpp(name):
-                stems.add(os.path.splitext(name)[0])
+                stem = os.path.splitext(name)[0]
+                stems.add(stem)
+                if name.lower().startswith("bhv_") and name.lower().endswith(".cpp"):
+                    files_of = run.memos.repo_behavior_files.setdefault(stem.lower(), [])
+                    files_of.append(os.path.join(dirpath, name))
             if name == "CMakeLists.txt":
                 # the helm loads a behavior by its library's name (libBHV_X.so)
                 stems.update(_library_behaviors(os.path.join(dirpath, name)))
@@ -50,6 +54,42 @@ def repo_classes(ctx: Context) -> dict[str, str]:
             break
     run.memos.repo_cpp_stems = found = {s.lower(): s for s in sorted(stems)}
     return found
+
+
+#: ``postMessage("VAR", value)`` and its kin: what an IvP behavior posts, and under
+#: which name (ivp/src/lib_behaviors/IvPBehavior.h:128-134; postEMessage and
+#: postWMessage take a text, not a name)
+_POST = re.compile(rb"post(?:Bool|Int|Repeatable|)Message\s*\(\s*([^,)]*)")
+_NAME = re.compile(rb'^"([A-Za-z_]\w*)"\s*$')
+
+
+def repo_behavior_posts(ctx: Context, kind: str) -> tuple[frozenset[str], bool]:
+    """What the project's own C++ of behavior ``kind`` (``BHV_FrontSearch.cpp``) posts
+    (``postMessage("VNAME", m_name)``), and whether that is all it may post: its file was
+    found and every post names its variable as a literal."""
+    memo = ctx.run.memos.repo_behavior_posts
+    low = kind.lower()
+    if low in memo:
+        return memo[low]
+    repo_classes(ctx)  # (the walk finds the files)
+    paths = ctx.run.memos.repo_behavior_files.get(low, [])
+    found: set[str] = set()
+    known = bool(paths)
+    for path in paths:
+        try:
+            with open(path, "rb") as fh:
+                data = fh.read(1024 * 1024)
+        except OSError:
+            known = False
+            continue
+        for m in _POST.finditer(data):
+            name = _NAME.match(m.group(1).strip())
+            if name is None:
+                known = False  # a name held elsewhere (``postMessage(m_report_var, ...)``)
+            else:
+                found.add(name.group(1).decode("ascii"))
+    memo[low] = answer = (frozenset(found), known)
+    return answer
 
 
 #: literal first (``class(?<=\bclass)`` is ``\bclass``): a leading ``\b`` is tried at every byte

@@ -82,7 +82,10 @@ MOOS-IvP caveats, deliberately not reported:
   pMarineViewer does): its own files do not list those keys, so it is not
   judged. An app of the repository that the stock catalogue also knows (a
   fork of a MOOS-IvP app, or MOOS-IvP itself) keeps the stock keys too: the
-  keys of the libraries it links (`flip:N` for pEchoVar).
+  keys of the libraries it links (`flip:N` for pEchoVar);
+- a key one of two apps of one name in the linted repository reads (a course
+  repository holding two students' `pPointAssign`): which copy a mission runs
+  depends on what its machine built.
 """
 
 import difflib

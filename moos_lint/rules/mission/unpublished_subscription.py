@@ -22,9 +22,15 @@ variable that a logic condition waits for: behavior `condition` and
   uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
   in its folder publish.
 
-When the mission launches apps that the catalogue does not know, or names
-behavior files the model cannot find, the finding is an `info` that says the
-check was incomplete, and names what was not known.
+- a behavior of the project's own (a kind the catalogue does not describe,
+  whose `BHV_X.cpp` is under the project root) that posts it by name
+  (`postMessage("VNAME", m_name)`, `postBoolMessage`, `postIntMessage`,
+  `postRepeatableMessage`).
+When the mission launches apps that the catalogue does not know, uses
+behaviors it does not describe whose C++ is not in the project (or posts
+under names held in variables), or names behavior files the model cannot
+find, the finding is an `info` that says the check was incomplete, and names
+what was not known.
 
 ## Why is this bad?
 A condition on a variable that is never posted never becomes true: the
@@ -69,12 +75,13 @@ MOOS-IvP caveats, deliberately not reported:
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.spelling import typos
+from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
 from moos_lint.semantics.variables import alternative_starts, bare_name
 
 
-def _gaps(model) -> list[str]:
+def _gaps(model, unknown_kinds: list[str]) -> list[str]:
     out = [
         f"`{p.name}`"
         + (f" ({p.binary})" if p.binary != p.name else "")
@@ -82,7 +89,20 @@ def _gaps(model) -> list[str]:
         for p in model.unknown_apps
     ]
     out += [f"behavior file `{b}` was not found" for b in model.unresolved_behaviors]
+    out += [f"behavior `{k}` is not in the catalogue" for k in unknown_kinds]
     return out
+
+
+def _unknown_kinds(model) -> list[str]:
+    """The behavior kinds of the mission's behavior files that the catalogue does not
+    describe (the project's own behaviors): they may post anything."""
+    kinds: list[str] = []
+    for _path, bf in model.behavior_files:
+        for bhv in bf.behaviors:
+            kind = bhv.kind.strip()
+            if kind and model.catalogue.behavior(kind) is None and kind not in kinds:
+                kinds.append(kind)
+    return kinds
 
 
 @rule(
@@ -96,14 +116,24 @@ def check(ctx):
     model = mission_model(ctx)
     if model.inbound and not model.sibling_missions:
         return  # variables may come from a community the linter cannot see
-    gaps = _gaps(model)
+    # what the project's own C++ of the behaviors the catalogue does not describe posts
+    # by name; a kind whose C++ is not found, or that posts under a name held elsewhere,
+    # leaves the check incomplete
+    posted: set[str] = set()
+    unknown_kinds = []
+    for kind in _unknown_kinds(model):
+        posts, known = repo_behavior_posts(ctx, kind)
+        posted |= posts
+        if not known:
+            unknown_kinds.append(kind)
+    gaps = _gaps(model, unknown_kinds)
     unknown_prefixes = {pre for p in model.unknown_apps for pre in own_prefixes(p.binary)}
     seen: set[tuple[str, str, int]] = set()
     for ref in model.waits:
         name = bare_name(ref.name)
         if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
             continue
-        if model.published_by(name):
+        if model.published_by(name) or name in posted:
             continue
         meant = None
         if _one_alternative(ref):

@@ -626,17 +626,47 @@ def catalogue_for(run: RunView) -> Catalogue:
         if app is not None and app.is_app and app.process_name:
             named = _fixed_name(app)
             if named is None:
-                cat.add_app(_repo_app(app, app.process_name, run.sources))
+                _add_own(cat, _repo_app(app, app.process_name, run.sources))
             else:  # Run lines name the program; the app reads the block its main names
                 program, fixed = named
                 info = _repo_app(app, program, run.sources)
                 info.moos_name = fixed
-                cat.add_app(info)
+                info = _add_own(cat, info)
                 cat.apps.setdefault(fixed.lower(), info)
             inputs = None
     cat.inputs = inputs
     run.memos.catalogue = cat
     return cat
+
+
+def _add_own(cat: Catalogue, info: AppInfo) -> AppInfo:
+    """Add an app of the run's own C++. Two folders that build apps of one name (two
+    students' copies of ``pPointAssign`` in one course repository) give one entry that
+    reads, publishes and subscribes to what either does: which copy a mission runs
+    depends on what its machine built, so neither copy's keys are wrong."""
+    key = info.name.lower()
+    other = cat.apps.get(key)
+    if other is None or not other.own:
+        cat.add_app(info)
+        return info
+    other.params |= info.params
+    other.param_prefixes |= info.param_prefixes
+    other.strict = other.strict and info.strict
+    other.publishes |= info.publishes
+    other.publish_prefixes |= info.publish_prefixes
+    other.publish_suffixes |= info.publish_suffixes
+    other.publishes_dynamic = other.publishes_dynamic or info.publishes_dynamic
+    other.subscribes |= info.subscribes
+    other.subscribes_dynamic = other.subscribes_dynamic or info.subscribes_dynamic
+    other.observer = other.observer or info.observer
+    other.needs_origin = other.needs_origin and info.needs_origin
+    other.needs_process_config = other.needs_process_config and info.needs_process_config
+    # a value form only where both copies enforce the same one
+    other.forms = {k: f for k, f in other.forms.items() if info.forms.get(k) == f}
+    for k, keys in info.published_keys.items():
+        other.published_keys[k] = (*other.published_keys.get(k, ()), *keys)
+    other.provenance = f"{other.provenance}; {info.provenance}"
+    return other
 
 
 __all__ = [
