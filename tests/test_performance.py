@@ -314,6 +314,30 @@ def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
     assert two == one
 
 
+def _no_locks(*args, **kwargs):
+    raise OSError(38, "Function not implemented")  # sem_open without /dev/shm
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+@pytest.mark.parametrize("missing", ["Claims", "pool"])
+def test_a_system_without_process_locks_runs_in_one_process(monkeypatch, missing):
+    """Where a pool or its shared claims cannot be made (no ``/dev/shm`` in a container),
+    ``--jobs 2`` gives the output of one process, with no traceback."""
+    settings = resolve_settings([FIXTURES], None)
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    if missing == "pool":
+        monkeypatch.setattr("concurrent.futures.ProcessPoolExecutor", _no_locks)
+    else:
+        monkeypatch.setattr(parallel, "Claims", _no_locks)
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
+    assert two == one
+
+
 def _shown(path: str) -> list[tuple]:
     from moos_lint.commands.lsp.analysis import analyse
 

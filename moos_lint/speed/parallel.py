@@ -102,12 +102,17 @@ def effective_jobs(jobs: int | None, n_files: int) -> int:
 
 
 def pool(jobs: int) -> Any:
-    """Forked workers. A worker that dies (a crash in a parser) breaks the pool, which the
-    callers notice: the work is then done in this process, never waited for forever."""
+    """Forked workers, or None where the system cannot give a pool its locks (no
+    ``/dev/shm`` in some containers): the run then stays in this process. A worker that
+    dies (a crash in a parser) breaks the pool, which the callers notice: the work is
+    then done in this process, never waited for forever."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    return ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork"))
+    try:
+        return ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("fork"))
+    except (OSError, ImportError, NotImplementedError):
+        return None
 
 
 def stop(workers: Any) -> None:
@@ -130,6 +135,13 @@ class Claims:
                 return False
             self._taken[i] = 1
             return True
+
+
+class _Unshared:
+    """Claims of tasks no worker takes: this process may take every one."""
+
+    def claim(self, i: int) -> bool:
+        return True
 
 
 # The claims of the tasks a pool's workers run (set before the pool forks them).
@@ -182,19 +194,22 @@ def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
     for p in paths:
         folders.setdefault(os.path.dirname(p), []).append(p)
     tasks = sorted(folders.values(), key=lambda ps: (-_folder_weight(ps), ps[0]))
-    claims = _CLAIMS = Claims(len(tasks))  # before the first submit, which forks the workers
     futures: list[Any] = []
+    claims: Claims | _Unshared = _Unshared()
     try:
+        claims = _CLAIMS = Claims(len(tasks))  # before the first submit, which forks them
         for i, t in enumerate(tasks):
             futures.append(workers.submit(_cpp_folder, i, t))
-    except Exception:  # a worker died already: the tasks not submitted are done here
+    except Exception:  # a worker died already (or no claims): the tasks left are done here
         pass
     finally:
         _CLAIMS = None
     return _completed(futures, tasks, claims)
 
 
-def _completed(futures: list[Any], tasks: list[list[str]], claims: Claims) -> Iterator[Any]:
+def _completed(
+    futures: list[Any], tasks: list[list[str]], claims: Claims | _Unshared
+) -> Iterator[Any]:
     """The results; the folders no worker has started yet are taken here, smallest first,
     so that this process (done with the missions) shares the tail of the work."""
     from concurrent.futures import as_completed
@@ -290,12 +305,20 @@ def run_rules_parallel(
         if progress is not None:
             progress.advance(len(batch))
 
+    workers = pool(max(1, jobs - 1))
+    try:
+        claims = Claims(len(batches))
+    except (OSError, ImportError, NotImplementedError):
+        if workers is not None:
+            stop(workers)
+        workers = None
+    if workers is None:  # no pool on this system: every unit is checked here
+        return [run.run_rules(unit) for unit in run.units]
     # before the first submit, which forks the workers
     _RUN = run
-    claims = _CLAIMS = Claims(len(batches))
+    _CLAIMS = claims
     _REPORTED.clear()
     _REPORTED.update(run.cache.paths())
-    workers = pool(max(1, jobs - 1))
     from concurrent.futures import as_completed
 
     from moos_lint.files.source import merge_journal
