@@ -197,6 +197,30 @@ def trig_of_degrees(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def mixed_angle_units(app: AppModel) -> Iterator[Finding]:
+    """Degrees and radians added, subtracted or compared, each side's unit known."""
+    for f in app.files:
+        for m in f.unit_mixes:
+            units = [
+                "degrees" if v.abstract.unit == "deg" else "radians" for v in (m.left, m.right)
+            ]
+            if m.op == "+":
+                doing = f"adds an angle in {units[1]} to one in {units[0]}"
+            elif m.op == "-":
+                doing = f"subtracts an angle in {units[1]} from one in {units[0]}"
+            else:
+                doing = f"compares an angle in {units[0]} with one in {units[1]}"
+            sides = ", ".join(
+                f"`{values.brief(v.text, 32)}` is in {unit}{_because(v.abstract)}"
+                for v, unit in zip((m.left, m.right), units, strict=True)
+            )
+            yield (
+                m.span,
+                f"`{values.brief(m.left.text, 32)} {m.op} {values.brief(m.right.text, 32)}` "
+                f"{doing}: {sides}: convert one side (× π/180 or × 180/π)",
+            )
+
+
 #: a published component's name: what comes before its axis, and the axis
 _AXIS_NAME = re.compile(r"^(?P<vector>\w+?)_(?P<axis>[XYZ])$")
 #: a component read from a vector: ``v.x``, ``p->y``, ``v.z()``, ``v[2]``, negated or not

@@ -29,6 +29,7 @@ from moos_lint.frontends.cpp.model import (
     Publication,
     Subscription,
     TrigUse,
+    UnitMix,
     Value,
 )
 from moos_lint.frontends.cpp.names import (
@@ -50,6 +51,13 @@ CONFIG_CALLS = {"GetConfigurationParam", "GetConfigurationParamNoCase", "GetConf
 GLOBAL_VALUE = "GetValue"
 #: the keys of the local grid's origin, as apps read them
 ORIGIN_KEYS = {"latorigin", "longorigin"}
+#: the words of names that may hold an angle: only a sum, difference or comparison of two
+#: such operands is looked at for degrees mixed with radians (mixed-angle-units)
+ANGLE_WORDS = (
+    "[Hh]ead|HEAD|[Hh]dg|HDG|[Yy]aw|YAW|[Pp]itch|PITCH|[Rr]oll|ROLL|[Tt]heta|THETA|[Pp]hi|PHI"
+    "|[Pp]si|PSI|[Aa]ng|ANG|[Bb]ear|BEAR|[Cc]ourse|COURSE|[Cc]og|COG|[Aa]zim|AZIM|[Dd]eg|DEG"
+    "|[Rr]ad|RAD"
+)
 #: C++'s sine, cosine and tangent (``std::`` or not; float and long double forms): radians in
 TRIG = {f"{f}{s}" for f in ("sin", "cos", "tan") for s in ("", "f", "l")}
 STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
@@ -370,6 +378,7 @@ class ParsedFile:
         self.spans = Spans(path, data)
         self.calls: list[tuple[Any, Any, Any]] = []
         self.cmps: list[tuple[Any, Any, Any]] = []
+        self.mixes: list[tuple[Any, Any, Any]] = []
         self.asgs: list[_Asg] = []
         self.inits: list[tuple[str, Any]] = []
         self.defines: list[tuple[str, str]] = []
@@ -395,6 +404,8 @@ class ParsedFile:
                 self.calls.append((caps["call"][0], caps["call.fn"][0], caps["call.args"][0]))
             elif "cmp" in caps:
                 self.cmps.append((caps["cmp"][0], caps["cmp.l"][0], caps["cmp.r"][0]))
+            elif "mix" in caps:
+                self.mixes.append((caps["mix"][0], caps["mix.l"][0], caps["mix.r"][0]))
             elif "asg" in caps:
                 node = caps["asg"][0]
                 op = "="
@@ -964,6 +975,8 @@ class Extractor:
             self._wrapper_calls()
         for cmp, left, right in pf.cmps:
             self._comparison(cmp, left, right)
+        for node, left, right in pf.mixes:
+            self._unit_mix(node, left, right)
         for a in pf.asgs:
             if a.rhs.type == "argument_list" and a.node.type == "init_declarator":
                 decl = a.node.parent
@@ -1075,6 +1088,22 @@ class Extractor:
         if value.abstract.unit is None and value.abstract.pending is None:
             value.abstract = self.evaluator.degree_term(self.pf, arg) or value.abstract
         self.out.trig_uses.append(TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call)))
+
+    def _unit_mix(self, node: Any, left: Any, right: Any) -> None:
+        """Degrees and radians added, subtracted or compared (mixed-angle-units): each side's
+        unit known, not by a name alone, one in degrees and the other in radians."""
+        if self.evaluator is None or self.pf.function_of(node) is None:
+            return
+        lv = self.evaluator.of(self.pf, left)
+        if lv.unit not in ("deg", "rad") or lv.hint:
+            return  # (the other side is looked at only when this one has an angle's unit)
+        rv = self.evaluator.of(self.pf, right)
+        if {lv.unit, rv.unit} != {"deg", "rad"} or rv.hint or in_if0(node):
+            return
+        a, b = self.value(left), self.value(right)
+        a.abstract, b.abstract = lv, rv
+        op = text(node.child_by_field_name("operator"))
+        self.out.unit_mixes.append(UnitMix(op, a, b, self.pf.spans.of(node), self._fn_of(node)))
 
     def _notify_msg(self, node: Any, args: Any) -> None:
         """``CMOOSMsg(MOOS_NOTIFY, NAME, VALUE[, time])``: a notification built to be posted."""

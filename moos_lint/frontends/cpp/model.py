@@ -125,6 +125,18 @@ class TrigUse:
 
 
 @dataclass(slots=True)
+class UnitMix:
+    """A sum, difference or comparison of an angle in degrees with one in radians: the
+    operator, each side as written with its value, and where."""
+
+    op: str
+    left: Value
+    right: Value
+    span: Span
+    within: str  # the enclosing function
+
+
+@dataclass(slots=True)
 class OriginRead:
     """``m_MissionReader.GetValue("LatOrigin", lat)``: a read of the local grid's origin.
     ``optional``: the read is the test of an ``if`` with no ``else`` (the app goes on
@@ -199,6 +211,7 @@ class CppFile:
     geodesy_calls: list[GeodesyCall] = field(default_factory=list)
     decimal_commas: list[DecimalComma] = field(default_factory=list)
     trig_uses: list[TrigUse] = field(default_factory=list)
+    unit_mixes: list[UnitMix] = field(default_factory=list)
     has_main: bool = False
     has_on_new_mail: bool = False
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)

@@ -9,7 +9,7 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Any
 
-from moos_lint.frontends.cpp.extract import CALLED
+from moos_lint.frontends.cpp.extract import ANGLE_WORDS, CALLED
 
 QUERY_TEMPLATE = r"""
 (class_specifier name: (_) @cls.name (base_class_clause) @cls.bases) @cls
@@ -18,6 +18,9 @@ QUERY_TEMPLATE = r"""
   (#match? @call.fn "CALLEES")) @call
 [(binary_expression left: (_) @cmp.l operator: ["==" "!="] right: (string_literal) @cmp.r)
  (binary_expression left: (string_literal) @cmp.r operator: ["==" "!="] right: (_) @cmp.l)] @cmp
+(binary_expression
+  left: (_) @mix.l operator: ["<" ">" "<=" ">=" "==" "!=" "+" "-"] right: (_) @mix.r
+  (#match? @mix.l "ANGLE_WORDS") (#match? @mix.r "ANGLE_WORDS")) @mix
 (init_declarator declarator: (_) @asg.l value: (_) @asg.r) @asg
 (assignment_expression left: (_) @asg.l right: (_) @asg.r) @asg
 (field_declaration declarator: (_) @asg.l default_value: (_) @asg.r) @asg
@@ -33,7 +36,9 @@ QUERY_TEMPLATE = r"""
 
 #: Only calls whose function's text holds a name the extractor looks at are captured (the
 #: name it takes, ``callee()``, is always part of that text): most calls never leave C.
-QUERY = QUERY_TEMPLATE.replace("CALLEES", "|".join(sorted(CALLED)))
+QUERY = QUERY_TEMPLATE.replace("CALLEES", "|".join(sorted(CALLED))).replace(
+    "ANGLE_WORDS", ANGLE_WORDS
+)
 
 #: Patterns are matched only on nodes at most this deep in the syntax tree.
 MAX_QUERY_DEPTH = 400
