@@ -1192,8 +1192,11 @@ class Extractor:
             second = strip_parens(argv[1]) if len(argv) > 1 else None
             app_run = len(argv) in (2, 4) and second is not None and second.type != "number_literal"
             if self._fn_of(call) == "main" and app_run:
-                lit = string_value(strip_parens(argv[0]))
-                if lit is not None:
+                # a literal, or a name set to one before the call (``const char* sMOOSName =
+                # "iGPS";``, a ``#define``); one the command line may set (``sMOOSName =
+                # argv[2]``, ``run_command = argv[0]``) is not known
+                lit, _ = self._resolve(argv[0], 0)
+                if lit:
                     out.run_names.append((lit, spans.of(argv[0])))
         elif name in CONFIG_CALLS:
             for a in argv:

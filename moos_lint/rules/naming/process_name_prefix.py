@@ -18,7 +18,9 @@ like Unix utilities). Names that hold an nsplug macro (`$(X)`) are skipped.
 
 
 In C++ (a folder of a MOOS app's sources), it checks the app's process name:
-the literal first argument of `App.Run("pName", ...)` in `main`, else the
+the literal first argument of `App.Run("pName", ...)` in `main` (or a name set
+to a literal before the call, `const char* sMOOSName = "iGPS";`, unless the
+command line may set it first), else the
 CMake `add_executable(pName ...)` of the folder (read as text; of a folder
 that builds several programs, the one whose source list holds the app class's
 files), else the folder name (never for a folder that builds several programs
