@@ -19,7 +19,11 @@ QUERY_TEMPLATE = r"""
 [(binary_expression left: (_) @cmp.l operator: ["==" "!="] right: (string_literal) @cmp.r)
  (binary_expression left: (string_literal) @cmp.r operator: ["==" "!="] right: (_) @cmp.l)] @cmp
 (binary_expression
-  left: (_) @mix.l operator: ["<" ">" "<=" ">=" "==" "!=" "+" "-"] right: (_) @mix.r
+  left: [(identifier) (field_expression) (qualified_identifier) (subscript_expression)
+         (call_expression)] @mix.l
+  operator: ["<" ">" "<=" ">=" "==" "!=" "+" "-"]
+  right: [(identifier) (field_expression) (qualified_identifier) (subscript_expression)
+          (call_expression)] @mix.r
   (#match? @mix.l "ANGLE_WORDS") (#match? @mix.r "ANGLE_WORDS")) @mix
 (init_declarator declarator: (_) @asg.l value: (_) @asg.r) @asg
 (assignment_expression left: (_) @asg.l right: (_) @asg.r) @asg

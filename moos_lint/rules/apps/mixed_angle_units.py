@@ -8,9 +8,10 @@ angle known to be in radians: an `acos` result against a value converted with
 `MOOSRad2Deg(y)`. The units come from moos-lint's value analysis of C++
 (README, "C++ apps"), which follows values through locals, members and
 functions; the finding says where each side's unit comes from. Only operands
-whose names may hold an angle (heading, yaw, pitch, roll, theta, phi, psi,
-angle, bearing, course, azimuth, a `deg` or `rad` in the name) are looked at,
-and a unit that only a name suggests is not trusted.
+that are a name, a member, an array element or a call, and whose text may
+hold an angle (heading, yaw, pitch, roll, theta, phi, psi, angle, bearing,
+course, azimuth, a `deg` or `rad` in the name), are looked at, and a unit that
+only a name suggests is not trusted.
 
 ## Why is this bad?
 A comparison of 0.6 radians with 35 degrees is always decided by the unit,
