@@ -9,6 +9,7 @@ import re
 from pathlib import Path
 
 from moos_lint.files.gitignore import Frame, Ignorer, ignored
+from moos_lint.files.stamps import file_stamp
 from moos_lint.files.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES, TEMPLATE_SUFFIXES
 
 #: folders and files never linted, whatever the configuration says
@@ -48,15 +49,12 @@ def template_kind(path: str) -> str | None:
     """The kind of an nsplug template named for no kind (``moos.meta``), from its text:
     ``ProcessConfig =`` lines make a mission, ``Behavior =`` lines a behavior file;
     anything else with the suffix (a Unity or TensorFlow ``.meta``) is not MOOS."""
-    try:
-        st = os.stat(path)
-    except OSError:
-        return None
-    return _sniffed(path, st.st_mtime_ns, st.st_size)
+    stamp = file_stamp(path)
+    return _sniffed(path, stamp) if stamp is not None else None
 
 
 @functools.lru_cache(maxsize=1024)
-def _sniffed(path: str, _mtime: int, _size: int) -> str | None:
+def _sniffed(path: str, _stamp: tuple[int, int]) -> str | None:
     try:
         with open(path, "rb") as fh:
             head = fh.read(64 * 1024)

@@ -522,13 +522,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         info.publish_suffixes |= {"_ITER_GAP", "_ITER_LEN"}
     known = stock().app(name)
     if known is not None:
-        info.params |= known.params
-        info.param_prefixes |= known.param_prefixes
-        info.publishes |= known.publishes
-        info.publish_prefixes |= known.publish_prefixes
-        info.publish_suffixes |= known.publish_suffixes
-        info.publishes_dynamic = info.publishes_dynamic or known.publishes_dynamic
-        info.subscribes |= known.subscribes
+        _add_names(info, known)
         # what its own files cannot show: how it subscribes, how it is started (the
         # stock entry's hand corrections win: a block it reads only when present,
         # run-time subscriptions that read no mission variable)
@@ -639,6 +633,18 @@ def catalogue_for(run: RunView) -> Catalogue:
     return cat
 
 
+def _add_names(info: AppInfo, other: AppInfo) -> None:
+    """Add to ``info`` the keys ``other`` reads and the variables it publishes and
+    subscribes to by name."""
+    info.params |= other.params
+    info.param_prefixes |= other.param_prefixes
+    info.publishes |= other.publishes
+    info.publish_prefixes |= other.publish_prefixes
+    info.publish_suffixes |= other.publish_suffixes
+    info.publishes_dynamic = info.publishes_dynamic or other.publishes_dynamic
+    info.subscribes |= other.subscribes
+
+
 def _add_own(cat: Catalogue, info: AppInfo) -> AppInfo:
     """Add an app of the run's own C++. Two folders that build apps of one name (two
     students' copies of ``pPointAssign`` in one course repository) give one entry that
@@ -649,14 +655,8 @@ def _add_own(cat: Catalogue, info: AppInfo) -> AppInfo:
     if other is None or not other.own:
         cat.add_app(info)
         return info
-    other.params |= info.params
-    other.param_prefixes |= info.param_prefixes
+    _add_names(other, info)
     other.strict = other.strict and info.strict
-    other.publishes |= info.publishes
-    other.publish_prefixes |= info.publish_prefixes
-    other.publish_suffixes |= info.publish_suffixes
-    other.publishes_dynamic = other.publishes_dynamic or info.publishes_dynamic
-    other.subscribes |= info.subscribes
     other.subscribes_dynamic = other.subscribes_dynamic or info.subscribes_dynamic
     other.observer = other.observer or info.observer
     other.needs_origin = other.needs_origin and info.needs_origin
