@@ -307,6 +307,35 @@ def test_cpp_bad_inputs(tmp_path):
     assert ("m.moos", 2, "R006") in {(d["path"], d["line"], d["code"]) for d in found}
 
 
+def test_files_read_to_learn_about_others_are_never_waited_for(tmp_path):
+    """A FIFO or a device under the name of a file moos-lint reads to learn about the
+    others (a template's kind, a Windows module definition, a launch script, an ignore
+    file, a project behavior's C++) is never waited for: the run neither hangs nor
+    fails."""
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "m.moos").write_text(
+        "ProcessConfig = ANTLER\n{\n  Run = MOOSDB @ NewConsole = false\n"
+        "  Run = pHelmIvP @ NewConsole = false\n}\n"
+        "ProcessConfig = pHelmIvP\n{\n  behaviors = m.bhv\n}\n"
+    )
+    (tmp_path / "m.bhv").write_text(
+        "Behavior = BHV_Listener\n{\n  name = x\n}\n"
+        "Behavior = BHV_Waypoint\n{\n  name = w\n  condition = HEARD = true\n}\n"
+    )
+    (tmp_path / "lib").mkdir()
+    for name in ("a.meta", "b.def", "launch.sh", ".gitignore", "lib/BHV_Listener.cpp"):
+        os.mkfifo(tmp_path / name)
+    os.symlink("/dev/zero", tmp_path / "zero.meta")
+    proc = run_cli("check", ".", "--select", "ALL", "--output-format", "json", cwd=tmp_path)
+    found = findings(proc)
+    assert not [d for d in found if d["code"] == "L900"], proc.stderr
+    # a `.def` is a MOOS file by its name: one that cannot be read says so; a `.meta`
+    # whose text cannot be read is no template
+    assert {d["path"] for d in found} == {"m.moos", "m.bhv", "b.def"}
+    assert ("b.def", "R001") in {(d["path"], d["code"]) for d in found}
+    assert ("m.bhv", "M005") in {(d["path"], d["code"]) for d in found}
+
+
 @pytest.mark.skipif(kind_of("App.cpp") != "cpp", reason="moos-lint does not lint C++ files")
 def test_a_crash_in_the_cpp_reader_is_an_internal_error_not_a_traceback(tmp_path, monkeypatch):
     from moos_lint.core.config import Settings

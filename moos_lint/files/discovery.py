@@ -9,6 +9,7 @@ import re
 from pathlib import Path
 
 from moos_lint.files.gitignore import Frame, Ignorer, ignored
+from moos_lint.files.source import read_head
 from moos_lint.files.stamps import file_stamp
 from moos_lint.files.suffixes import BHV_SUFFIXES, CPP_SUFFIXES, MOOS_SUFFIXES, TEMPLATE_SUFFIXES
 
@@ -55,10 +56,8 @@ def template_kind(path: str) -> str | None:
 
 @functools.lru_cache(maxsize=1024)
 def _sniffed(path: str, _stamp: tuple[int, int]) -> str | None:
-    try:
-        with open(path, "rb") as fh:
-            head = fh.read(64 * 1024)
-    except OSError:
+    head = read_head(path, 64 * 1024)
+    if head is None:
         return None
     if _MISSION_LINE.search(head):
         return "moos"
@@ -238,10 +237,8 @@ def module_definition(path: str) -> bool:
     blank or a ``;`` comment is one of that format's statements."""
     if not path.lower().endswith(".def"):
         return False
-    try:
-        with open(path, "rb") as fh:
-            head = fh.read(4096)
-    except OSError:
+    head = read_head(path, 4096)
+    if head is None:
         return False
     for line in head.splitlines():
         if line.strip() and not line.lstrip().startswith(b";"):

@@ -29,6 +29,8 @@ from __future__ import annotations
 import os
 import re
 
+from moos_lint.files.source import read_head
+
 #: per-folder ignore files, weakest first
 FOLDER_FILES = (".gitignore", ".ignore")
 
@@ -113,10 +115,8 @@ EMPTY = Frame((), False)
 
 
 def _read_lines(path: str) -> list[str] | None:
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(1 << 20)
-    except OSError:
+    data = read_head(path, 1 << 20)
+    if data is None:
         return None
     return data.decode("utf-8", "replace").splitlines()
 

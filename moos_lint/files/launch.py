@@ -17,6 +17,7 @@ import os
 import re
 
 from moos_lint.files.project import is_within, vcs_top
+from moos_lint.files.source import read_head
 from moos_lint.files.stamps import folder_mtime
 from moos_lint.files.suffixes import script_stem
 
@@ -85,11 +86,10 @@ def script_include_paths(folder: str) -> tuple[str, ...]:
         if not name.endswith(".sh"):
             continue
         path = os.path.join(folder, name)
-        try:
-            with open(path, "rb") as fh:
-                text = fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")
-        except OSError:
+        data = read_head(path, _SCRIPT_BYTES)
+        if data is None:
             continue
+        text = data.decode("utf-8", "replace")
         for line in text.replace("\\\n", " ").splitlines():
             code = line.split("#", 1)[0]
             if "nsplug" not in code:
@@ -142,10 +142,8 @@ def script_names(mission: str, program: str) -> frozenset[str] | None:
 
 @functools.lru_cache(maxsize=256)
 def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(_SCRIPT_BYTES)
-    except OSError:
+    data = read_head(path, _SCRIPT_BYTES)
+    if data is None:
         return None
     return frozenset(m.group(1).decode("ascii", "replace").lower() for m in _QUOTED.finditer(data))
 
@@ -185,11 +183,9 @@ def _texts(folder: str, suffix: str) -> tuple[tuple[str, str], ...]:
 def _read_scripts(stamps: tuple[tuple[str, int, int], ...]) -> tuple[tuple[str, str], ...]:
     out = []
     for path, _mtime, _size in stamps:
-        try:
-            with open(path, "rb") as fh:
-                out.append((path, fh.read(_SCRIPT_BYTES).decode("utf-8", "replace")))
-        except OSError:
-            continue
+        data = read_head(path, _SCRIPT_BYTES)
+        if data is not None:
+            out.append((path, data.decode("utf-8", "replace")))
     return tuple(out)
 
 

@@ -203,6 +203,33 @@ def read_bytes(path: str | Path) -> bytes | ReadProblem:
     return data
 
 
+def read_head(path: str | Path, limit: int) -> bytes | None:
+    """Up to ``limit`` bytes of a regular file, never blocking or raising; None for what
+    is not a readable regular file (a FIFO or a device under a MOOS file's name, a
+    folder). For the files read to learn something about others (launch scripts, ignore
+    files, a template's kind), which are not linted themselves: not journaled."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError:
+        return None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return None
+        chunks = []
+        left = limit
+        while left > 0:
+            chunk = os.read(fd, min(left, 1 << 20))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            left -= len(chunk)
+        return b"".join(chunks)
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
+
+
 def _read_bytes(path: str | Path) -> tuple[bytes | ReadProblem, tuple[int, int] | None]:
     """The bytes (or the problem) and the file's (mtime, size) just before they were read."""
     try:

@@ -7,6 +7,7 @@ import os
 import re
 from typing import TYPE_CHECKING
 
+from moos_lint.files.source import read_head
 from moos_lint.files.suffixes import is_cpp
 from moos_lint.semantics.catalogue import BehaviorInfo, catalogue_for
 
@@ -76,10 +77,8 @@ def repo_behavior_posts(ctx: Context, kind: str) -> tuple[frozenset[str], bool]:
     found: set[str] = set()
     known = bool(paths)
     for path in paths:
-        try:
-            with open(path, "rb") as fh:
-                data = fh.read(1024 * 1024)
-        except OSError:
+        data = read_head(path, 1024 * 1024)
+        if data is None:
             known = False
             continue
         for m in _POST.finditer(data):
@@ -98,12 +97,8 @@ _CLASS = re.compile(rb"class(?<=\bclass)\s+(BHV_\w+)\s*(?::|\{)")
 
 def _declared_behaviors(path: str) -> set[str]:
     """The names of the ``BHV_*`` classes a header declares."""
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(256 * 1024)
-    except OSError:
-        return set()
-    if b"BHV_" not in data:
+    data = read_head(path, 256 * 1024)
+    if data is None or b"BHV_" not in data:
         return set()
     return {m.group(1).decode("ascii", "replace") for m in _CLASS.finditer(data)}
 
@@ -113,10 +108,8 @@ _LIBRARY = re.compile(rb"add_library\s*\(\s*(BHV_\w+)", re.IGNORECASE)
 
 def _library_behaviors(path: str) -> set[str]:
     """The ``BHV_*`` library targets a CMakeLists.txt builds."""
-    try:
-        with open(path, "rb") as fh:
-            data = fh.read(256 * 1024)
-    except OSError:
+    data = read_head(path, 256 * 1024)
+    if data is None:
         return set()
     return {m.group(1).decode("ascii", "replace") for m in _LIBRARY.finditer(data)}
 
@@ -149,10 +142,8 @@ def own_source_keys(ctx: Context, kind: str, bhv_path: str) -> frozenset[str]:
     keys: set[str] = set()
     for src in _helm_sources(os.path.dirname(os.path.abspath(bhv_path))):
         for path in glob.glob(os.path.join(glob.escape(src), "*", glob.escape(kind) + ".cpp")):
-            try:
-                with open(path, "rb") as fh:
-                    data = fh.read(1024 * 1024)
-            except OSError:
+            data = read_head(path, 1024 * 1024)
+            if data is None:
                 continue
             keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
     memo[key] = found = frozenset(keys)
