@@ -74,6 +74,12 @@ CONDITION_PARAMS = {
     "pass_condition",
     "fail_condition",
 }
+#: the variables whose value is a message uFldMessageHandler posts on the receiving
+#: vehicle: ``NODE_MESSAGE_LOCAL = src_node=alpha,dest_node=all,var_name=X,string_val=Y``
+#: becomes ``X = Y`` there (MOOS-IvP's lib_ufld NodeMessage; uFldMessageHandler's
+#: MessageHandler.cpp ``Notify(var_name, ...)``), relayed by uFldNodeComms
+NODE_MESSAGE_VARS = {"NODE_MESSAGE", "NODE_MESSAGE_LOCAL"}
+_VAR_NAME = re.compile(r"\bvar_name\s*=\s*([^,\s\"]+)", re.I)
 _POKE = re.compile(r"\buPokeDB\b([^\n;|&]*)")
 _PAIR = re.compile(r"(?:^|\s)['\"]?([A-Za-z_][A-Za-z0-9_]*)\s*:?=")
 _MACRO = re.compile(r"[$%]\([^)]*\)")
@@ -302,6 +308,15 @@ def configured_publications(run: RunView, moos: MoosFile) -> list[ConfiguredPubl
     return found
 
 
+def node_message_vars(ref: VarRef) -> list[str]:
+    """The variable a posted node message names (``var_name=X``), for a publication of
+    ``NODE_MESSAGE`` or ``NODE_MESSAGE_LOCAL``; none for any other reference."""
+    if ref.role != PUBLISH or ref.name not in NODE_MESSAGE_VARS:
+        return []
+    value = ref.line.text[ref.start + len(ref.name) :]
+    return [v for v in _VAR_NAME.findall(value) if not has_macro(v)]
+
+
 def _block_for(moos: MoosFile, name: str) -> Block | None:
     """The first block of that name (the one MOOS takes)."""
     return _first_blocks(moos).get(name.lower())
@@ -430,6 +445,10 @@ class _Builder:
         for proc in m.processes:
             if proc.binary.lower() == "phelmivp" and proc.block is not None:
                 self._helm(proc)
+        if any(p.binary.lower() == "ufldmessagehandler" for p in m.processes):
+            for ref in m.refs:
+                for var in node_message_vars(ref):
+                    self.add(var, f"uFldMessageHandler ({ref.app}: {ref.name})", "app", ref.line)
         db = self.cat.programs.get("moosdb")
         for var in sorted(db.publishes) if db is not None else ():
             self.add(var, "MOOSDB", "app", process="MOOSDB")  # every mission has its database
@@ -608,6 +627,8 @@ def _publishers_of(path: str, sub: MissionModel) -> dict[str, list[Publisher]]:
         # uFldShoreBroker ``qbridge = X`` posts X_ALL and X_<VNAME> to the vehicles as X
         if ref.param == "qbridge":
             found.append(_publisher(ref.name, who, "external", ref.line))
+        # a node message it sends, which uFldMessageHandler posts on the vehicles
+        found.extend(_publisher(var, who, "external", ref.line) for var in node_message_vars(ref))
     for proc in sub.processes:
         if proc.app is not None:
             found.extend(_publisher(var, who, "external") for var in proc.app.publishes)

@@ -109,6 +109,23 @@ LIBRARY_ANGLES: dict[str, tuple[str, str, tuple[float, float], str]] = {
         (-math.pi, math.pi),
         "MAVLink's ATTITUDE yaw, about Z-down: clockwise from north",
     ),
+    # VFR_HUD: "heading: Current heading in compass units (0-360, 0=north)", int16_t, deg
+    "mavlink_msg_vfr_hud_get_heading": (
+        "deg",
+        "heading",
+        (0.0, 360.0),
+        "MAVLink's VFR_HUD heading, degrees clockwise from north",
+    ),
+}
+
+#: Fields of library structs whose angle is known: (struct, field) -> as
+#: :data:`LIBRARY_ANGLES`. MAVLink's generated C headers decode a message into a struct
+#: (``mavlink_msg_attitude_decode(&msg, &att); att.yaw``) whose fields are the getters'
+#: values (``mavlink_attitude_t``: roll, pitch, yaw in rad, -pi..+pi, Z-down;
+#: ``mavlink_vfr_hud_t``: heading in degrees, 0..360).
+LIBRARY_FIELDS: dict[tuple[str, str], tuple[str, str, tuple[float, float], str]] = {
+    ("mavlink_attitude_t", "yaw"): LIBRARY_ANGLES["mavlink_msg_attitude_get_yaw"],
+    ("mavlink_vfr_hud_t", "heading"): LIBRARY_ANGLES["mavlink_msg_vfr_hud_get_heading"],
 }
 
 #: CMOOSGeodesy's conversions between latitude/longitude and the local grid: name -> what

@@ -1201,6 +1201,14 @@ class Evaluator:
             return None
         if not field:
             return None
+        known = facts.LIBRARY_FIELDS.get((cls or "", field))
+        if known is not None:  # a library struct's field (MAVLink's decoded messages)
+            return AbstractValue(
+                unit=known[0],
+                sense=known[1],
+                range=known[2],
+                why=(f"`{brief(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}: {known[3]}",),
+            )
         hint = name_hint(key)
         anywhere: AbstractValue | None = hint if hint.known else None
         if cls:

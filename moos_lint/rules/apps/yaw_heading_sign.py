@@ -7,8 +7,9 @@ turned into radians as `heading*M_PI/180`, `degToRadians(heading)` or
 (a member set in one method and published in another). A heading is a value
 read as `NAV_HEADING`, `relAng`/`radToHeading` results, or a name that says
 heading. A yaw taken about a Z axis pointing down turns clockwise as a heading
-does: MAVLink's ATTITUDE yaw (`mavlink_msg_attitude_get_yaw`) published as a
-yaw without the minus sign is reported too.
+does: MAVLink's ATTITUDE yaw (`mavlink_msg_attitude_get_yaw`, or the `yaw`
+of a `mavlink_attitude_t` the message is decoded into) published as a yaw
+without the minus sign is reported too.
 
 The reverse is reported as well: a heading published (`Notify("VIEW_HEADING",
 ...)`) from a MOOS yaw turned into degrees with no minus sign, where the yaw

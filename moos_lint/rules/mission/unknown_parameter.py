@@ -62,7 +62,11 @@ MOOS-IvP caveats, deliberately not reported:
   see the others), so that a key list that may be incomplete never produces
   a finding. pShare and pLogger are checked: their whole key lists were read
   from their sources (`Output =` and `Log =` lines are theirs, whatever the
-  value);
+  value). An app of the linted repository is checked when it reports
+  unhandled lines (`reportUnhandledConfigWarning`), or when it is a plain
+  CMOOSApp whose start-up loop still compares only the template's `FOO` and
+  `BAR`: it reads no key of its own, so `Port = /dev/ttyACM1` in its block
+  is ignored;
 - the ANTLER block (unknown-key, R-series, checks it);
 - the block of a script: one the mission launches (`Run = ./pSonar.py` reads
   `pSonar`), or a script beside the mission of the block's name

@@ -15,6 +15,10 @@ variable that a logic condition waits for: behavior `condition` and
   `*_flag` VarDataPairs of the apps that read them (pObstacleMgr
   `new_obs_flag = OBM_NEW_GIVEN=true`), share and
   bridge routes, ...);
+- a node message (`NODE_MESSAGE_LOCAL = src_node=alpha,dest_node=all,
+  var_name=CHASER,string_val=alpha`) posted in a mission that launches
+  uFldMessageHandler, or in another mission of its folder: the handler
+  posts `CHASER` on the vehicle that receives it;
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post;
 - a `uPokeDB ... VAR=value` in a shell script beside the mission;

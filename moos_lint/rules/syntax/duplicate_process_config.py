@@ -28,6 +28,7 @@ Merge the two blocks into one.
 None.
 """
 
+import os
 from typing import Any
 
 from moos_lint.files.diagnostics import Severity
@@ -47,19 +48,28 @@ def check(ctx):
         kept = firsts.setdefault(block.lname, {})
         first = next((b for b in kept.values() if not b.header.excludes(header)), None)
         if first is not None:
-            yield ctx.report(
-                block.name_span,
-                f"second block for `{block.name}` (first at "
-                f"{_where(first.header)}): MOOS ignores this one",
-                line=header,
-            )
+            yield ctx.report(block.name_span, _message(block, first), line=header)
         if block.lname not in closed and header.branches not in kept:
             kept[header.branches] = block
             if not header.branches:
                 closed.add(block.lname)
 
 
-def _where(line) -> str:
-    import os
+def _message(block, first) -> str:
+    a, b = first.header, block.header
+    if (a.path, a.lineno) == (b.path, b.lineno) and a.chain and b.chain and a.chain != b.chain:
+        # one block of one file, read twice: the file is included twice
+        name = os.path.basename(a.path)
+        return (
+            f"second block for `{block.name}`: `{name}` is included twice (at "
+            f"{_site(a.chain[-1])} and {_site(b.chain[-1])}), and MOOS ignores this copy"
+        )
+    return f"second block for `{block.name}` (first at {_where(a)}): MOOS ignores this one"
 
+
+def _site(site) -> str:
+    return f"{os.path.basename(site.path)}:{site.line}"
+
+
+def _where(line) -> str:
     return f"{os.path.basename(line.path)}:{line.lineno}"

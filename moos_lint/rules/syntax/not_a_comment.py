@@ -14,9 +14,10 @@ handed to the app, and an AppCasting app reports `#share = ...` as an
 unhandled configuration line. A line without `=` (a `/--------` banner, the
 lines of a `/* ... */` comment) is dropped by MOOS unread, as a comment would
 be, so it is not reported (`ProcessConfigReader::GetConfiguration` keeps only
-`key=value` lines and lines with `[` or `]`). Inside a block that an app
-reads as protobuf text (goby's pAcommsHandler), `#` does start a comment, and
-such lines are not reported.
+`key=value` lines and lines with `[` or `]`); so is `#//Run = pFoo`, since MOOS
+first cuts a line at its `//` (`MOOSFileReader::GetNextValidLine`), leaving `#`.
+Inside a block that an app reads as protobuf text (goby's pAcommsHandler), `#`
+does start a comment, and such lines are not reported.
 
 ## Example
 ```moos
@@ -81,6 +82,10 @@ def _text_format_lines(moos) -> set[int]:
 
 
 def _kept(text: str) -> bool:
-    """Whether MOOS keeps the line: a line without ``=``, ``[``, ``]`` or a brace is
-    dropped unread, like a comment."""
+    """Whether MOOS keeps the line: a line without ``=``, ``[``, ``]`` or a brace before
+    its ``//`` is dropped unread, like a comment (``#//Run = pFoo``: MOOS cuts a line at
+    ``//``, unless a quote comes first, MOOSFileReader::GetNextValidLine)."""
+    cut = text.find("//")
+    if cut >= 0 and '"' not in text[:cut]:
+        text = text[:cut]
     return any(c in text for c in "=[]{}")

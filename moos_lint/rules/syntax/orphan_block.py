@@ -3,6 +3,9 @@
 ## What it does
 Reports a block opened by `{` that no `ProcessConfig = NAME` line names. This
 typically happens when the header was commented out and the block left behind.
+A block under a `Behavior = BHV_X` line (a behavior's example saved with a
+`.moos` name) is reported with a note that only behavior files (`.bhv`) hold
+helm behaviors.
 
 ## Why is this bad?
 No app ever reads an orphan block. Worse, MOOS's global lookup scans the whole
@@ -46,23 +49,41 @@ def check(ctx):
                 index = {id(line): i for i, line in enumerate(ctx.moos.lines)}
             if _hidden_header(ctx.moos.lines, index.get(id(block.open))):
                 continue  # not-a-comment reports the header line
-        yield ctx.report(
-            block.open.span(),
-            "block without a `ProcessConfig = NAME` header: no app reads it",
-            line=block.open,
-        )
+        message = "block without a `ProcessConfig = NAME` header: no app reads it"
+        if index is None:
+            index = {id(line): i for i, line in enumerate(ctx.moos.lines)}
+        if _behavior_header(ctx.moos.lines, index.get(id(block.open))):
+            message += (
+                " (`Behavior = ...` starts a helm behavior, which only a behavior file, "
+                "`.bhv`, holds)"
+            )
+        yield ctx.report(block.open.span(), message, line=block.open)
 
 
 _HEADER = re.compile(r"[#/*\s]*processconfig\s*=", re.IGNORECASE)
 
 
-def _hidden_header(lines, at: int | None) -> bool:
-    """Whether the line before the block's ``{`` (blank lines skipped) is a header behind
-    something MOOS does not take for a comment (``#ProcessConfig = X``, ``/*ProcessConfig``)."""
+_BEHAVIOR = re.compile(r"\s*behavior\s*=\s*\S", re.IGNORECASE)
+
+
+def _line_before(lines, at: int | None) -> str:
+    """The text of the last non-blank line before line ``at`` ("" when none)."""
     if at is None:
-        return False
+        return ""
     for i in range(at - 1, -1, -1):
         text = lines[i].text.strip()
         if text:
-            return looks_commented(text) and bool(_HEADER.match(text))
-    return False
+            return text
+    return ""
+
+
+def _behavior_header(lines, at: int | None) -> bool:
+    """Whether the block's ``{`` follows a ``Behavior = BHV_X`` line."""
+    return bool(_BEHAVIOR.match(_line_before(lines, at)))
+
+
+def _hidden_header(lines, at: int | None) -> bool:
+    """Whether the line before the block's ``{`` (blank lines skipped) is a header behind
+    something MOOS does not take for a comment (``#ProcessConfig = X``, ``/*ProcessConfig``)."""
+    text = _line_before(lines, at)
+    return bool(text) and looks_commented(text) and bool(_HEADER.match(text))

@@ -17,7 +17,9 @@ under that name) of a YAW variable (`NAV_YAW`, or a name built
 at run time whose last word is YAW) with a value in degrees: a literal above
 2π (with `--cpp-backend clang`, also a constant expression that folds above
 2π), a conversion to degrees (`* 180 / M_PI`, `radToDegrees`), a heading or
-`*_deg` value, an NMEA field, or a value that a consumer converts with
+`*_deg` value, an NMEA field, a MAVLink VFR_HUD heading
+(`mavlink_msg_vfr_hud_get_heading`, or the `heading` of a decoded
+`mavlink_vfr_hud_t`), or a value that a consumer converts with
 `MOOSDeg2Rad` on arrival.
 
 The value comes from moos-lint's value analysis of C++, which follows it

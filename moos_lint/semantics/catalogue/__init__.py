@@ -484,8 +484,15 @@ def _needs_block(app: AppModel, text: str) -> bool:
     """
     if OPTIONAL_BLOCK.search(text):
         return False
+    return not _template_only(app)
+
+
+def _template_only(app: AppModel) -> bool:
+    """Whether the app is a plain CMOOSApp whose start-up compares keys with the
+    template's placeholders only (``if(param == "FOO") {} else if(param == "BAR") {}``):
+    it reads no key of its own, whatever its block holds."""
     keys = {c.text for c in app.config_params}
-    return not (app.base_chain[1:] == ["CMOOSApp"] and keys and keys <= TEMPLATE_KEYS)
+    return bool(app.base_chain[1:] == ["CMOOSApp"] and keys and keys <= TEMPLATE_KEYS)
 
 
 def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppInfo:
@@ -505,7 +512,9 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     info = AppInfo(
         name=name,
         params={c.text for c in app.config_params} | _base_keys(),
-        strict=bool(_UNHANDLED.search(text)) and not DELEGATE.search(text),
+        # the list is the whole parser: the app reports other keys, or reads none of its
+        # own (the template's loop, left as generated, silently drops every line)
+        strict=not DELEGATE.search(text) and (bool(_UNHANDLED.search(text)) or _template_only(app)),
         publishes=pubs,
         publish_prefixes=prefixes,
         publishes_dynamic=dynamic,
