@@ -281,19 +281,6 @@ def rule_batches(units: list[Unit]) -> list[list[int]]:
     return sorted(folders.values(), key=lambda b: (-sum(_unit_weight(units[i]) for i in b), b[0]))
 
 
-def _warming_batch(run: LintRun, batches: list[list[int]]) -> int:
-    """The batch this process checks before the workers fork: the lightest that holds a
-    mission (a mission's rules touch the most of what is built once per run)."""
-    for b in range(len(batches) - 1, -1, -1):
-        if any(_is_mission(run.units[i]) for i in batches[b]):
-            return b
-    return len(batches) - 1
-
-
-def _is_mission(unit: Unit) -> bool:
-    return unit.moos is not None and unit.moos.is_mission
-
-
 def run_rules_parallel(
     run: LintRun, jobs: int, progress: Progress | None = None
 ) -> list[tuple[list[Diagnostic], int]]:
@@ -327,12 +314,6 @@ def run_rules_parallel(
         workers = None
     if workers is None:  # no pool on this system: every unit is checked here
         return [run.run_rules(unit) for unit in run.units]
-    # The lightest folder first, here and before the workers fork: what the rules build
-    # once per run on first use (the app catalogue, per-run tables) is then built once
-    # and inherited, not built again in each worker.
-    warm = _warming_batch(run, batches)
-    if claims.claim(warm):
-        here(batches[warm])
     # before the first submit, which forks the workers
     _RUN = run
     _CLAIMS = claims
@@ -345,8 +326,6 @@ def run_rules_parallel(
     try:
         futures = [workers.submit(_unit_rules, b, batch) for b, batch in enumerate(batches)]
         for b in range(len(batches) - 1, -1, -1):
-            if b == warm:
-                continue
             if not claims.claim(b):  # a worker has it (or had it)
                 break
             here(batches[b])
