@@ -217,6 +217,34 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     return frozenset(out)
 
 
+#: ``nsplug IN OUT ...``: the template nsplug reads and the file it writes
+_NSPLUG_RUN = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
+#: a command that changes the script's folder: later relative names are not known
+_CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
+
+
+def nsplug_runs(folder: str) -> tuple[tuple[str, int, str, str], ...]:
+    """``(script, line, template, output)`` of each ``nsplug TEMPLATE OUTPUT`` command of
+    the folder's own shell scripts, up to the first command that changes folder (a
+    launch script runs from the mission folder: its relative names are read from
+    there). Read as text, never run."""
+    return _nsplug_runs(shell_scripts(folder))
+
+
+@functools.lru_cache(maxsize=256)
+def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, str, str], ...]:
+    out = []
+    for path, text in scripts:
+        for lineno, line in enumerate(text.splitlines(), 1):
+            code = line.split("#", 1)[0]
+            if _CHANGES_FOLDER.search(code):
+                break
+            m = _NSPLUG_RUN.search(code)
+            if m:
+                out.append((path, lineno, m.group(1).strip("\"'"), m.group(2).strip("\"'")))
+    return tuple(out)
+
+
 _PATCH_RUN = re.compile(r"^[ \t]*run[ \t]*=[ \t]*([^@~\s]+)[^~\n]*(?:~[ \t]*(\S+))?", re.I | re.M)
 
 

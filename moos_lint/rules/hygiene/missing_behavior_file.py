@@ -35,9 +35,17 @@ from: the mission's own folder and its parents up to the project root
 (launch scripts run `pAntler targs/targ_abe.moos` from the mission folder,
 and the helm then opens `targs/targ_abe.bhv` from there).
 
+A file that does not exist at rest but that a launch script beside the
+mission makes with nsplug (`nsplug meta_vehicle.bhv targ_$VNAME.bhv`, for
+`behaviors = targ_$(VNAME).bhv` or `targ_henry.bhv`) is reported when every
+such command reads a template that does not exist (a template renamed or
+never committed): nsplug then fails, and the helm finds no behavior file.
+The script's names are read from the mission folder, up to its first `cd`.
+
 MOOS-IvP caveats, deliberately not reported:
 - a name holding an unexpanded `$(X)` macro (`targ_$(VNAME).bhv`: the launch
-  script sets VNAME), or a `~` or `${X}`;
+  script sets VNAME), or a `~` or `${X}`, unless the script's template is
+  missing (above);
 - a name `targ_*.EXT` that does not exist when a `meta_*.EXT` file with the
   same extension sits in the same folder: MOOS-IvP launch scripts generate
   the `targ_` files from the `meta_` templates with nsplug
@@ -49,11 +57,19 @@ MOOS-IvP caveats, deliberately not reported:
   folder and in IVP_IMAGE_DIRS, not only next to the mission.
 """
 
+import fnmatch
 import glob
 import os
+import re
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.launch import find_relative, launch_folders, made_by_scripts, project_folder
+from moos_lint.files.launch import (
+    find_relative,
+    launch_folders,
+    made_by_scripts,
+    nsplug_runs,
+    project_folder,
+)
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import exclusive, names_match
 from moos_lint.rules.kit.declare import Scope, rule
@@ -78,6 +94,32 @@ def _generated(folder: str, name: str) -> bool:
     ext = os.path.splitext(base)[1]
     where = os.path.join(folder, os.path.dirname(name))
     return bool(glob.glob(os.path.join(glob.escape(where), "meta_*" + ext)))
+
+
+#: a macro of a name: nsplug's ``$(VNAME)`` in a mission, the shell's ``$VNAME`` or
+#: ``${VNAME}`` in a launch script
+_MACRO = re.compile(r"\$(?:\([^)]*\)|\{[^}]*\}|\[[^\]]*\]|\w+)")
+
+
+def _missing_template(folder: str, name: str) -> str | None:
+    """What is wrong when every launch-script ``nsplug TEMPLATE OUTPUT`` of ``folder``
+    that writes ``name`` reads a template that does not exist (None when none writes it,
+    or one template exists, is made at launch, or is named by a variable)."""
+    wanted = _MACRO.sub("*", os.path.basename(name))
+    runs = [r for r in nsplug_runs(folder) if fnmatch.fnmatchcase(wanted, _MACRO.sub("*", r[3]))]
+    if not runs:
+        return None
+    made = made_by_scripts(folder)
+    for _script, _line, template, _output in runs:
+        if "$" in template or "`" in template or os.path.basename(template) in made:
+            return None
+        if os.path.exists(os.path.join(folder, template)):
+            return None
+    script, line, template, _output = runs[0]
+    return (
+        f"{os.path.basename(script)}:{line} makes it with nsplug from `{template}`, "
+        "which does not exist"
+    )
 
 
 @rule(
@@ -107,7 +149,18 @@ def check(ctx):
                 name = "".join(p.value.split())  # MOOS drops every blank of a config line
                 if len(name) >= 2 and name[0] == name[-1] == '"':
                     name = name[1:-1]
-                if not name or has_macro(name) or "~" in name or "${" in name:
+                if not name:
+                    continue
+                if not find_relative(name, folders):
+                    missing = _missing_template(folders[0], name)
+                    if missing is not None:
+                        yield ctx.report(
+                            p.value_span,
+                            f"`{p.key} = {name}`: {missing}, so the file is never made",
+                            line=p.line,
+                        )
+                        continue
+                if has_macro(name) or "~" in name or "${" in name:
                     continue
                 if find_relative(name, folders) or any(_generated(f, name) for f in folders):
                     continue
