@@ -149,8 +149,9 @@ def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
 
 
 _REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
-#: ``nsplug IN OUT ...``: the file nsplug writes (options may come first)
-_NSPLUG_OUTPUT = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+[^\s;&|-]\S*[ \t]+([^\s;&|-]\S*)")
+#: ``nsplug IN OUT ...``: the template nsplug reads and the file it writes (options may
+#: come first)
+_NSPLUG_RUN = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
 _RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
 
 
@@ -203,9 +204,9 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
         for line in text.splitlines():
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
-            m = _NSPLUG_OUTPUT.search(code)
-            if m and "$" not in m.group(1):
-                out.add(os.path.basename(m.group(1).strip("\"'")))
+            m = _NSPLUG_RUN.search(code)
+            if m and "$" not in m.group(2):
+                out.add(os.path.basename(m.group(2).strip("\"'")))
             for m in _RM.finditer(code):
                 for word in m.group(1).split():
                     word = word.strip("\"'")
@@ -217,8 +218,6 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     return frozenset(out)
 
 
-#: ``nsplug IN OUT ...``: the template nsplug reads and the file it writes
-_NSPLUG_RUN = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
 #: a command that changes the script's folder: later relative names are not known
 _CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 

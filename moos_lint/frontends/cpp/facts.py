@@ -121,8 +121,8 @@ LIBRARY_ANGLES: dict[str, tuple[str, str, tuple[float, float], str]] = {
 #: Fields of library structs whose angle is known: (struct, field) -> as
 #: :data:`LIBRARY_ANGLES`. MAVLink's generated C headers decode a message into a struct
 #: (``mavlink_msg_attitude_decode(&msg, &att); att.yaw``) whose fields are the getters'
-#: values (``mavlink_attitude_t``: roll, pitch, yaw in rad, -pi..+pi, Z-down;
-#: ``mavlink_vfr_hud_t``: heading in degrees, 0..360).
+#: values (``mavlink_attitude_t``'s yaw in rad, -pi..+pi, about Z-down;
+#: ``mavlink_vfr_hud_t``'s heading in degrees, 0..360).
 LIBRARY_FIELDS: dict[tuple[str, str], tuple[str, str, tuple[float, float], str]] = {
     ("mavlink_attitude_t", "yaw"): LIBRARY_ANGLES["mavlink_msg_attitude_get_yaw"],
     ("mavlink_vfr_hud_t", "heading"): LIBRARY_ANGLES["mavlink_msg_vfr_hud_get_heading"],

@@ -151,18 +151,19 @@ def check(ctx):
                     name = name[1:-1]
                 if not name:
                     continue
-                if not find_relative(name, folders):
-                    missing = _missing_template(folders[0], name)
-                    if missing is not None:
-                        yield ctx.report(
-                            p.value_span,
-                            f"`{p.key} = {name}`: {missing}, so the file is never made",
-                            line=p.line,
-                        )
-                        continue
+                if find_relative(name, folders):
+                    continue
+                missing = _missing_template(folders[0], name)
+                if missing is not None:
+                    yield ctx.report(
+                        p.value_span,
+                        f"`{p.key} = {name}`: {missing}, so the file is never made",
+                        line=p.line,
+                    )
+                    continue
                 if has_macro(name) or "~" in name or "${" in name:
                     continue
-                if find_relative(name, folders) or any(_generated(f, name) for f in folders):
+                if any(_generated(f, name) for f in folders):
                     continue
                 if any(os.path.basename(name) in made_by_scripts(f) for f in folders):
                     continue  # a launch script writes it (and the clean script removes it)

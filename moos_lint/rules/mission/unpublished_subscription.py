@@ -17,8 +17,9 @@ variable that a logic condition waits for: behavior `condition` and
   bridge routes, ...);
 - a node message (`NODE_MESSAGE_LOCAL = src_node=alpha,dest_node=all,
   var_name=CHASER,string_val=alpha`) posted in a mission that launches
-  uFldMessageHandler, or in another mission of its folder: the handler
-  posts `CHASER` on the vehicle that receives it;
+  uFldMessageHandler (the handler posts `CHASER` on the vehicle that
+  receives it), or in another mission of its folder, whatever the receiving
+  mission runs (the check stays quiet rather than guess where it goes);
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post;
 - a `uPokeDB ... VAR=value` in a shell script beside the mission;

@@ -41,18 +41,18 @@ from moos_lint.rules.kit.declare import Scope, rule
 
 @rule(code="R004", name="orphan-block", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
+    orphans = ctx.moos.orphan_blocks
+    if not orphans:
+        return
     r007 = ctx.runs("R007")
-    index: dict[int, int] | None = None
-    for block in ctx.moos.orphan_blocks:
-        if r007:
-            if index is None:
-                index = {id(line): i for i, line in enumerate(ctx.moos.lines)}
-            if _hidden_header(ctx.moos.lines, index.get(id(block.open))):
-                continue  # not-a-comment reports the header line
+    lines = ctx.moos.lines
+    index = {id(line): i for i, line in enumerate(lines)}
+    for block in orphans:
+        at = index.get(id(block.open))
+        if r007 and _hidden_header(lines, at):
+            continue  # not-a-comment reports the header line
         message = "block without a `ProcessConfig = NAME` header: no app reads it"
-        if index is None:
-            index = {id(line): i for i, line in enumerate(ctx.moos.lines)}
-        if _behavior_header(ctx.moos.lines, index.get(id(block.open))):
+        if _behavior_header(lines, at):
             message += (
                 " (`Behavior = ...` starts a helm behavior, which only a behavior file, "
                 "`.bhv`, holds)"
