@@ -182,6 +182,45 @@ CORRECTIONS: dict[str, dict] = {
         "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
         "(handleConfigBridge)",
     },
+    # apps whose start-up loop sees every line of the block and ignores the keys it does
+    # not compare (or reports them with reportConfigWarning, which the extractor does not
+    # take for reportUnhandledConfigWarning): their key lists are complete
+    "uFldContactRangeSensor": {
+        "reports_unhandled": True,
+        "why": 'every key the start-up loop does not match ends in reportConfigWarning("Unhandled '
+        'config: " + line) (CRS_App_HP.cpp:123-166)',
+    },
+    "pXRelay": {
+        "keys_complete": True,
+        "why": "the start-up loop compares each line's key with incoming_var and outgoing_var "
+        "and ignores the others (PXR_MOOSApp.cpp:141-156)",
+    },
+    "uTermCommand": {
+        "keys_complete": True,
+        "why": "the start-up loop compares each line's key with CMD and ignores the others "
+        "(TermCommand.cpp:81-93)",
+    },
+    "uHelmScope": {
+        "keys_complete": True,
+        "why": "the start-up loop compares each line's key with PAUSED, DISPLAY_MOOS_SCOPE, "
+        "DISPLAY_BHV_POSTS, DISPLAY_VIRGINS, TRUNCATED_OUTPUT, BEHAVIORS_CONCISE and VAR and "
+        "ignores the others (HelmScope.cpp:234-257)",
+    },
+    "uFldScope": {
+        "keys_complete": True,
+        "why": "the start-up loops compare each line's key with SCOPE, then LAYOUT, and ignore "
+        "the others (UFS_MOOSApp.cpp:95-122)",
+    },
+    "uPokeDB": {
+        "keys_complete": True,
+        "why": "the start-up loop handles poke and prints any other line as unhandled to the "
+        "console only (PokeDB.cpp:252-270)",
+    },
+    "uMAC": {
+        "keys_complete": True,
+        "why": "the start-up loop still compares only the template's FOO (AppCastMonitor.cpp:"
+        "177-187): uMAC reads no key of its own",
+    },
     "pHelmIvP": {
         "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
         "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "

@@ -62,7 +62,9 @@ MOOS-IvP caveats, deliberately not reported:
   see the others), so that a key list that may be incomplete never produces
   a finding. pShare and pLogger are checked: their whole key lists were read
   from their sources (`Output =` and `Log =` lines are theirs, whatever the
-  value). An app of the linted repository is checked when it reports
+  value); so are pXRelay, uTermCommand, uHelmScope, uFldScope, uPokeDB and
+  uMAC, whose start-up loops see every line and silently drop the keys they
+  do not compare, and uFldContactRangeSensor, which warns about them. An app of the linted repository is checked when it reports
   unhandled lines (`reportUnhandledConfigWarning`), or when it is a plain
   CMOOSApp whose start-up loop still compares only the template's `FOO` and
   `BAR`: it reads no key of its own, so `Port = /dev/ttyACM1` in its block
