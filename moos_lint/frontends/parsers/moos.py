@@ -186,7 +186,10 @@ def parse_moos(expansion: Expansion) -> MoosFile:
         param = split_param(line)
         if param is None:
             # a line that is still an nsplug macro gets its text at launch: not judged
-            if "[" not in stripped and "]" not in stripped and not has_macro(stripped):
+            if has_macro(stripped):
+                if current is not None:
+                    current.macro_lines.append(line)
+            elif "[" not in stripped and "]" not in stripped:
                 mf.malformed.append(line)
             continue
         header = _header_name(param)

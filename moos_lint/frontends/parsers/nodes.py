@@ -129,6 +129,9 @@ class Block:
     text_format: bool = False
     text_fields: list[TextField] = field(default_factory=list)
     text_errors: list[tuple[Line, int, int, str]] = field(default_factory=list)
+    #: lines that are still an nsplug macro (``$(RUN)``), whose text a launch script
+    #: gives: they may hold any parameter, a Run line among them
+    macro_lines: list[Line] = field(default_factory=list)
     _lname: str | None = field(default=None, init=False, repr=False, compare=False)
     #: what readers work out from the block once (it never changes after parsing)
     memo: dict = field(default_factory=dict, init=False, repr=False, compare=False)
@@ -171,6 +174,12 @@ class RunLine:
         # (read at every turn by the rules and the models: worked out once)
         self.program = self.binary.replace("\\", "/").rsplit("/", 1)[-1]
         self.name = self.alias_from_params or self.alias or self.program
+
+    @property
+    def inhibits_moos_params(self) -> bool:
+        """``InhibitMOOSParams = true``: pAntler passes neither the mission file nor the
+        MOOS name, as for a program that is no MOOS client (``gdb``, an LCM program)."""
+        return self.options.get("inhibitmoosparams", "").strip().lower() == "true"
 
     @property
     def script_block(self) -> str | None:

@@ -114,7 +114,7 @@ def check(ctx):
                 continue
         elif cat.needs_process_config(program) is False:
             continue
-        if run.options.get("inhibitmoosparams", "").lower() == "true":
+        if run.inhibits_moos_params:
             continue
         if run.script_block is not None:
             continue  # a script reads its configuration its own way, if at all

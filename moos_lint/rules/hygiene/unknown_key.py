@@ -84,7 +84,6 @@ misspellings this rule is for.
 """
 
 import difflib
-import re
 from collections.abc import Sequence
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
@@ -92,7 +91,8 @@ from moos_lint.frontends.parsers.moos import block_comments, looks_commented
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
-from moos_lint.semantics.catalogue import app_text, text_format_app, text_format_schema
+from moos_lint.rules.kit.file_wide import repo_globals
+from moos_lint.semantics.catalogue import text_format_app, text_format_schema
 
 ANTLER_KEYS = [
     "Run",
@@ -135,25 +135,6 @@ APP_KEYS = [
 _LIST_OPTIONS = ("extraprocessparams", "xconfig", "win32config")
 
 
-#: literal first, as the catalogue's ``DELEGATE``: searched over every file of every app
-_GET_VALUE = re.compile(r"GetValue(?<=\bGetValue)\s*\(\s*\"([A-Za-z0-9_]+)\"", re.ASCII)
-
-
-def _repo_globals(run) -> frozenset[str]:
-    """Top-of-file keys the run's own C++ apps read (``m_MissionReader.GetValue("KEY", s)``)."""
-    found = run.memos.repo_globals
-    if found is not None:
-        return found
-    keys: set[str] = set()
-    for unit in run.units:
-        app = getattr(unit, "cpp", None)
-        for f in getattr(app, "files", None) or []:
-            # the text the C++ front end read (every file of an app is in the run's sources)
-            keys.update(_GET_VALUE.findall(app_text(f.path, run.sources)))
-    run.memos.repo_globals = found = frozenset(keys)
-    return found
-
-
 def _skip_key(key: str) -> bool:
     return not key or has_macro(key) or "define:" in key or "[" in key or "]" in key
 
@@ -174,7 +155,7 @@ def check(ctx):
     moos = ctx.moos
     r007 = ctx.runs("R007")
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
-    globals_known += sorted(_repo_globals(ctx.run))
+    globals_known += sorted(repo_globals(ctx.run))
     if any(b.text_format for b in moos.blocks) or any(
         text_format_app(r.program) for r in moos.runs
     ):

@@ -74,7 +74,9 @@ MOOS-IvP caveats, deliberately not reported:
   `EXECUTE_PROCESS( COMMAND uMissionTester alpha.moos ...)`). All are read as
   text, never run;
 - a block or Run name holding an unexpanded `$(X)` macro: an unknown name may
-  be any name, so it launches (or is launched by) anything it could match;
+  be any name, so it launches (or is launched by) anything it could match; an
+  ANTLER line that is a macro alone (`$(RUN)`, the whole Run line given by the
+  launch script) may launch any block, so nothing is reported;
 - a block and a Run line in mutually exclusive `#ifdef` branches do not launch
   each other (`#ifdef XMODE SIM` / `#elseifdef XMODE M300`, or two `#ifdef`s
   testing one macro for different values), so such a block is reported;
@@ -114,6 +116,8 @@ def check(ctx):
     moos = ctx.moos
     if ctx.expansion.incomplete:
         return
+    if any(b.macro_lines for b in moos.antler_blocks):
+        return  # a line the launch script gives (`$(RUN)`) may launch any block's process
     given = ctx.options.get("manual-apps")
     if isinstance(given, str):
         given = [given]

@@ -64,7 +64,8 @@ MOOS-IvP caveats, deliberately not reported:
   from their sources (`Output =` and `Log =` lines are theirs, whatever the
   value); so are pXRelay, uTermCommand, uHelmScope, uFldScope, uPokeDB and
   uMAC, whose start-up loops see every line and silently drop the keys they
-  do not compare, and uFldContactRangeSensor, which warns about them. An app of the linted repository is checked when it reports
+  do not compare, and uFldContactRangeSensor, which warns about them. An app
+  of the linted repository is checked when it reports
   unhandled lines (`reportUnhandledConfigWarning`), or when it is a plain
   CMOOSApp whose start-up loop still compares only the template's `FOO` and
   `BAR`: it reads no key of its own, so `Port = /dev/ttyACM1` in its block
@@ -74,8 +75,9 @@ MOOS-IvP caveats, deliberately not reported:
   `pSonar`), or a script beside the mission of the block's name
   (`pSonar.py`), when no Run line starts a compiled program of that name. The
   script, not the catalogue's app of the same name, reads that block;
-- a global key inside a block (`term_reporting`, `ServerPort`): MOOS reads
-  those from anywhere in the file with `GetValue`;
+- a global key inside a block (`term_reporting`, `ServerPort`), or a key an
+  app of the linted repository reads with `m_MissionReader.GetValue("point1",
+  s)`: `GetValue` reads those from anywhere in the file, blocks included;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
   or `/` (not-a-comment reports those); a key with a `[...]` part
   (pMarineViewer's `left_context[return]`) is judged by the word before it, so
@@ -100,15 +102,11 @@ import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Span
 from moos_lint.files.launch import scripts_beside
-from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, has_macro
-from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
+from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.file_wide import file_wide
 from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
-#: keys apps read with CMOOSFileReader::GetValue, which scans the whole file, blocks
-#: included: `term_reporting = false` inside a block is read by every AppCasting app
-#: (AppCastingMOOSApp.cpp:349). global-key-in-block (R009) judges such lines.
-_FILE_WIDE = {k.lower() for k in GLOBALS} | set(GLOBAL_KEYS)
 _WORD = re.compile(r"[a-z_][a-z0-9_]*")
 
 
@@ -189,12 +187,16 @@ def _close_matches(key: str, known: tuple[str, ...]) -> tuple[str, ...]:
     fixable=True,
 )
 def check(ctx):
+    # keys apps read with CMOOSFileReader::GetValue, which scans the whole file, blocks
+    # included: `term_reporting = false` inside a block is read by every AppCasting app
+    # (AppCastingMOOSApp.cpp:349); global-key-in-block (R009) judges such lines
+    wide = file_wide(ctx.run)
     for block, app in block_apps(ctx):
         if not app.strict:
             continue
         for p in block.params:
             key = p.lkey
-            if not key or app.reads(key) or has_macro(p.key) or key in _FILE_WIDE:
+            if not key or app.reads(key) or has_macro(p.key) or key in wide:
                 continue
             if key.startswith(("#", "/", "[")):
                 continue

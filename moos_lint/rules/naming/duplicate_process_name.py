@@ -71,8 +71,8 @@ def check(ctx):
     for block in effective:
         for run in antler_runs(block):
             name = run.name
-            if not name or has_macro(name):
-                continue
+            if not name or has_macro(name) or run.inhibits_moos_params:
+                continue  # (a program started without its MOOS name is no client of it)
             line = run.param.line
             earlier = [r for r in seen.get(name, []) if not r.param.line.excludes(line)]
             if earlier:

@@ -8,8 +8,16 @@ every name a process runs under:
 - the program of an Antler `Run` line (`Run = Logger @ ...`);
 - the `~` alias of a `Run` line (`Run = pShare @ NewConsole = false ~ ShareA`);
 - an alias given through `ExtraProcessParams` as `--alias=NAME`;
-- a `ProcessConfig = NAME` header whose name no `Run` line of the same file
-  launches (a name launched in the file is reported once, on its `Run` line).
+- in a file without `Run` lines (a plug that missions include), a
+  `ProcessConfig = NAME` header, unless a mission of the run launches the
+  name (it is reported there once, on its `Run` line). In a mission, a block
+  that no `Run` line launches runs under no name: unlaunched-process-config
+  reports it (or keeps quiet when its `Run` line is commented out on purpose).
+
+`Run` lines with `InhibitMOOSParams = true` are skipped: pAntler passes that
+program neither the mission file nor a MOOS name, as it does for a program that
+is no MOOS client (`gdb`, an LCM program). An alias equal to its program's name
+is judged once, as the program.
 
 The MOOS infrastructure is exempt, in any case: `MOOSDB`, `ANTLER` /
 `pAntler`, and the command-line tools MOOS core ships beside the MOOSDB
@@ -108,6 +116,8 @@ def check(ctx):
     for run in ctx.moos.runs:
         program = run.program
         launched.add(run.name.lower())
+        if run.inhibits_moos_params:
+            continue  # no MOOS client (`gdb`, an LCM program): pAntler passes it no MOOS name
         info = cat.app(program) if program else None
         if info is not None and info.own:
             pass  # an app of the linted C++: reported once, where it is defined
@@ -121,12 +131,16 @@ def check(ctx):
             aliases.add(alias.lower())
             if program and program.lower() in exempt:
                 continue  # an alias of MOOS's own programs (`MOOSDB ~ MOOSDB_ALPHA`)
+            if program and alias.lower() == program.lower():
+                continue  # the program's own name, judged above
             if check_aliases and not has_macro(alias) and not conforms(alias, exempt):
                 yield ctx.report(
                     span,
                     f"alias `{alias}` of `{program}` {prefix_problem(alias)}",
                     line=line,
                 )
+    if ctx.moos.runs and not ctx.expansion.incomplete:
+        return  # a mission: a block none of its Run lines launches runs under no name
     elsewhere_launched, elsewhere_aliases = _launched_in_run(ctx.run)
     for block in ctx.moos.blocks:
         name = block.name

@@ -463,10 +463,13 @@ def _needs_origin(app: AppModel, text: str) -> bool:
 #: other key to code elsewhere (a library), whose keys the app's own files do not list; or
 #: ``bool handled = m_gui->setRadioCastAttrib(param, value);``: every key handed over
 #: before any test of its own (uMACView in MOOS-IvP 15.5, UMV_MOOSApp.cpp).
+#: or ``else if(engine_keys.count(param)) handled = engine.setParameter(param, value);``:
+#: keys handed over when a test without a literal (a set of keys made at run time) accepts them.
 #: Written literal first (``else(?<=\belse)`` is ``\belse``): a pattern that starts with
 #: ``\b`` is tried at every position of the text, 20x slower over an app's files.
 DELEGATE = re.compile(
-    r"(?:else(?<=\belse)\s*\{?\s*(?://[^\n]*+\s*+)*+|bool(?<=\bbool)\s+)"
+    r"(?:else(?<=\belse)\s*\{?\s*(?://[^\n]*+\s*+)*+|bool(?<=\bbool)\s+"
+    r"|if(?<=\bif)\s*(?=\([^\"\n]*\bparam\b)\((?:[^\"()\n]|\([^\"()\n]*\))*\)\s*\{?\s*)"
     r"handled\s*=\s*[\w>.-]+\(\s*param\b",
     re.MULTILINE,
 )
