@@ -244,6 +244,21 @@ def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, 
     return tuple(out)
 
 
+def nsplug_working_folders(folder: str) -> tuple[str, ...]:
+    """The folder above ``folder`` when one of its launch scripts runs nsplug on a
+    template of ``folder`` (``nsplug bhvs/meta_heron.bhv targ_heron.bhv`` in the mission
+    folder): nsplug looks for includes in the folder it runs in, not the template's
+    (Expander.cpp), so the template's ``#include bhvs/plug_return.bhv`` is found there."""
+    parent = os.path.dirname(folder)
+    if not parent or parent == folder:
+        return ()
+    for _script, _line, template, _output in nsplug_runs(parent):
+        sub = os.path.dirname(template)
+        if sub and "$" not in sub and os.path.normpath(os.path.join(parent, sub)) == folder:
+            return (parent,)
+    return ()
+
+
 _PATCH_RUN = re.compile(r"^[ \t]*run[ \t]*=[ \t]*([^@~\s]+)[^~\n]*(?:~[ \t]*(\S+))?", re.I | re.M)
 
 

@@ -492,17 +492,33 @@ class Preprocessor:
         if os.path.isabs(name):
             self.cache.probed.add(os.path.dirname(_norm(name)))
             return _norm(name) if os.path.exists(name) else None
-        scripts: tuple[str, ...] = ()
-        if self.mode == "lint":  # the --path folders the mission's launch scripts give nsplug
-            from moos_lint.files.launch import script_include_paths
+        for folder in (top_dir, *self.include_paths, including_dir):
+            candidate = os.path.join(folder, name)
+            self.cache.probed.add(os.path.dirname(_norm(candidate)))
+            if os.path.exists(candidate):
+                return _norm(candidate)
+        if self.mode != "lint":
+            return None
+        # the --path folders the mission's launch scripts give nsplug, and the folder a
+        # script above runs nsplug in on this template (read only when all else fails)
+        from moos_lint.files.launch import nsplug_working_folders, script_include_paths
 
-            scripts = script_include_paths(top_dir)
-        for folder in (top_dir, *self.include_paths, including_dir, *scripts):
+        for folder in (*script_include_paths(top_dir), *nsplug_working_folders(top_dir)):
             candidate = os.path.join(folder, name)
             self.cache.probed.add(os.path.dirname(_norm(candidate)))
             if os.path.exists(candidate):
                 return _norm(candidate)
         return None
+
+    def _made_at_launch(self, target: str, top_dir: str) -> bool:
+        """Whether a launch script beside the top-level file writes the missing include
+        before nsplug runs (``cat > plug_pShare.moos <<EOF``) or a clean script deletes it:
+        a file the launch makes, absent at rest."""
+        if self.mode != "lint" or "/" in target.replace("\\", "/"):
+            return False
+        from moos_lint.files.launch import made_by_scripts
+
+        return target in made_by_scripts(top_dir)
 
     # ------------------------------------------------------------------ expand
     def expand(self, path: str | Path, macros: dict | None = None) -> Expansion:
@@ -849,6 +865,8 @@ class Preprocessor:
         found = self.resolve_include(target, top_dir, including_dir)
         if found is None:
             exp.incomplete = True
+            if self._made_at_launch(target, top_dir):
+                return None
             message = f"included file `{target}` not found"
             if "//" in target:
                 message += (

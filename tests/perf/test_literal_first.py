@@ -17,7 +17,7 @@ import pytest
 
 from moos_lint.frontends.cpp import app, extract, prefilter
 from moos_lint.frontends.cpp.values import field_write_pattern
-from moos_lint.rules.hygiene import unknown_key
+from moos_lint.rules.kit import file_wide
 from moos_lint.rules.mission import _behaviors
 from moos_lint.semantics import catalogue
 
@@ -36,12 +36,21 @@ PAIRS = [
     (
         "DELEGATE",
         catalogue.DELEGATE,
-        re.compile(r"\belse\s*\{?\s*(?://[^\n]*\s*)*handled\s*=\s*[\w>.-]+\(\s*param\b", re.M),
-        ["else", "xelse", "_else", " ", "\n", "{", "//c\n", "handled = f(param", "handled=g.h("],
+        re.compile(
+            r"(?:\belse\s*\{?\s*(?://[^\n]*\s*)*|\bbool\s+"
+            r"|\bif\s*(?=\([^\"\n]*\bparam\b)\((?:[^\"()\n]|\([^\"()\n]*\))*\)\s*\{?\s*)"
+            r"handled\s*=\s*[\w>.-]+\(\s*param\b",
+            re.M,
+        ),
+        [
+            *["else", "xelse", "_else", " ", "\n", "{", "//c\n"],
+            *["handled = f(param", "handled=g.h(", "bool ", "xbool ", "if", "xif"],
+            *["(", ")", "k.count(param)", '"', "param"],
+        ],
     ),
     (
         "GetValue",
-        unknown_key._GET_VALUE,
+        file_wide._GET_VALUE,
         re.compile(r"\bGetValue\s*\(\s*\"([A-Za-z0-9_]+)\"", re.ASCII),
         ["GetValue", "xGetValue", "_GetValue", " ", '("', '( "KEY"', "KEY", '"', "\u00e9", "\t"],
     ),

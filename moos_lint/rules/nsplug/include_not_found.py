@@ -8,7 +8,13 @@ moos-lint searches where nsplug does: the folder nsplug runs in (taken to be
 the top-level file's folder), then each `--include-path` folder (nsplug's
 `--path`), then the including file's folder, then the folders that the
 launch scripts beside the top-level file (`*.sh`, read as text, never run)
-hand nsplug with `--path=DIR` or `-p DIR`. When one of those folders holds the
+hand nsplug with `--path=DIR` or `-p DIR`, then the folder above when a
+launch script there runs nsplug on the template from outside its folder
+(`nsplug bhvs/meta_heron.bhv targ_heron.bhv`: nsplug runs, and looks for
+`#include bhvs/plug_return.bhv`, in the mission folder). A file that a
+launch script beside the top-level file writes before it runs nsplug
+(`cat > plug_pShare.moos <<EOF`), or that a clean script deletes, is made at
+launch: its absence is not reported. When one of those folders holds the
 file under the same name in another case (`plug_v1_origin.moos` for
 `#include plug_V1_origin.moos`), the message says so: the mission then works
 on a case-insensitive file system (macOS's default) and fails on Linux. A
