@@ -514,7 +514,8 @@ class _Builder:
     def _siblings(self, folder: str) -> None:
         pre = self.run.preprocessor
         me = _norm(self.m.path)
-        for cand in _missions_beside(self.run, folder):
+        generated = os.path.basename(me).startswith("targ_")
+        for cand in _missions_beside(self.run, folder, generated):
             if cand == me:
                 continue
             exp = pre.expand(cand)
@@ -528,16 +529,20 @@ class _Builder:
                 self._put_all(key, pubs, share=True)
 
 
-def _missions_beside(run: RunView, folder: str) -> list[str]:
+def _missions_beside(run: RunView, folder: str, generated: bool = False) -> list[str]:
     """The ``.moos`` files of ``folder`` that may be missions (normalised, sorted), once
-    per run: the missions of a folder all look at the same ones."""
+    per run: the missions of a folder all look at the same ones. nsplug's outputs
+    (``targ_*.moos``) are left out, being copies of the templates beside them, unless
+    ``generated``: a ``targ_`` mission (a repository that keeps only nsplug's outputs)
+    runs beside the other ``targ_`` missions of its folder."""
     memo = run.memos.mission_files
-    found = memo.get(folder)
+    key = folder + "\0targ" if generated else folder
+    found = memo.get(key)
     if found is None:
-        found = memo[folder] = [
+        found = memo[key] = [
             _norm(cand)
             for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos")))
-            if not os.path.basename(cand).startswith("targ_")
+            if generated or not os.path.basename(cand).startswith("targ_")
         ]
     return found
 

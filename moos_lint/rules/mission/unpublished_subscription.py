@@ -25,7 +25,9 @@ variable that a logic condition waits for: behavior `condition` and
 - a `uPokeDB ... VAR=value` in a shell script beside the mission;
 - when the mission receives variables from another community (pShare,
   uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
-  in its folder publish.
+  in its folder publish (nsplug's outputs, `targ_*.moos`, count only for a
+  `targ_` mission: in a repository that keeps only those, they are the other
+  communities).
 
 - a behavior of the project's own (a kind the catalogue does not describe,
   whose `BHV_X.cpp` is under the project root) that posts it by name
