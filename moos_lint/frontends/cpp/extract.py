@@ -72,8 +72,9 @@ DEVICE_STRING = re.compile(
     r"^/dev/(?:tty|cu\.|serial|usb|can|i2c|spidev|hidraw|video|input/|js\d|gpiochip)"
 )
 BAUD_CALLS = {"cfsetispeed", "cfsetospeed", "cfsetspeed", "cfmakeraw"}
-#: ``gps_open(host, port, &data)``: libgps's C client of the gpsd service
-SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom", "gps_open"}
+#: ``gps_open(host, port, &data)``: libgps's C client of the gpsd service;
+#: ``curl_easy_perform(handle)``: libcurl's transfer (a web service over HTTP)
+SOCKET_CALLS = {"socket", "connect", "bind", "sendto", "recvfrom", "gps_open", "curl_easy_perform"}
 #: MAVSDK's ``Mavsdk::add_*_connection(url)``: a link to an autopilot over UDP, TCP or serial
 VEHICLE_LINK_CALLS = {
     "add_any_connection",
@@ -1561,6 +1562,6 @@ def include_io(path: str) -> str:
         return "usb"
     if "serialport" in low.replace("_", "") or low.endswith("serial.h"):
         return "serial"
-    if low in ("sys/socket.h", "netinet/in.h", "arpa/inet.h", "winsock2.h"):
+    if low in ("sys/socket.h", "netinet/in.h", "arpa/inet.h", "winsock2.h", "curl/curl.h"):
         return "socket"
     return ""

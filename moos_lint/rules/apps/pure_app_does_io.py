@@ -9,7 +9,8 @@ joystick's `/dev/input/js0`, ...), SocketCAN or libusb. A `p` app is also
 reported for socket I/O (`socket`, `connect`,
 `bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
 `add_any_connection`, a client of the gpsd service: libgps's `gpsmm` or
-`gps_open`): a vehicle, a sensor or a service spoken to in a
+`gps_open`, a web service reached with libcurl: `curl/curl.h`,
+`curl_easy_perform`): a vehicle, a sensor or a service spoken to in a
 protocol that is not MOOS. The finding is on the first such use. The app's
 own classes are no evidence by their names (`class UdpDecoder : public
 CMOOSApp` decodes what another app received): what they do shows in their
@@ -18,7 +19,7 @@ calls, includes and strings.
 The app's own helper files count too: a C++ file of the app's folder that
 never names the MOOS API (a class that opens the port or the link) is read for
 the I/O headers it includes (`sys/socket.h`, `termios.h`, a serial-port
-library, SocketCAN, libusb) and for MAVSDK links, without being parsed.
+library, SocketCAN, libusb, libcurl) and for MAVSDK links, without being parsed.
 
 ## Why is this bad?
 The MOOS conventions name processes by what they are: `i` for interface apps
