@@ -167,10 +167,15 @@ CORRECTIONS: dict[str, dict] = {
     },
     "uFldNodeBroker": {
         "param_forms": {
-            "bridge": {"form": "fields:src", "at": "ivp/src/uFldNodeBroker/NodeBroker.cpp:337-352"}
+            "bridge": {"form": "fields:src", "at": "ivp/src/uFldNodeBroker/NodeBroker.cpp:337-352"},
+            "try_shore_host": {
+                "form": "fields:pshare_route",
+                "at": "ivp/src/uFldNodeBroker/NodeBroker.cpp:391-405",
+            },
         },
         "why": "`bridge = src=VAR, alias=VAR2` is rejected without a `src=` field "
-        "(handleConfigBridge)",
+        "(handleConfigBridge); `try_shore_host = pshare_route=HOST:PORT` without a "
+        "`pshare_route=` field (handleConfigTryShoreHost)",
     },
     "uFldShoreBroker": {
         "param_forms": {
