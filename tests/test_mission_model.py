@@ -231,7 +231,15 @@ def _corpus_findings(rel: str, code: str) -> list[tuple[str, int, str]]:
         (
             "ivp/missions/u6_alpha/meta_vehicle.moos",
             "M002",
-            [("ivp/missions/u6_alpha/plug_uFldNodeBroker.moos", 14, "BRIDGE = scr=VIEW_POINT")],
+            [
+                # the pre-pShare form, which today's uFldNodeBroker rejects
+                (
+                    "ivp/missions/u6_alpha/plug_uFldNodeBroker.moos",
+                    10,
+                    "TRY_SHORE_HOST = hostip=localhost,port_udp=9200",
+                ),
+                ("ivp/missions/u6_alpha/plug_uFldNodeBroker.moos", 14, "BRIDGE = scr=VIEW_POINT"),
+            ],
         ),
         ("ivp/missions/s1_alpha/alpha.moos", "M001", []),
         ("ivp/missions/s1_alpha/alpha.moos", "M005", []),
