@@ -13,6 +13,7 @@
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 from moos_lint.frontends.nsplug import Expansion, Line
@@ -25,6 +26,9 @@ from moos_lint.frontends.parsers.nodes import (
     parse_run,
 )
 from moos_lint.frontends.parsers.protobuf_text import looks_like_text_format, read_block
+
+#: a line that is one nsplug macro and nothing else (``$(RUN)``): the launch script gives it
+_MACRO_ALONE = re.compile(r"[$%]\([A-Za-z0-9_]+\)")
 
 
 def strip_comment(text: str) -> str:
@@ -187,7 +191,7 @@ def parse_moos(expansion: Expansion) -> MoosFile:
         if param is None:
             # a line that is still an nsplug macro gets its text at launch: not judged
             if has_macro(stripped):
-                if current is not None:
+                if current is not None and _MACRO_ALONE.fullmatch(strip_comment(stripped).strip()):
                     current.macro_lines.append(line)
             elif "[" not in stripped and "]" not in stripped:
                 mf.malformed.append(line)

@@ -129,7 +129,7 @@ class Block:
     text_format: bool = False
     text_fields: list[TextField] = field(default_factory=list)
     text_errors: list[tuple[Line, int, int, str]] = field(default_factory=list)
-    #: lines that are still an nsplug macro (``$(RUN)``), whose text a launch script
+    #: lines that are one nsplug macro alone (``$(RUN)``), whose text a launch script
     #: gives: they may hold any parameter, a Run line among them
     macro_lines: list[Line] = field(default_factory=list)
     _lname: str | None = field(default=None, init=False, repr=False, compare=False)
