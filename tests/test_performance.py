@@ -171,6 +171,26 @@ def test_the_cache_notices_a_changed_launched_script(tmp_path, counted):
     assert [d["code"] for d in after if d["code"] == "H001"] == ["H001"]
 
 
+def test_the_cache_notices_a_changed_launch_script_in_the_folder_above(tmp_path, counted):
+    """A launch script above the linted folder that runs nsplug on one of its templates
+    decides where nsplug looks for the template's includes (its working folder)."""
+    project = tmp_path / "project"
+    (project / ".git").mkdir(parents=True)
+    bhvs = project / "bhvs"
+    (bhvs / "plugs").mkdir(parents=True)
+    (bhvs / "meta_loiter.bhv").write_text("#include bhvs/plugs/plug_return.bhv\n")
+    (bhvs / "plugs" / "plug_return.bhv").write_text("initialize RETURN = false\n")
+    script = project / "launch.sh"
+    script.write_text("nsplug bhvs/meta_loiter.bhv targ_abe.bhv -f\n")
+    store = tmp_path / "cache"
+    settings = resolve_settings([bhvs], None)
+    assert not any(d["code"] == "P001" for d in _json(_cached(bhvs, store, settings)))
+    script.write_text("nsplug meta_loiter.bhv targ_abe.bhv -f\n")  # run from elsewhere now
+    after = _json(_cached(bhvs, store, settings))
+    assert len(counted) == 2
+    assert [d["code"] for d in after if d["code"] == "P001"] == ["P001"]
+
+
 def test_the_stored_file_list_notices_new_and_removed_files(tree, tmp_path, counted):
     store = tmp_path / "cache"
     _cached(tree, store)

@@ -536,15 +536,14 @@ def _missions_beside(run: RunView, folder: str, generated: bool = False) -> list
     ``generated``: a ``targ_`` mission (a repository that keeps only nsplug's outputs)
     runs beside the other ``targ_`` missions of its folder."""
     memo = run.memos.mission_files
-    key = folder + "\0targ" if generated else folder
-    found = memo.get(key)
+    found = memo.get(folder)
     if found is None:
-        found = memo[key] = [
-            _norm(cand)
-            for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos")))
-            if generated or not os.path.basename(cand).startswith("targ_")
+        found = memo[folder] = [
+            _norm(cand) for cand in sorted(glob.glob(os.path.join(glob.escape(folder), "*.moos")))
         ]
-    return found
+    if generated:
+        return found
+    return [cand for cand in found if not os.path.basename(cand).startswith("targ_")]
 
 
 def _app_publishers(run: RunView, app: AppInfo, process: str) -> list[tuple[str, Publisher]]:

@@ -177,13 +177,25 @@ def _side_files(files: list[str], settings: Settings) -> set[str]:
     cc = settings.compile_commands
     if cc:
         out.add(os.path.join(cc, "compile_commands.json") if os.path.isdir(cc) else cc)
+    top = os.path.abspath(settings.project_root or settings.root)
     for d in {os.path.dirname(p) for p in files if not is_cpp(p)}:
-        try:
-            names = os.listdir(d)
-        except OSError:
-            continue
-        # shell scripts (uPokeDB lines) and the scripts missions launch (what they quote)
-        out.update(os.path.join(d, n) for n in names if n.lower().endswith(SCRIPT_SUFFIXES))
+        # shell scripts (uPokeDB lines, the files a launch makes) and the scripts missions
+        # launch (what they quote), beside the file and in its `scripts` folder; the
+        # launch scripts of the folder above, which may run nsplug on a template of this
+        # one (files.launch.nsplug_working_folders), when that folder is in the project
+        where = [d, os.path.join(d, "scripts")]
+        parent = os.path.normpath(os.path.join(d, os.pardir))
+        above = os.path.abspath(parent)
+        if above == top or above.startswith(top + os.sep):
+            where.append(parent)
+        for folder in where:
+            try:
+                names = os.listdir(folder)
+            except OSError:
+                continue
+            out.update(
+                os.path.join(folder, n) for n in names if n.lower().endswith(SCRIPT_SUFFIXES)
+            )
     for d in {os.path.dirname(p) for p in files if is_cpp(p)}:
         out.add(os.path.join(d, "CMakeLists.txt"))
         out.add(os.path.join(os.path.dirname(d), "CMakeLists.txt"))
