@@ -3,16 +3,26 @@
 from __future__ import annotations
 
 import json
+import os
 import re
 import subprocess
 import sys
+
+import pytest
 
 from moos_lint.commands.graph import _flagged_vars
 from moos_lint.files.diagnostics import Diagnostic, Severity, Span, Subject
 from moos_lint.files.suffixes import is_cpp, is_cpp_source
 from moos_lint.frontends.nsplug import Preprocessor
 from moos_lint.frontends.parsers.bhv import parse_bhv
-from moos_lint.semantics.catalogue import DELEGATE, STOCK, stock
+from moos_lint.semantics.catalogue import (
+    COMMAND_KEY_SUFFIX,
+    DELEGATE,
+    STOCK,
+    TEMPLATE_MAIL_KEYS,
+    UNASKED_MAIL,
+    stock,
+)
 
 #: a source file and line (or line range) of MOOS-IvP or MOOS core
 _EVIDENCE = re.compile(r"(ivp/src|MOOS_Jul2724)/[\w/.-]+\.(cpp|h):\d+")
@@ -129,3 +139,29 @@ def test_the_delegate_pattern_is_linear_on_commented_out_code():
     assert done.returncode == 0
     # the pattern still finds a real hand-over, past comment lines
     assert DELEGATE.search("else {\n  // the rest\n  handled = m_lib.setParam(param, value);")
+
+
+_TREE = os.environ.get("MOOS_IVP_TREE", "")
+
+
+@pytest.mark.skipif(
+    not os.path.isdir(_TREE), reason="set MOOS_IVP_TREE to a MOOS-IvP checkout to read the evidence"
+)
+def test_mail_facts_are_what_the_moos_sources_say():
+    """The mail that comes unasked and the templates' placeholders, read from the sources."""
+
+    def read(path: str) -> str:
+        with open(os.path.join(_TREE, path), encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+
+    core = "MOOS/MOOSCore/Core/libMOOS"
+    assert 'm_Comms.Register("APPCAST_REQ", 0)' in read(
+        f"{core}/Thirdparty/AppCasting/AppCastingMOOSApp.cpp"
+    )
+    assert '"_async_timing"' in read(f"{core}/Comms/MOOSAsyncCommClient.cpp")
+    assert {"APPCAST_REQ", "_async_timing"} == UNASKED_MAIL
+    template = read("scripts/GenMOOSApp_AppCasting")
+    assert 'if(key == "FOO")' in template and '// Register("FOOBAR", 0);' in template
+    assert {"FOO", "FOOBAR"} == TEMPLATE_MAIL_KEYS
+    command = read(f"{core}/App/MOOSApp.cpp")
+    assert 'GetAppName()+"_CMD"' in command and COMMAND_KEY_SUFFIX == "_CMD"

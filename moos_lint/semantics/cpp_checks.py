@@ -16,6 +16,7 @@ from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp import values
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
+from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
 from moos_lint.semantics.process_names import PREFIXED, prefix_problem
 
 Finding = tuple[Span, str]
@@ -524,7 +525,7 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
     seen = {p.name.text for p in app.publications if p.name.text and not p.name.wildcard}
     for s in app.subscriptions:
         name = s.name.text
-        if name is None or s.name.wildcard or name in seen or name == "APPCAST_REQ":
+        if name is None or s.name.wildcard or name in seen or name in UNASKED_MAIL:
             continue
         seen.add(name)
         if name in exact or name.upper() in {e.upper() for e in exact}:
@@ -536,6 +537,39 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
         yield (
             s.name_span,
             f"{_app_label(app)} registers for `{name}` but its OnNewMail never handles it",
+        )
+
+
+def unregistered_mail(app: AppModel) -> Iterator[Finding]:
+    """Names OnNewMail tests a message's own name against that the app never registers for.
+
+    Only apps whose registrations can all be read: none with a name made at run time or
+    a wildcard, none through a base class of another folder, none that hands its comms
+    client (or itself) to other code. A registration commented out or under ``#if 0``
+    was taken out on purpose; its handler is left alone.
+    """
+    if not app.is_app or not any(f.has_on_new_mail for f in app.files):
+        return
+    subs = [s for f in app.files for s in f.subscriptions]
+    if not any(s.active for s in subs) or any(f.comms_shared for f in app.files):
+        return
+    if any(s.active and (s.name.text is None or s.name.wildcard) for s in subs):
+        return
+    own = {c.name for f in app.files for c in f.classes}
+    if any(b not in own for b in app.base_chain[:-1]):
+        return  # a base class of another folder may register for the app
+    known = {s.name.text.upper() for s in subs if s.name.text}
+    known |= {n.upper() for f in app.files for n in f.commented_registrations}
+    known |= {n.upper() for n in UNASKED_MAIL | TEMPLATE_MAIL_KEYS}
+    for k in app.mail_keys:
+        name = k.text.upper()
+        if not k.direct or not name or name in known or name.endswith(COMMAND_KEY_SUFFIX):
+            continue
+        known.add(name)
+        yield (
+            k.span,
+            f"{_app_label(app)} handles mail `{k.text}` but never registers for it: the "
+            "MOOSDB sends an app only what it registered for, so this branch never runs",
         )
 
 

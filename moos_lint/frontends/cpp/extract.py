@@ -1029,7 +1029,31 @@ class Extractor:
                 out.io.append(IOUse("serial", full, pf.spans.of(ns)))
             elif "asio" in full:
                 out.io.append(IOUse("network", full, pf.spans.of(ns)))
+        self._registration_context(out)
         return out
+
+    def _registration_context(self, out: CppFile) -> None:
+        """What tells a missing registration from one made where we cannot see it:
+        registrations commented out, and the comms client (or the app) handed to other code."""
+        data = self.pf.data
+        if b"Register" in data:
+            for m in _REGISTER_LITERAL.finditer(data):
+                at = m.start()
+                line_comment = b"//" in data[data.rfind(b"\n", 0, at) + 1 : at]
+                if line_comment or data.rfind(b"/*", 0, at) > data.rfind(b"*/", 0, at):
+                    out.commented_registrations.append(m.group(1).decode("utf-8", "replace"))
+        for pattern in _HANDED:
+            for m in pattern.finditer(data):
+                at = m.start()
+                if at and (data[at - 1 : at].isalnum() or data[at - 1 : at] == b"_"):
+                    continue  # ``m_this)``: another name
+                before = data[max(0, at - 80) : at].rstrip(b" \t\r\n&*")
+                if not before.endswith((b"(", b",", b"{")):
+                    continue
+                call = re.search(rb"([A-Za-z_]\w*)\s*[(<{][^()<>{}]*$", before)
+                if call is None or call.group(1) not in _THREAD_STARTS:
+                    out.comms_shared = True
+                    return
 
     def _ned_down(self, a: _Asg) -> bool:
         """Whether ``a`` sets a NED z (:meth:`Evaluator.ned_down`)."""
@@ -1154,6 +1178,10 @@ class Extractor:
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)
         if name in PUBLISH | SUBSCRIBE and in_if0(call):
+            if name in SUBSCRIBE and args.named_children:  # taken out on purpose
+                lit = string_value(strip_parens(args.named_children[0]))
+                if lit is not None:
+                    self.out.commented_registrations.append(lit)
             return
         argv = args.named_children
         spans = self.pf.spans
@@ -1290,12 +1318,32 @@ class Extractor:
         span = self.pf.spans.of(lit_node)
         low = fname.lower()
         if fname == "OnNewMail" or re.search(r"mail", low):
-            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix))
+            direct = not (prefix or suffix) and self._message_key(node, subject)
+            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix, direct))
         elif fname == "OnStartUp" or _CONFIG_FN.search(fname):
             if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
                 self.out.config_params.append(ConfigParam(lit.lower(), span))
         elif re.search(r"\bkey\b|GetKey|GetName", subject_text):
-            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix))
+            direct = not (prefix or suffix) and self._message_key(node, subject)
+            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix, direct))
+
+    def _message_key(self, at: Any, subject: Any) -> bool:
+        """Whether ``subject`` is a message's own name: ``msg.GetKey()``, ``p->GetName()``,
+        ``rMsg.m_sKey``, or a local set from one of them (``string key = msg.GetKey();``).
+        A ``key`` parsed from a message's text (``biteStringX(pair, '=')``) is not."""
+        subject = strip_parens(subject)
+        if subject is None:
+            return False
+        if subject.type == "call_expression":
+            return callee(subject.child_by_field_name("function")) in ("GetKey", "GetName")
+        if subject.type == "field_expression":
+            return text(subject).endswith("m_sKey")
+        if subject.type != "identifier":
+            return False
+        local = self._local_before(at, text(subject))
+        if local is None or local.op != "=":
+            return False
+        return local.rhs is not None and _KEY_READ.match(text(local.rhs)) is not None
 
     def _mail_handling(self, fn: Any) -> None:
         """Prefix matches on the key, and whether messages go to code we cannot follow."""
@@ -1321,13 +1369,15 @@ class Extractor:
                 if name == "IsName" and args:
                     lit = string_value(strip_parens(args[0]))
                     if lit is not None:
-                        self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n)))
+                        span = self.pf.spans.of(args[0])
+                        self.out.mail_keys.append(MailKey(lit, span, direct=True))
                 if name in MAIL_COMPARES and len(args) > 1:
                     self._key_against(strip_parens(args[0]), strip_parens(args[1]))
                 if name in PEEK_MAIL and len(args) > 1:  # PeekMail(NewMail, "KEY", Msg)
                     val, _ = self._resolve(args[1], 0)
                     if val is not None:
-                        self.out.mail_keys.append(MailKey(val, self.pf.spans.of(args[1])))
+                        span = self.pf.spans.of(args[1])
+                        self.out.mail_keys.append(MailKey(val, span, direct=True))
             elif n.type == "binary_expression":
                 op = n.child_by_field_name("operator")
                 if op is not None and op.type in ("==", "!="):
@@ -1402,7 +1452,8 @@ class Extractor:
                 continue
             val, _ = self._resolve(other, 0)
             if val is not None:
-                self.out.mail_keys.append(MailKey(val, self.pf.spans.of(other)))
+                direct = self._message_key(other, subject)
+                self.out.mail_keys.append(MailKey(val, self.pf.spans.of(other), direct=direct))
             return
 
 
@@ -1427,6 +1478,16 @@ def _is_key(n: Any) -> bool:
     )
 
 
+#: a message's name read (``msg.GetKey()``, ``p->GetName()``), maybe case-folded
+#: (``toupper(msg.GetKey())``)
+_KEY_READ = re.compile(r"^(?:\w+\(\s*)?[\w.>*-]+(?:\.|->)Get(?:Key|Name)\(\)\s*\)?$")
+#: ``Register("X"``: taken out on purpose in a comment (``// Register("X", 0);``, ``/* */``)
+_REGISTER_LITERAL = re.compile(rb'Register\s*\(\s*"([^"\n]+)"')
+#: the comms client or the app passed to other code (``f(m_Comms)``, ``new Worker(this)``);
+#: two patterns, each led by its literal (an alternation first is tried at every byte)
+_HANDED = (re.compile(rb"m_Comms\s*[,)}]"), re.compile(rb"this\s*[,)}]"))
+#: calls that hand the app to a thread of its own, which registers nothing elsewhere
+_THREAD_STARTS = {b"Initialise", b"pthread_create", b"thread", b"Start", b"CMOOSThread"}
 #: what a mail handler compares a key with when it holds the name elsewhere
 _NAME_NODES = ("identifier", "field_expression", "qualified_identifier")
 #: the functions that read an app's configuration, and the key they compare

@@ -105,6 +105,10 @@ class MailKey:
     span: Span
     prefix: bool = False  # matched as a prefix (``strBegins(key, "X_")``, ``key.find("X_")``)
     suffix: bool = False  # matched as a suffix (``strEnds(key, "_X")``)
+    #: compared with the message's own name (``msg.GetKey()``, a local set from it,
+    #: ``msg.IsName("X")``, ``PeekMail(mail, "X", msg)``), not with a string that only
+    #: holds a key (a ``key=value`` pair parsed from a message's text)
+    direct: bool = False
 
 
 @dataclass(slots=True)
@@ -216,6 +220,11 @@ class CppFile:
     has_on_new_mail: bool = False
     #: OnNewMail passes whole messages to code we cannot follow (generic handling)
     mail_generic: bool = False
+    #: names of registrations taken out on purpose (``//Register("X", 0);``, under ``#if 0``)
+    commented_registrations: list[str] = field(default_factory=list)
+    #: the file hands the app's comms client, or the app itself, to other code
+    #: (``m_helper.subscribe(m_Comms)``, ``new Worker(this)``), which may register for it
+    comms_shared: bool = False
     parse_errors: bool = False
 
 

@@ -445,6 +445,19 @@ OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
 #: the keys MOOS-IvP's app templates leave for the author to replace (``if(param ==
 #: "foo")``, ``else if(param == "bar")``: scripts/GenMOOSApp, scripts/GenMOOSApp_AppCasting)
 TEMPLATE_KEYS = frozenset({"foo", "bar"})
+#: the mail names MOOS-IvP's app templates leave for the author to replace: ``if(key ==
+#: "FOO") cout << "great!";`` (scripts/GenMOOSApp_AppCasting) and ``// Register("FOOBAR",
+#: 0);`` (scripts/GenMOOSApp, scripts/GenMOOSApp_AppCasting)
+TEMPLATE_MAIL_KEYS = frozenset({"FOO", "FOOBAR"})
+#: mail an app gets without a registration of its own: what AppCasting's bases register
+#: for every app (``m_Comms.Register("APPCAST_REQ", 0)``: AppCastingMOOSApp.cpp:327,
+#: AppCastingMOOSInstrument.cpp:335), and the timing messages MOOS's asynchronous comms
+#: client puts in the mail itself (``CMOOSMsg Msg(MOOS_TIMING, "_async_timing", ...)``:
+#: MOOSAsyncCommClient.cpp:289)
+UNASKED_MAIL = frozenset({"APPCAST_REQ", "_async_timing"})
+#: CMOOSApp registers ``<APP NAME>_CMD`` itself when an app enables command messages
+#: (``GetCommandKey``, ``EnableCommandMessageFiltering``: MOOSApp.cpp:1429-1460)
+COMMAND_KEY_SUFFIX = "_CMD"
 #: the app reads the origin of the local grid (the stock catalogue's test, generate.py)
 READS_ORIGIN = re.compile(r"\"Lat[Oo]rigin\"|\"LATORIGIN\"")
 
