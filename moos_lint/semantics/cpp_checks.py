@@ -540,36 +540,62 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
         )
 
 
-def unregistered_mail(app: AppModel) -> Iterator[Finding]:
+def unregistered_mail(
+    app: AppModel, near: Callable[[str, list[str]], str | None] | None = None
+) -> Iterator[Finding]:
     """Names OnNewMail tests a message's own name against that the app never registers for.
 
-    Only apps whose registrations can all be read: none with a name made at run time or
-    a wildcard, none through a base class of another folder, none that hands its comms
-    client (or itself) to other code. A registration commented out or under ``#if 0``
-    was taken out on purpose; its handler is left alone.
+    Only apps whose registrations can all be read: none with a name made at run time
+    (a wildcard is matched as the pattern it is), none through a base class of another
+    folder, none that hands its comms client (or itself) to other code. A registration
+    commented out or under ``#if 0`` was taken out on purpose; its handler is left alone,
+    and so is a test that is one
+    alternative of an ``||`` whose other name is registered (the branch runs on it), and
+    a branch that does nothing. Beside a registration the configuration may rename, only
+    names the app itself holds in a member or constant are judged. ``near`` names the
+    registered name a handled one is a misspelling of, if any.
     """
     if not app.is_app or not any(f.has_on_new_mail for f in app.files):
         return
     subs = [s for f in app.files for s in f.subscriptions]
     if not any(s.active for s in subs) or any(f.comms_shared for f in app.files):
         return
-    if any(s.active and (s.name.text is None or s.name.wildcard) for s in subs):
+    if any(s.active and s.name.text is None for s in subs):
         return
     own = {c.name for f in app.files for c in f.classes}
     if any(b not in own for b in app.base_chain[:-1]):
         return  # a base class of another folder may register for the app
-    known = {s.name.text.upper() for s in subs if s.name.text}
+    renamed = any(s.active and s.name.config_key for s in subs)
+    patterns = [s.name.text.upper() for s in subs if s.name.text and s.name.wildcard]
+    registered = {s.name.text.upper(): s.name.text for s in subs if s.name.text and s.active}
+    known = set(registered)
+    known |= {s.name.text.upper() for s in subs if s.name.text}
     known |= {n.upper() for f in app.files for n in f.commented_registrations}
     known |= {n.upper() for n in UNASKED_MAIL | TEMPLATE_MAIL_KEYS}
-    for k in app.mail_keys:
+    keys = sorted(
+        (k for k in app.mail_keys if k.direct),
+        key=lambda k: (k.span.path, k.span.line, k.span.col),
+    )
+    runs_on_other = {
+        (k.span.path, k.either_at) for k in keys if k.either_at >= 0 and k.text.upper() in known
+    }
+    for k in keys:
         name = k.text.upper()
-        if not k.direct or not name or name in known or name.endswith(COMMAND_KEY_SUFFIX):
+        if not name or name in known or name.endswith(COMMAND_KEY_SUFFIX) or k.empty_branch:
             continue
+        if (k.span.path, k.either_at) in runs_on_other or (renamed and not k.held_in):
+            continue
+        if any(fnmatch.fnmatchcase(name, p) for p in patterns):
+            continue  # ``Register("POWER_*", "*", 0)``
         known.add(name)
+        held = f" (held in `{k.held_in}`)" if k.held_in and k.held_in != k.text else ""
+        meant = near(k.text, sorted(registered.values())) if near is not None else None
+        hint = f"; it registers `{meant}`, a near spelling" if meant else ""
         yield (
             k.span,
-            f"{_app_label(app)} handles mail `{k.text}` but never registers for it: the "
-            "MOOSDB sends an app only what it registered for, so this branch never runs",
+            f"{_app_label(app)} handles mail `{k.text}`{held} but never registers for it: "
+            f"the MOOSDB sends an app only what it registered for, so this branch never "
+            f"runs{hint}",
         )
 
 

@@ -1319,13 +1319,13 @@ class Extractor:
         low = fname.lower()
         if fname == "OnNewMail" or re.search(r"mail", low):
             direct = not (prefix or suffix) and self._message_key(node, subject)
-            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix, direct))
+            self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
         elif fname == "OnStartUp" or _CONFIG_FN.search(fname):
             if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
                 self.out.config_params.append(ConfigParam(lit.lower(), span))
         elif re.search(r"\bkey\b|GetKey|GetName", subject_text):
             direct = not (prefix or suffix) and self._message_key(node, subject)
-            self.out.mail_keys.append(MailKey(lit, span, prefix, suffix, direct))
+            self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
 
     def _message_key(self, at: Any, subject: Any) -> bool:
         """Whether ``subject`` is a message's own name: ``msg.GetKey()``, ``p->GetName()``,
@@ -1370,7 +1370,7 @@ class Extractor:
                     lit = string_value(strip_parens(args[0]))
                     if lit is not None:
                         span = self.pf.spans.of(args[0])
-                        self.out.mail_keys.append(MailKey(lit, span, direct=True))
+                        self.out.mail_keys.append(_branch(MailKey(lit, span, direct=True), n))
                 if name in MAIL_COMPARES and len(args) > 1:
                     self._key_against(strip_parens(args[0]), strip_parens(args[1]))
                 if name in PEEK_MAIL and len(args) > 1:  # PeekMail(NewMail, "KEY", Msg)
@@ -1452,8 +1452,11 @@ class Extractor:
                 continue
             val, _ = self._resolve(other, 0)
             if val is not None:
-                direct = self._message_key(other, subject)
-                self.out.mail_keys.append(MailKey(val, self.pf.spans.of(other), direct=direct))
+                key = MailKey(
+                    val, self.pf.spans.of(other), direct=self._message_key(other, subject)
+                )
+                key.held_in = text(other)
+                self.out.mail_keys.append(_branch(key, other))
             return
 
 
@@ -1465,6 +1468,30 @@ _ATOMS = (
     "qualified_identifier",
     "subscript_expression",
 )
+
+
+def _branch(key: MailKey, test: Any) -> MailKey:
+    """``key`` with what the ``if`` its test guards says of it: the ``||`` chain the test
+    is one alternative of, and whether the branch does nothing."""
+    n = test
+    while n.parent is not None and n.parent.type in _TEST_PARTS:
+        n = n.parent
+        op = n.child_by_field_name("operator") if n.type == "binary_expression" else None
+        if op is not None and op.type == "||":
+            key.either_at = n.start_byte
+    clause = n.parent
+    stmt = clause.parent if clause is not None and clause.type == "condition_clause" else None
+    if stmt is not None and stmt.type == "if_statement":
+        body = stmt.child_by_field_name("consequence")
+        if body is not None and body.type == "compound_statement":
+            key.empty_branch = not any(c.type != "comment" for c in body.named_children)
+        elif body is not None and body.type == "expression_statement":
+            key.empty_branch = body.named_child_count == 0
+    return key
+
+
+#: what lies between a key's test and its ``if``: ``(key == "A") || (key == "B")``
+_TEST_PARTS = ("parenthesized_expression", "binary_expression")
 
 
 def _is_key(n: Any) -> bool:

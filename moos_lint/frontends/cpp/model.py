@@ -109,6 +109,13 @@ class MailKey:
     #: ``msg.IsName("X")``, ``PeekMail(mail, "X", msg)``), not with a string that only
     #: holds a key (a ``key=value`` pair parsed from a message's text)
     direct: bool = False
+    #: where the ``||`` chain the test is one alternative of begins (byte offset), -1 when
+    #: the test stands alone: ``key == "OLD_NAME" || key == "NEW_NAME"`` runs on either
+    either_at: int = -1
+    #: the branch the test guards does nothing (``else if(key == "X") {}``: mail ignored)
+    empty_branch: bool = False
+    #: the name's expression when it is not a literal (``m_moosvar_saturation``, a ``#define``)
+    held_in: str = ""
 
 
 @dataclass(slots=True)

@@ -10,12 +10,22 @@ variable (`AddMOOSVariable`) count. Mail that comes unasked is not reported:
 `_async_timing`, which MOOS's asynchronous comms client puts in the mail itself.
 
 Only apps whose registrations can all be read are judged: none with a name made
-at run time (`Register(m_prefix + "_X")`, names from the configuration or a list),
-no wildcard, no base class in another folder, and no comms client (or the app
-itself) handed to other code that could register. A registration commented out
-or under `#if 0` was taken out on purpose: its handler is left alone, and so is
-the app templates' placeholders (`if(key == "FOO")`, `FOOBAR`). A key that is only a
-`key=value` pair parsed from a message's text is not a message name.
+at run time (`Register(m_prefix + "_X")`, `Register(m_vars[i])`), no base class
+in another folder, and no comms client (or the app itself) handed to
+other code that could register. Beside a registration the configuration may
+rename (`Register(m_heading_var)`, set from a key), a name tested as a literal
+may be what the configuration gives: only names the app holds itself (a member
+set to a literal, a constant) are judged there.
+
+Left alone as well: a handler whose registration is commented out or under
+`#if 0` (taken out on purpose); a test that is one alternative of an `||` whose
+other name is registered (`key == "USM_FORCE_X" || key == "CURRENT_X"`: the
+branch runs on the new name); a branch that does nothing (`{}`: the mail is
+ignored); the app templates' placeholders (`if(key == "FOO")`, `FOOBAR`). A key
+that is only a `key=value` pair parsed from a message's text is not a message
+name. A wildcard registration (`Register("POWER_*", "*", 0)`) covers the names
+it matches. When a registered name is a near spelling of the handled one (`NAX_X` for
+`NAV_X`), the finding names it.
 
 ## Why is this bad?
 The MOOSDB sends an app only the variables it registered for. A handler for a
@@ -67,4 +77,13 @@ def check(ctx):
     from moos_lint.rules.kit.cpp import cpp_findings
     from moos_lint.semantics.cpp_checks import unregistered_mail
 
-    yield from cpp_findings(ctx, unregistered_mail)
+    yield from cpp_findings(ctx, unregistered_mail, near=_near)
+
+
+def _near(name: str, registered: list[str]) -> str | None:
+    """The registered name ``name`` is one or two typos from, when only one is."""
+    from moos_lint.rules.kit.spelling import typos
+
+    limit = 1 if len(name) < 6 else 2
+    close = [r for r in registered if 0 < typos(name, r) <= limit]
+    return close[0] if len(close) == 1 else None
