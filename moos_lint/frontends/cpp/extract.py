@@ -1036,6 +1036,8 @@ class Extractor:
         """What tells a missing registration from one made where we cannot see it:
         registrations commented out, and the comms client (or the app) handed to other code."""
         data = self.pf.data
+        if b"Register" not in data and b"OnNewMail" not in data and b"m_Comms" not in data:
+            return  # not the app class's: its own objects are what it hands over
         if b"Register" in data:
             for m in _REGISTER_LITERAL.finditer(data):
                 at = m.start()
