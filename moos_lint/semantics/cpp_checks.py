@@ -549,11 +549,10 @@ def unregistered_mail(
     (a wildcard is matched as the pattern it is), none through a base class of another
     folder, none that hands its comms client (or itself) to other code. A registration
     commented out or under ``#if 0`` was taken out on purpose; its handler is left alone,
-    and so is a test that is one
-    alternative of an ``||`` whose other name is registered (the branch runs on it), and
-    a branch that does nothing. Beside a registration the configuration may rename, only
-    names the app itself holds in a member or constant are judged. ``near`` names the
-    registered name a handled one is a misspelling of, if any.
+    and so is a test that is one alternative of an ``||`` whose other name is registered
+    (the branch runs on it), and a branch that does nothing. Beside a registration the
+    configuration may rename, only names the app itself holds in a member or constant are
+    judged. ``near`` names the registered name a handled one is a misspelling of, if any.
     """
     if not app.is_app or not any(f.has_on_new_mail for f in app.files):
         return
@@ -567,9 +566,8 @@ def unregistered_mail(
         return  # a base class of another folder may register for the app
     renamed = any(s.active and s.name.config_key for s in subs)
     patterns = [s.name.text.upper() for s in subs if s.name.text and s.name.wildcard]
-    registered = {s.name.text.upper(): s.name.text for s in subs if s.name.text and s.active}
-    known = set(registered)
-    known |= {s.name.text.upper() for s in subs if s.name.text}
+    registered = sorted({s.name.text for s in subs if s.name.text and s.active})
+    known = {s.name.text.upper() for s in subs if s.name.text}  # inactive ones: on purpose
     known |= {n.upper() for f in app.files for n in f.commented_registrations}
     known |= {n.upper() for n in UNASKED_MAIL | TEMPLATE_MAIL_KEYS}
     keys = sorted(
@@ -589,7 +587,7 @@ def unregistered_mail(
             continue  # ``Register("POWER_*", "*", 0)``
         known.add(name)
         held = f" (held in `{k.held_in}`)" if k.held_in and k.held_in != k.text else ""
-        meant = near(k.text, sorted(registered.values())) if near is not None else None
+        meant = near(k.text, registered) if near is not None else None
         hint = f"; it registers `{meant}`, a near spelling" if meant else ""
         yield (
             k.span,

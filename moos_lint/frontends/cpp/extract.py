@@ -1039,10 +1039,12 @@ class Extractor:
         if b"Register" not in data and b"OnNewMail" not in data and b"m_Comms" not in data:
             return  # not the app class's: its own objects are what it hands over
         if b"Register" in data:
+            blocks = b"/*" in data
             for m in _REGISTER_LITERAL.finditer(data):
                 at = m.start()
                 line_comment = b"//" in data[data.rfind(b"\n", 0, at) + 1 : at]
-                if line_comment or data.rfind(b"/*", 0, at) > data.rfind(b"*/", 0, at):
+                in_block = blocks and data.rfind(b"/*", 0, at) > data.rfind(b"*/", 0, at)
+                if line_comment or in_block:
                     out.commented_registrations.append(m.group(1).decode("utf-8", "replace"))
         for pattern in _HANDED:
             for m in pattern.finditer(data):
@@ -1319,13 +1321,11 @@ class Extractor:
         subject_text = text(subject)
         span = self.pf.spans.of(lit_node)
         low = fname.lower()
-        if fname == "OnNewMail" or re.search(r"mail", low):
-            direct = not (prefix or suffix) and self._message_key(node, subject)
-            self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
-        elif fname == "OnStartUp" or _CONFIG_FN.search(fname):
+        mail_fn = fname == "OnNewMail" or re.search(r"mail", low)
+        if not mail_fn and (fname == "OnStartUp" or _CONFIG_FN.search(fname)):
             if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
                 self.out.config_params.append(ConfigParam(lit.lower(), span))
-        elif re.search(r"\bkey\b|GetKey|GetName", subject_text):
+        elif mail_fn or re.search(r"\bkey\b|GetKey|GetName", subject_text):
             direct = not (prefix or suffix) and self._message_key(node, subject)
             self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
 
@@ -1454,10 +1454,8 @@ class Extractor:
                 continue
             val, _ = self._resolve(other, 0)
             if val is not None:
-                key = MailKey(
-                    val, self.pf.spans.of(other), direct=self._message_key(other, subject)
-                )
-                key.held_in = text(other)
+                direct = self._message_key(other, subject)
+                key = MailKey(val, self.pf.spans.of(other), direct=direct, held_in=text(other))
                 self.out.mail_keys.append(_branch(key, other))
             return
 

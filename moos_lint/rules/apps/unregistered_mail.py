@@ -81,9 +81,8 @@ def check(ctx):
 
 
 def _near(name: str, registered: list[str]) -> str | None:
-    """The registered name ``name`` is one or two typos from, when only one is."""
-    from moos_lint.rules.kit.spelling import typos
+    """The registered name ``name`` is a typo from (two for names of six letters or more),
+    when only one is."""
+    from moos_lint.rules.kit.spelling import misspelling_of
 
-    limit = 1 if len(name) < 6 else 2
-    close = [r for r in registered if 0 < typos(name, r) <= limit]
-    return close[0] if len(close) == 1 else None
+    return misspelling_of(name, registered, 1 if len(name) < 6 else 2)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 
 def typos(a: str, b: str) -> int:
     """Letters inserted, deleted, replaced or swapped to make ``a`` into ``b`` (no case)."""
@@ -17,3 +19,14 @@ def typos(a: str, b: str) -> int:
             cur.append(d)
         prev2, prev = prev, cur
     return prev[-1]
+
+
+def misspelling_of(name: str, candidates: Iterable[str], most: int) -> str | None:
+    """The one candidate ``name`` is at most ``most`` typos from (``RETRUN`` for
+    ``RETURN``), when exactly one is; ``name`` itself and wildcards are not compared."""
+    near = [
+        c
+        for c in candidates
+        if c != name and "*" not in c and abs(len(c) - len(name)) <= most and typos(c, name) <= most
+    ]
+    return near[0] if len(near) == 1 else None

@@ -81,7 +81,7 @@ MOOS-IvP caveats, deliberately not reported:
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.spelling import typos
+from moos_lint.rules.kit.spelling import misspelling_of
 from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
@@ -184,15 +184,7 @@ def _misspelt(name: str, model) -> str | None:
     ``RETURN``), if any; names of four letters or fewer are not compared."""
     if len(name) <= 4:
         return None
-    near = [
-        v
-        for v in model.publishers
-        if v != name
-        and "*" not in v
-        and abs(len(v) - len(name)) <= 2
-        and typos(v, name) <= MAX_TYPOS
-    ]
-    return near[0] if len(near) == 1 else None
+    return misspelling_of(name, model.publishers, MAX_TYPOS)
 
 
 def _one_alternative(ref) -> bool:
