@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from moos_lint.files.diagnostics import Span
+from moos_lint.frontends.cpp import branches
 from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
 from moos_lint.frontends.cpp.model import (
     Assignment,
@@ -27,6 +28,7 @@ from moos_lint.frontends.cpp.model import (
     Name,
     OriginRead,
     Publication,
+    ShadowedBranch,
     Subscription,
     TrigUse,
     UnitMix,
@@ -972,6 +974,7 @@ class Extractor:
         for call, fn, args in pf.calls:
             self._call(call, fn, args)
         self._decimal_commas()
+        self._shadowed_branches()
         if self.tables.notify_wrappers:
             self._wrapper_calls()
         for cmp, left, right in pf.cmps:
@@ -1178,6 +1181,27 @@ class Extractor:
                     " ".join(text(left).split()),
                 )
             )
+
+    def _shadowed_branches(self) -> None:
+        """Branches of an ``if`` / ``else if`` chain whose test an earlier branch takes
+        (:mod:`moos_lint.frontends.cpp.branches`)."""
+        pf = self.pf
+        seeds = [cmp for cmp, _l, _r in pf.cmps]
+        seeds += [call for call, fn, _a in pf.calls if callee(fn) in branches.TEST_CALLS]
+        for head in branches.chain_heads(seeds):
+            for s in branches.shadowed(head):
+                if in_if0(s.branch):
+                    continue
+                self.out.shadowed_branches.append(
+                    ShadowedBranch(
+                        test=" ".join(text(s.expr).split()),
+                        name=string_value(s.node) or s.test.name,
+                        span=pf.spans.of(s.node),
+                        earlier_line=s.earlier_node.start_point[0] + 1,
+                        earlier_caseless=s.earlier.caseless and not s.test.caseless,
+                        function=self._fn_of(s.branch),
+                    )
+                )
 
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)

@@ -184,6 +184,21 @@ class DecimalComma:
 
 
 @dataclass(slots=True)
+class ShadowedBranch:
+    """A branch of an ``if`` / ``else if`` chain that never runs: its test repeats one an
+    earlier branch of the chain takes (``else if(key == "NAV_X")`` after
+    ``if(key == "NAV_X")``)."""
+
+    test: str  # the later test as written: ``key == "NAV_X"``
+    name: str  # the name it tests for
+    span: Span  # the later test's literal
+    earlier_line: int  # the line of the earlier test that takes the name
+    #: the earlier test ignores case (``MOOSStrCmp``) and this one does not
+    earlier_caseless: bool
+    function: str  # the enclosing function: ``App::OnNewMail``
+
+
+@dataclass(slots=True)
 class GeodesyCall:
     """A call of one of CMOOSGeodesy's conversions (``facts.GEODESY_ARGUMENTS``), with its
     arguments as written."""
@@ -221,6 +236,7 @@ class CppFile:
     run_names: list[tuple[str, Span]] = field(default_factory=list)  # literal App.Run("x", ...)
     geodesy_calls: list[GeodesyCall] = field(default_factory=list)
     decimal_commas: list[DecimalComma] = field(default_factory=list)
+    shadowed_branches: list[ShadowedBranch] = field(default_factory=list)
     trig_uses: list[TrigUse] = field(default_factory=list)
     unit_mixes: list[UnitMix] = field(default_factory=list)
     has_main: bool = False
@@ -281,6 +297,10 @@ class AppModel:
     @property
     def decimal_commas(self) -> list[DecimalComma]:
         return [d for f in self.files for d in f.decimal_commas]
+
+    @property
+    def shadowed_branches(self) -> list[ShadowedBranch]:
+        return [b for f in self.files for b in f.shadowed_branches]
 
     @property
     def mail_keys(self) -> list[MailKey]:

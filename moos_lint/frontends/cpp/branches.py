@@ -1,0 +1,272 @@
+"""Branches of an ``if`` / ``else if`` chain that an earlier branch of the chain shadows.
+
+OnNewMail and OnStartUp are long chains of tests of one name
+(``if(key == "NAV_X") ... else if(key == "NAV_Y") ...``). When a test repeats
+one an earlier branch of the same chain already takes, its branch can never
+run: the earlier branch takes every message (or parameter) it would.
+
+A test is read only in three shapes, against a string literal:
+
+- ``subject == "NAME"`` (either side), exact;
+- ``msg.IsName("NAME")``, exact, of the message's own name (``msg.GetKey()``);
+- ``MOOSStrCmp(subject, "NAME")``, case-insensitive.
+
+A branch *takes* the tests its condition is made of by ``||`` (any one of them
+true takes the branch); a condition with ``&&`` takes nothing. A later branch
+is *shadowed* when its condition cannot be true without an earlier taken test
+being true: a test the earlier branches took, a ``&&`` with one such operand,
+or an ``||`` of only such alternatives. The subject must be a name
+(``key``, ``m_mode``, ``msg.m_sKey``) or a read of a message's name
+(``msg.GetKey()``): nothing that could change between the two tests.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from moos_lint.frontends.cpp.names import callee_name, node_text, strip
+
+#: calls whose result is the same on each call: a message's name and a string's case
+_STABLE_CALLS = frozenset(
+    {"GetKey", "GetName", "GetString", "GetSource", "GetCommunity", "c_str", "tolower", "toupper"}
+)
+#: case-insensitive equality, true when equal (``MOOSStrCmp(a, b)``)
+_CASELESS = frozenset({"MOOSStrCmp"})
+#: the calls that are tests: a chain's tests are found from them and from ``==``
+TEST_CALLS = _CASELESS | {"IsName"}
+
+
+@dataclass(frozen=True, slots=True)
+class Test:
+    """``subject == "NAME"``: exact, or ``caseless`` (the name upper-cased)."""
+
+    subject: str
+    name: str
+    caseless: bool = False
+
+    def covered_by(self, taken: dict[Test, Any]) -> tuple[Test, Any] | None:
+        """The earlier test in ``taken`` that is true whenever this one is, with its
+        literal, or None."""
+        if self in taken:
+            return self, taken[self]
+        wider = Test(self.subject, self.name.upper(), True)
+        if not self.caseless and wider in taken:
+            return wider, taken[wider]
+        return None
+
+
+@dataclass(slots=True)
+class Shadowed:
+    """A test of a branch no message reaches, and the earlier test that takes its cases."""
+
+    test: Test
+    expr: Any  # the later test
+    node: Any  # its literal
+    earlier: Test
+    earlier_node: Any  # the earlier test's literal
+    branch: Any  # the later branch's if_statement
+
+
+def chain_heads(seeds: Iterable[Any]) -> list[Any]:
+    """The first ``if`` of each chain of more than one ``if`` that a node of ``seeds``
+    (a comparison or a call) is a test in, in source order."""
+    heads: dict[int, Any] = {}
+    for n in seeds:
+        stmt = _guarded(n)
+        if stmt is None:
+            continue
+        while stmt.parent is not None and stmt.parent.type == "else_clause":
+            up = stmt.parent.parent
+            if up is None or up.type != "if_statement":
+                break
+            stmt = up
+        if _alternative_if(stmt) is not None:
+            heads.setdefault(stmt.start_byte, stmt)
+    return [heads[k] for k in sorted(heads)]
+
+
+def shadowed(head: Any) -> list[Shadowed]:
+    """The shadowed tests of the chain that starts at ``head``."""
+    taken: dict[Test, Any] = {}
+    out: list[Shadowed] = []
+    stmt = head
+    while stmt is not None:
+        cond = stmt.child_by_field_name("condition")
+        expr = _condition_expr(cond)
+        if expr is None or expr.has_error:
+            return out  # a declaration in the condition, or a part we cannot read
+        hit = _never(expr, taken)
+        if hit is not None:
+            out.append(Shadowed(*hit, branch=stmt))
+        else:
+            for test, _expr, lit in _taken(expr):
+                taken.setdefault(test, lit)
+        stmt = _alternative_if(stmt)
+    return out
+
+
+#: what lies between a test and its ``if``: ``(key == "A") || (key == "B")``
+_TEST_PARTS = ("parenthesized_expression", "binary_expression")
+
+
+def _guarded(n: Any) -> Any:
+    """The ``if`` whose condition ``n`` is part of, through ``||``, ``&&`` and
+    parentheses, or None."""
+    p = n
+    while p.parent is not None and p.parent.type in _TEST_PARTS:
+        p = p.parent
+    clause = p.parent
+    if clause is None or clause.type != "condition_clause":
+        return None
+    stmt = clause.parent
+    return stmt if stmt is not None and stmt.type == "if_statement" else None
+
+
+def _alternative_if(stmt: Any) -> Any:
+    """The ``if`` of ``stmt``'s ``else if``, or None."""
+    alt = stmt.child_by_field_name("alternative")
+    if alt is None or alt.type != "else_clause":
+        return None
+    inner = [c for c in alt.named_children if c.type != "comment"]
+    if len(inner) == 1 and inner[0].type == "if_statement":
+        return inner[0]
+    return None
+
+
+def _condition_expr(cond: Any) -> Any:
+    if cond is None or cond.type != "condition_clause":
+        return None
+    if cond.child_by_field_name("initializer") is not None:
+        return None
+    value = cond.child_by_field_name("value")
+    if value is None or value.type in ("declaration", "init_declarator", "comma_expression"):
+        return None
+    return value
+
+
+def _logical(n: Any) -> str | None:
+    if n.type != "binary_expression":
+        return None
+    op = n.child_by_field_name("operator")
+    return op.type if op is not None and op.type in ("||", "&&") else None
+
+
+#: a test, the expression it is read from and its literal
+_Atom = tuple[Test, Any, Any]
+
+
+def _taken(n: Any) -> list[_Atom]:
+    """The tests any one of which, true, makes ``n`` true."""
+    n = strip(n)
+    op = _logical(n)
+    if op == "||":
+        return _taken(n.child_by_field_name("left")) + _taken(n.child_by_field_name("right"))
+    if op is not None:
+        return []
+    atom = _atom(n)
+    return [atom] if atom is not None else []
+
+
+def _never(n: Any, taken: dict[Test, Any]) -> tuple[Test, Any, Any, Test, Any] | None:
+    """Why ``n`` is never true after the ``taken`` tests were false: the first of its
+    tests that one of them covers (its expression and literal), with that earlier test
+    and its literal, or None."""
+    n = strip(n)
+    op = _logical(n)
+    if op == "&&":
+        return _never(n.child_by_field_name("left"), taken) or _never(
+            n.child_by_field_name("right"), taken
+        )
+    if op == "||":
+        left = _never(n.child_by_field_name("left"), taken)
+        if left is None or _never(n.child_by_field_name("right"), taken) is None:
+            return None
+        return left
+    atom = _atom(n)
+    if atom is None:
+        return None
+    earlier = atom[0].covered_by(taken)
+    return (*atom, *earlier) if earlier is not None else None
+
+
+def _atom(n: Any) -> _Atom | None:
+    """``n`` as a test of a stable subject against a string literal, with the literal."""
+    if n is None:
+        return None
+    if n.type == "binary_expression":
+        op = n.child_by_field_name("operator")
+        if op is None or op.type != "==":
+            return None
+        left = strip(n.child_by_field_name("left"))
+        right = strip(n.child_by_field_name("right"))
+        for subject, lit in ((left, right), (right, left)):
+            name = _literal(lit)
+            if name is not None and _stable(subject):
+                return Test(_squeezed(subject), name), n, lit
+        return None
+    if n.type != "call_expression":
+        return None
+    fn = n.child_by_field_name("function")
+    args = n.child_by_field_name("arguments")
+    if fn is None or args is None:
+        return None
+    argv = [strip(a) for a in args.named_children if a.type != "comment"]
+    if fn.type == "field_expression" and _field(fn) == "IsName" and len(argv) == 1:
+        obj = fn.child_by_field_name("argument")
+        name = _literal(argv[0])
+        if name is not None and _stable(obj):
+            return Test(_squeezed(obj) + _arrow(fn) + "GetKey()", name), n, argv[0]
+        return None
+    if callee_name(fn) in _CASELESS and len(argv) == 2:
+        for subject, lit in ((argv[0], argv[1]), (argv[1], argv[0])):
+            name = _literal(lit)
+            if name is not None and _stable(subject):
+                return Test(_squeezed(subject), name.upper(), True), n, lit
+    return None
+
+
+def _literal(n: Any) -> str | None:
+    """A plain string literal's text (no escapes, no concatenation), or None."""
+    if n is None or n.type != "string_literal":
+        return None
+    parts = n.named_children
+    if any(c.type != "string_content" for c in parts):
+        return None
+    return "".join(node_text(c) for c in parts)
+
+
+def _stable(n: Any) -> bool:
+    """A name, a member, or a stable call on one (``msg.GetKey()``, ``tolower(key)``)."""
+    n = strip(n)
+    if n is None:
+        return False
+    if n.type in ("identifier", "qualified_identifier", "this"):
+        return True
+    if n.type == "field_expression":
+        return _stable(n.child_by_field_name("argument"))
+    if n.type == "pointer_expression":
+        return _stable(n.child_by_field_name("argument"))
+    if n.type == "call_expression":
+        fn = n.child_by_field_name("function")
+        args = n.child_by_field_name("arguments")
+        if fn is None or args is None or callee_name(fn) not in _STABLE_CALLS:
+            return False
+        argv = [a for a in args.named_children if a.type != "comment"]
+        if fn.type == "field_expression":
+            return not argv and _stable(fn.child_by_field_name("argument"))
+        return len(argv) == 1 and _stable(argv[0])
+    return False
+
+
+def _field(fn: Any) -> str:
+    return node_text(fn.child_by_field_name("field"))
+
+
+def _arrow(fn: Any) -> str:
+    return node_text(fn.child_by_field_name("operator")) or "."
+
+
+def _squeezed(n: Any) -> str:
+    return "".join(node_text(n).split())
