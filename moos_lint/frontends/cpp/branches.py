@@ -22,6 +22,7 @@ or an ``||`` of only such alternatives. The subject must be a name
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
@@ -97,14 +98,61 @@ def shadowed(head: Any) -> list[Shadowed]:
         expr = _condition_expr(cond)
         if expr is None or expr.has_error:
             return out  # a declaration in the condition, or a part we cannot read
+        changed = _changed(expr)
         hit = _never(expr, taken)
+        if hit is not None and changed & _names_in(hit[0].subject):
+            hit = None  # the test may see a new value: ``(key = next()) == "A"``
         if hit is not None:
             out.append(Shadowed(*hit, branch=stmt))
-        else:
-            for test, _expr, lit in _taken(expr):
-                taken.setdefault(test, lit)
+            stmt = _alternative_if(stmt)
+            continue
+        for test, _expr, lit in _taken(expr):
+            taken.setdefault(test, lit)
+        if changed:  # what this test may change is no longer known to later tests
+            taken = {t: lit for t, lit in taken.items() if not changed & _names_in(t.subject)}
         stmt = _alternative_if(stmt)
     return out
+
+
+def _changed(expr: Any) -> set[str]:
+    """The names a condition may change as it is evaluated: assigned (``(key = next())``),
+    incremented, or handed to a call that may change them (``biteStringX(sval, '=')``,
+    ``m_list.pop()``); the tests' own calls and the stable ones change nothing."""
+    out: set[str] = set()
+    stack = [expr]
+    while stack:
+        x = stack.pop()
+        if x.type == "assignment_expression":
+            out |= _names_under(x.child_by_field_name("left"))
+        elif x.type == "update_expression":
+            out |= _names_under(x.child_by_field_name("argument"))
+        elif x.type == "call_expression":
+            fn = x.child_by_field_name("function")
+            if fn is not None and callee_name(fn) not in _STABLE_CALLS | TEST_CALLS:
+                out |= _names_under(x.child_by_field_name("arguments"))
+                if fn.type == "field_expression":
+                    out |= _names_under(fn.child_by_field_name("argument"))
+        stack.extend(x.named_children)
+    return out
+
+
+def _names_under(n: Any) -> set[str]:
+    """The identifiers (and member names) in ``n``."""
+    out: set[str] = set()
+    stack = [n] if n is not None else []
+    while stack:
+        x = stack.pop()
+        if x.type in ("identifier", "field_identifier"):
+            out.add(node_text(x))
+        stack.extend(x.named_children)
+    return out
+
+
+def _names_in(subject: str) -> set[str]:
+    return set(_WORD.findall(subject))
+
+
+_WORD = re.compile(r"[A-Za-z_]\w*")
 
 
 #: what lies between a test and its ``if``: ``(key == "A") || (key == "B")``

@@ -15,8 +15,9 @@ branch with `&&` in its test takes nothing (`(param == "range") && (value ==
 "nolimit")` leaves `param == "range"` to the next branch). Separate `if`
 statements (no `else`) both run and are not reported; nor are code under `#if 0`,
 tests of anything that could change between the two tests (a call other than
-`GetKey()`, `GetString()`, `c_str()`, `tolower()`, `toupper()` and the like), or an
-`||` with one alternative still free.
+`GetKey()`, `GetString()`, `c_str()`, `tolower()`, `toupper()` and the like; a name
+a test between them assigns or hands to a call, as `biteStringX(sval, ',')` bites
+`sval`), or an `||` with one alternative still free.
 
 ## Why is this bad?
 OnNewMail and OnStartUp are long chains of name tests, grown by copy and paste.
