@@ -17,13 +17,18 @@ is *shadowed* when its condition cannot be true without an earlier taken test
 being true: a test the earlier branches took, a ``&&`` with one such operand,
 or an ``||`` of only such alternatives. The subject must be a name
 (``key``, ``m_mode``, ``msg.m_sKey``) or a read of a message's name
-(``msg.GetKey()``): nothing that could change between the two tests.
+(``msg.GetKey()``): nothing that could change between the two tests. A test
+that may change a name (an assignment, a call it is handed to) ends what is
+known of the tests of that name.
+
+Chains are found from the bytes (``else if``), and only in a file where an
+``else if`` line tests a literal an earlier ``if`` line tests: most files are
+never walked.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any
 
@@ -35,8 +40,8 @@ _STABLE_CALLS = frozenset(
 )
 #: case-insensitive equality, true when equal (``MOOSStrCmp(a, b)``)
 _CASELESS = frozenset({"MOOSStrCmp"})
-#: the calls that are tests: a chain's tests are found from them and from ``==``
-TEST_CALLS = _CASELESS | {"IsName"}
+#: the calls that are tests
+_TEST_CALLS = _CASELESS | {"IsName"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,47 +75,72 @@ class Shadowed:
     branch: Any  # the later branch's if_statement
 
 
-def chain_heads(seeds: Iterable[Any]) -> list[Any]:
-    """The first ``if`` of each chain of more than one ``if`` that a node of ``seeds``
-    (a comparison or a call) is a test in, in source order."""
-    heads: dict[int, Any] = {}
-    for n in seeds:
-        stmt = _guarded(n)
-        if stmt is None:
+def shadowed(data: bytes, root: Any) -> list[Shadowed]:
+    """The shadowed tests of the chains of a file (its bytes and its syntax tree), in
+    source order."""
+    if not _repeats_a_test(data):
+        return []
+    later: set[int] = set()
+    outers: dict[int, Any] = {}
+    for m in _ELSE_IF.finditer(data):
+        clause = root.descendant_for_byte_range(m.start(), m.end())  # ``else if``: its clause
+        if clause is None or clause.type != "else_clause":
             continue
-        while stmt.parent is not None and stmt.parent.type == "else_clause":
-            up = stmt.parent.parent
-            if up is None or up.type != "if_statement":
-                break
-            stmt = up
-        if _alternative_if(stmt) is not None:
-            heads.setdefault(stmt.start_byte, stmt)
-    return [heads[k] for k in sorted(heads)]
-
-
-def shadowed(head: Any) -> list[Shadowed]:
-    """The shadowed tests of the chain that starts at ``head``."""
-    taken: dict[Test, Any] = {}
+        inner = _alternative_if(clause.parent)
+        if inner is not None:
+            later.add(inner.id)
+            outers.setdefault(clause.parent.id, clause.parent)
     out: list[Shadowed] = []
+    for head in sorted(outers.values(), key=lambda s: s.start_byte):
+        if head.id not in later:
+            out += _in_chain(head)
+    return out
+
+
+def _repeats_a_test(data: bytes) -> bool:
+    """Whether an ``else if`` line tests a literal an earlier ``if`` line tests (in any
+    case): the file is read further only then."""
+    seen: set[bytes] = set()
+    for m in _IF_LINE.finditer(data):
+        lits = [lit.upper() for lit in _LITERAL.findall(m.group())]
+        after_else = data[max(0, m.start() - 12) : m.start()].rstrip().endswith(b"else")
+        if after_else and not seen.isdisjoint(lits):
+            return True
+        seen.update(lits)
+    return False
+
+
+def _in_chain(head: Any) -> list[Shadowed]:
+    """The shadowed tests of the chain that starts at ``head``."""
+    branches = []
     stmt = head
     while stmt is not None:
-        cond = stmt.child_by_field_name("condition")
+        branches.append((stmt, stmt.child_by_field_name("condition")))
+        stmt = _alternative_if(stmt)
+    # only a chain whose tests hold some literal twice (in any case) is read further
+    literals = [
+        lit.upper() for _s, c in branches if c is not None for lit in _LITERAL.findall(c.text)
+    ]
+    if len(set(literals)) == len(literals):
+        return []
+    taken: dict[Test, Any] = {}
+    out: list[Shadowed] = []
+    for stmt, cond in branches:
         expr = _condition_expr(cond)
         if expr is None or expr.has_error:
             return out  # a declaration in the condition, or a part we cannot read
+        form = _form(expr)
         changed = _changed(expr)
-        hit = _never(expr, taken)
+        hit = _never(form, taken)
         if hit is not None and changed & _names_in(hit[0].subject):
             hit = None  # the test may see a new value: ``(key = next()) == "A"``
         if hit is not None:
             out.append(Shadowed(*hit, branch=stmt))
-            stmt = _alternative_if(stmt)
-            continue
-        for test, _expr, lit in _taken(expr):
-            taken.setdefault(test, lit)
-        if changed:  # what this test may change is no longer known to later tests
-            taken = {t: lit for t, lit in taken.items() if not changed & _names_in(t.subject)}
-        stmt = _alternative_if(stmt)
+        else:
+            for test, _expr, lit in _taken(form):
+                taken.setdefault(test, lit)
+            if changed:  # what this test may change is no longer known to later tests
+                taken = {t: lit for t, lit in taken.items() if not changed & _names_in(t.subject)}
     return out
 
 
@@ -119,6 +149,8 @@ def _changed(expr: Any) -> set[str]:
     incremented, or handed to a call that may change them (``biteStringX(sval, '=')``,
     ``m_list.pop()``); the tests' own calls and the stable ones change nothing."""
     out: set[str] = set()
+    if not _MAY_CHANGE.search(expr.text):
+        return out
     stack = [expr]
     while stack:
         x = stack.pop()
@@ -128,7 +160,7 @@ def _changed(expr: Any) -> set[str]:
             out |= _names_under(x.child_by_field_name("argument"))
         elif x.type == "call_expression":
             fn = x.child_by_field_name("function")
-            if fn is not None and callee_name(fn) not in _STABLE_CALLS | TEST_CALLS:
+            if fn is not None and callee_name(fn) not in _STABLE_CALLS | _TEST_CALLS:
                 out |= _names_under(x.child_by_field_name("arguments"))
                 if fn.type == "field_expression":
                     out |= _names_under(fn.child_by_field_name("argument"))
@@ -153,27 +185,20 @@ def _names_in(subject: str) -> set[str]:
 
 
 _WORD = re.compile(r"[A-Za-z_]\w*")
-
-
-#: what lies between a test and its ``if``: ``(key == "A") || (key == "B")``
-_TEST_PARTS = ("parenthesized_expression", "binary_expression")
-
-
-def _guarded(n: Any) -> Any:
-    """The ``if`` whose condition ``n`` is part of, through ``||``, ``&&`` and
-    parentheses, or None."""
-    p = n
-    while p.parent is not None and p.parent.type in _TEST_PARTS:
-        p = p.parent
-    clause = p.parent
-    if clause is None or clause.type != "condition_clause":
-        return None
-    stmt = clause.parent
-    return stmt if stmt is not None and stmt.type == "if_statement" else None
+#: ``else if``, where a chain goes on
+_ELSE_IF = re.compile(rb"else(?<=\belse)\s+if\b")
+#: a line with an ``if`` and a string literal after it
+_IF_LINE = re.compile(rb"if(?<=\bif)\s*\([^\n]*\"[^\n]*")
+#: a string literal's bytes
+_LITERAL = re.compile(rb'"(?:[^"\\\n]|\\.)*"')
+#: a call, an assignment or an increment in a condition's bytes
+_MAY_CHANGE = re.compile(rb"\w\s*\(|[^=!<>]=[^=]|\+\+|--")
 
 
 def _alternative_if(stmt: Any) -> Any:
     """The ``if`` of ``stmt``'s ``else if``, or None."""
+    if stmt is None or stmt.type != "if_statement":
+        return None
     alt = stmt.child_by_field_name("alternative")
     if alt is None or alt.type != "else_clause":
         return None
@@ -203,40 +228,41 @@ def _logical(n: Any) -> str | None:
 
 #: a test, the expression it is read from and its literal
 _Atom = tuple[Test, Any, Any]
+#: a condition as read once: ``("||", left, right)``, ``("&&", left, right)``, a test, or
+#: None (anything else)
+_Form = Any
 
 
-def _taken(n: Any) -> list[_Atom]:
-    """The tests any one of which, true, makes ``n`` true."""
+def _form(n: Any) -> _Form:
     n = strip(n)
     op = _logical(n)
-    if op == "||":
-        return _taken(n.child_by_field_name("left")) + _taken(n.child_by_field_name("right"))
     if op is not None:
+        return op, _form(n.child_by_field_name("left")), _form(n.child_by_field_name("right"))
+    return _atom(n)
+
+
+def _taken(f: _Form) -> list[_Atom]:
+    """The tests any one of which, true, makes the condition true."""
+    if f is None or f[0] == "&&":
         return []
-    atom = _atom(n)
-    return [atom] if atom is not None else []
+    if f[0] == "||":
+        return _taken(f[1]) + _taken(f[2])
+    return [f]
 
 
-def _never(n: Any, taken: dict[Test, Any]) -> tuple[Test, Any, Any, Test, Any] | None:
-    """Why ``n`` is never true after the ``taken`` tests were false: the first of its
-    tests that one of them covers (its expression and literal), with that earlier test
+def _never(f: _Form, taken: dict[Test, Any]) -> tuple[Test, Any, Any, Test, Any] | None:
+    """Why the condition is never true after the ``taken`` tests were false: the first of
+    its tests that one of them covers (its expression and literal), with that earlier test
     and its literal, or None."""
-    n = strip(n)
-    op = _logical(n)
-    if op == "&&":
-        return _never(n.child_by_field_name("left"), taken) or _never(
-            n.child_by_field_name("right"), taken
-        )
-    if op == "||":
-        left = _never(n.child_by_field_name("left"), taken)
-        if left is None or _never(n.child_by_field_name("right"), taken) is None:
-            return None
-        return left
-    atom = _atom(n)
-    if atom is None:
+    if f is None:
         return None
-    earlier = atom[0].covered_by(taken)
-    return (*atom, *earlier) if earlier is not None else None
+    if f[0] == "&&":
+        return _never(f[1], taken) or _never(f[2], taken)
+    if f[0] == "||":
+        left = _never(f[1], taken)
+        return left if left is not None and _never(f[2], taken) is not None else None
+    earlier = f[0].covered_by(taken)
+    return (*f, *earlier) if earlier is not None else None
 
 
 def _atom(n: Any) -> _Atom | None:

@@ -1186,22 +1186,19 @@ class Extractor:
         """Branches of an ``if`` / ``else if`` chain whose test an earlier branch takes
         (:mod:`moos_lint.frontends.cpp.branches`)."""
         pf = self.pf
-        seeds = [cmp for cmp, _l, _r in pf.cmps]
-        seeds += [call for call, fn, _a in pf.calls if callee(fn) in branches.TEST_CALLS]
-        for head in branches.chain_heads(seeds):
-            for s in branches.shadowed(head):
-                if in_if0(s.branch):
-                    continue
-                self.out.shadowed_branches.append(
-                    ShadowedBranch(
-                        test=" ".join(text(s.expr).split()),
-                        name=string_value(s.node) or s.test.name,
-                        span=pf.spans.of(s.node),
-                        earlier_line=s.earlier_node.start_point[0] + 1,
-                        earlier_caseless=s.earlier.caseless and not s.test.caseless,
-                        function=self._fn_of(s.branch),
-                    )
+        for s in branches.shadowed(pf.data, pf.tree.root_node):
+            if in_if0(s.branch):
+                continue
+            self.out.shadowed_branches.append(
+                ShadowedBranch(
+                    test=" ".join(text(s.expr).split()),
+                    name=string_value(s.node) or s.test.name,
+                    span=pf.spans.of(s.node),
+                    earlier_line=s.earlier_node.start_point[0] + 1,
+                    earlier_caseless=s.earlier.caseless and not s.test.caseless,
+                    function=self._fn_of(s.branch),
                 )
+            )
 
     def _call(self, call: Any, fn: Any, args: Any) -> None:
         name = callee(fn)
