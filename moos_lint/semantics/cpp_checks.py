@@ -338,11 +338,10 @@ def unreachable_branch(app: AppModel) -> Iterator[Finding]:
     for b in app.shadowed_branches:
         where = f" of `{b.function}`" if b.function else ""
         caseless = " (ignoring case)" if b.earlier_caseless else ""
-        test = b.test if len(b.test) <= 60 else b.test[:57] + "..."
         yield (
             b.span,
             f"this branch{where} never runs: the branch at line {b.earlier_line} of the same "
-            f"if/else-if chain takes `{b.name}` first{caseless}, so `{test}` is never true here",
+            f"if/else-if chain takes `{b.name}` first{caseless}, so `{b.test}` is never true here",
         )
 
 

@@ -40,8 +40,8 @@ _STABLE_CALLS = frozenset(
 )
 #: case-insensitive equality, true when equal (``MOOSStrCmp(a, b)``)
 _CASELESS = frozenset({"MOOSStrCmp"})
-#: the calls that are tests
-_TEST_CALLS = _CASELESS | {"IsName"}
+#: the calls a condition makes that change nothing: the stable ones and the tests
+_HARMLESS_CALLS = _STABLE_CALLS | _CASELESS | {"IsName"}
 
 
 @dataclass(frozen=True, slots=True)
@@ -160,7 +160,7 @@ def _changed(expr: Any) -> set[str]:
             out |= _names_under(x.child_by_field_name("argument"))
         elif x.type == "call_expression":
             fn = x.child_by_field_name("function")
-            if fn is not None and callee_name(fn) not in _STABLE_CALLS | _TEST_CALLS:
+            if fn is not None and callee_name(fn) not in _HARMLESS_CALLS:
                 out |= _names_under(x.child_by_field_name("arguments"))
                 if fn.type == "field_expression":
                     out |= _names_under(fn.child_by_field_name("argument"))
@@ -287,7 +287,7 @@ def _atom(n: Any) -> _Atom | None:
     if fn is None or args is None:
         return None
     argv = [strip(a) for a in args.named_children if a.type != "comment"]
-    if fn.type == "field_expression" and _field(fn) == "IsName" and len(argv) == 1:
+    if fn.type == "field_expression" and callee_name(fn) == "IsName" and len(argv) == 1:
         obj = fn.child_by_field_name("argument")
         name = _literal(argv[0])
         if name is not None and _stable(obj):
@@ -332,10 +332,6 @@ def _stable(n: Any) -> bool:
             return not argv and _stable(fn.child_by_field_name("argument"))
         return len(argv) == 1 and _stable(argv[0])
     return False
-
-
-def _field(fn: Any) -> str:
-    return node_text(fn.child_by_field_name("field"))
 
 
 def _arrow(fn: Any) -> str:
