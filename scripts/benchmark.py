@@ -462,7 +462,8 @@ def whole_tree(t: Table, inst: Installation, tree: str, n_bytes: int, runs: int,
         cold.rss_mb / PEAK_MB,
         1.0,
     )
-    ruff = shutil.which("ruff")
+    # (a development install puts ruff beside the interpreter, which PATH may not name)
+    ruff = shutil.which("ruff") or shutil.which("ruff", path=os.path.dirname(sys.executable))
     if ruff is None:
         t.row("ruff", "not installed (pip install ruff)")
         return
