@@ -62,6 +62,50 @@ def test_unknown_key_extra_globals_option(tmp_path):
     )
 
 
+APP = """#include "MOOS/libMOOS/App/MOOSApp.h"
+class Reader : public CMOOSApp {
+  bool OnStartUp() {
+    std::string value;
+    %s
+    return true;
+  }
+  bool Iterate() { return true; }
+  bool OnNewMail(MOOSMSG_LIST &mail) { return true; }
+};
+int main(int argc, char *argv[]) { Reader app; app.Run("pReader", argv[1]); return 0; }
+"""
+
+
+def test_unknown_key_when_an_app_reads_a_name_it_is_handed(tmp_path):
+    """A mission reader asked for a name with no literal part may read any key: only a
+    close misspelling of a known key is reported."""
+    text = "FleetName = red\nMOOSTimeWrap = 10\n" + MISSION
+    handed = APP % "m_MissionReader.GetValue(m_key, value);"
+    (d,) = _lint(tmp_path, {"m.moos": text, "Reader.cpp": handed}, ["H005"])
+    assert "`MOOSTimeWarp`" in d.message
+    # the same call on an object that is not a mission reader says nothing of the mission
+    other = APP % "m_table.GetValue(m_key, value);"
+    found = _lint(tmp_path, {"m.moos": text, "Reader.cpp": other}, ["H005"])
+    assert [d.message.split(":")[0] for d in found] == [
+        "unknown top-of-file key `FleetName`",
+        "unknown top-of-file key `MOOSTimeWrap`",
+    ]
+
+
+def test_unknown_parameter_leaves_a_built_name_in_a_block(tmp_path):
+    """`GetValue` reads a key from anywhere in the file, blocks included: a key whose end
+    an app builds the name from is read there too."""
+    block = "ProcessConfig = pMarinePID\n{\n  SPEED_FACTOR = 1\n  BeaconA_Depth = 10\n}\n"
+    files = {
+        "m.moos": MISSION + block,
+        "Reader.cpp": APP % "m_MissionReader.GetValue(m_key, value);",
+    }
+    (d,) = _lint(tmp_path, files, ["M001"])  # (no literal part: not a form)
+    assert d.message.startswith("`BeaconA_Depth`: pMarinePID does not read this parameter")
+    files["Reader.cpp"] = APP % 'm_MissionReader.GetValue(m_id + "_Depth", value);'
+    assert _lint(tmp_path, files, ["M001"]) == []
+
+
 def test_fragment_globals_are_judged_where_they_land(tmp_path):
     files = {
         "m.moos": MISSION + "ProcessConfig = pLogger\n{\n#include plug_body.moos\n}\n",

@@ -10,7 +10,7 @@ typed accessor:
 - ``repo_cpp_stems``, ``repo_behavior_files``:
   :func:`moos_lint.rules.mission._behaviors.repo_classes`;
 - ``repo_behavior_posts``: :func:`moos_lint.rules.mission._behaviors.repo_behavior_posts`;
-- ``repo_globals``, ``file_wide``: :mod:`moos_lint.rules.kit.file_wide`.
+- ``repo_globals``, ``file_wide``, ``built_keys``: :mod:`moos_lint.rules.kit.file_wide`.
 
 Those modules see the run through :class:`RunView`, the part of it they read,
 so that none of them imports the engine.
@@ -65,6 +65,8 @@ class RunMemos:
     #: top-of-file keys the run's own C++ apps read with ``GetValue``
     repo_globals: frozenset[str] | None = None
     file_wide: frozenset[str] | None = None
+    #: how those apps build the names they read (``GetValue(s + "_Longitude", v)``)
+    built_keys: Any = None
 
     def checked(self, path: str) -> None:
         """The rules are done with the unit at ``path``: drop what only its rules read.

@@ -69,7 +69,11 @@ MOOS-IvP caveats, deliberately not reported:
   between them are read.
 
 A top-of-file key that an app of the linted repository reads with
-`m_MissionReader.GetValue("KEY", value)` is known.
+`m_MissionReader.GetValue("KEY", value)` is known, and so is one whose start or
+end an app builds the name from (`GetValue(s + "_Longitude", lon)` reads
+`BeaconA_Longitude`). When an app asks its mission reader for a name it is
+handed (`m_MissionReader.GetValue(key, value)`), any key may be read: only a
+close misspelling of a known key is reported then.
 
 In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
 top-of-file keys those apps read into their configuration (`log`, `log_path`,
@@ -91,7 +95,7 @@ from moos_lint.frontends.parsers.moos import block_comments, looks_commented
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
-from moos_lint.rules.kit.file_wide import repo_globals
+from moos_lint.rules.kit.file_wide import BuiltKeys, built_keys, repo_globals
 from moos_lint.semantics.catalogue import text_format_app, text_format_schema
 
 ANTLER_KEYS = [
@@ -167,7 +171,8 @@ def check(ctx):
         off = {id(line) for s, e, _ in block_comments(moos.lines) for line in moos.lines[s:e]}
         for p in moos.globals:
             if id(p.line) not in off:
-                yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS)
+                built = built_keys(ctx.run)
+                yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS, built)
     for block in moos.antler_blocks:
         known = [*ANTLER_KEYS, *APP_KEYS]
         for run in (r for r in moos.runs if r.param.block is block):
@@ -180,13 +185,21 @@ def check(ctx):
             yield from _judge(ctx, p, known, "ANTLER-block", r007)
 
 
-def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequence[str] = ()):
+def _judge(
+    ctx,
+    p,
+    known: list[str],
+    where: str,
+    r007: bool,
+    block_keys: Sequence[str] = (),
+    built: BuiltKeys | None = None,
+):
     key = p.key
     if _skip_key(key):
         return
     lkey = _norm(key)
     by_lower = {k.lower(): k for k in known}
-    if lkey in by_lower:
+    if lkey in by_lower or (built is not None and built.matches(lkey)):
         return
     in_block = {k.lower(): k for k in block_keys}
     if lkey in in_block:
@@ -224,6 +237,8 @@ def _judge(ctx, p, known: list[str], where: str, r007: bool, block_keys: Sequenc
     if not names:  # a misspelt block key at the top of the file
         names = [in_block[c] for c in difflib.get_close_matches(lkey, list(in_block), 3, 0.75)]
     who = "no MOOS app reads it" if where == "top-of-file" else "pAntler does not read it"
+    if not names and built is not None and built.any_key:
+        return  # one of the repository's apps reads a name it is handed: maybe this one
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
         return

@@ -77,7 +77,9 @@ MOOS-IvP caveats, deliberately not reported:
   script, not the catalogue's app of the same name, reads that block;
 - a global key inside a block (`term_reporting`, `ServerPort`), or a key an
   app of the linted repository reads with `m_MissionReader.GetValue("point1",
-  s)`: `GetValue` reads those from anywhere in the file, blocks included;
+  s)`, or whose start or end it builds the name from (`GetValue(s +
+  "_Longitude", lon)`): `GetValue` reads those from anywhere in the file,
+  blocks included;
 - keys holding an nsplug macro, `[section]` keys, and keys starting with `#`
   or `/` (not-a-comment reports those); a key with a `[...]` part
   (pMarineViewer's `left_context[return]`) is judged by the word before it, so
@@ -104,7 +106,7 @@ from moos_lint.files.diagnostics import Edit, Fix, Severity, Span
 from moos_lint.files.launch import scripts_beside
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.file_wide import file_wide
+from moos_lint.rules.kit.file_wide import built_keys, file_wide
 from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
 _WORD = re.compile(r"[a-z_][a-z0-9_]*")
@@ -191,12 +193,15 @@ def check(ctx):
     # included: `term_reporting = false` inside a block is read by every AppCasting app
     # (AppCastingMOOSApp.cpp:349); global-key-in-block (R009) judges such lines
     wide = file_wide(ctx.run)
+    built = built_keys(ctx.run)
     for block, app in block_apps(ctx):
         if not app.strict:
             continue
         for p in block.params:
             key = p.lkey
             if not key or app.reads(key) or has_macro(p.key) or key in wide:
+                continue
+            if built.matches(key):  # a name an app builds for GetValue (`s + "_Longitude"`)
                 continue
             if key.startswith(("#", "/", "[")):
                 continue
