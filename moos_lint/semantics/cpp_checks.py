@@ -17,7 +17,7 @@ from moos_lint.frontends.cpp import values
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
-from moos_lint.semantics.process_names import PREFIXED, prefix_problem
+from moos_lint.semantics.process_names import PREFIXED, placeholder, prefix_problem
 
 Finding = tuple[Span, str]
 UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
@@ -43,6 +43,8 @@ def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator
         return
     if app.process_name_source == "folder" and name.islower():
         return  # a generic folder (src, attic, test): the name is a guess
+    if placeholder(name):
+        return  # a template's `APP_NAME`: the generated app is named when it is made
     where = {
         "run": "as given to Run()",
         "cmake": "the CMake add_executable name",
@@ -59,7 +61,7 @@ def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_instrument or not name or app.app_class is None:
         return
-    if name.startswith("i"):
+    if name.startswith("i") or placeholder(name):
         return
     yield (
         app.app_class.span,

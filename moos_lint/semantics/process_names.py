@@ -20,6 +20,13 @@ _WORD = re.compile(r"\w+", re.ASCII)
 NO_PREFIX = "does not start with `i`, `p` or `u` and an upper-case letter"
 
 
+def placeholder(name: str) -> bool:
+    """Whether an app's name is a template's placeholder, in capitals with an underscore
+    (``add_executable(MOOSAPPFACTORY_NAME ...)`` in the template an app generator fills):
+    the app it becomes is named when it is generated."""
+    return "_" in name and name.isupper() and _WORD.fullmatch(name) is not None
+
+
 def prefix_problem(name: str, missing: str = NO_PREFIX) -> str:
     """What is wrong with ``name``'s prefix, to follow the name in a message (``missing``:
     the words for a name with no prefix at all); the name does not match :data:`PREFIXED`."""

@@ -7,7 +7,8 @@ app's process name does not start with `i`. The process name is the literal
 given to `App.Run("name", ...)` in `main`, else the CMake
 `add_executable(name ...)` of the app's folder (of a folder that builds
 several programs, the one whose source list holds the app class's files), else
-the folder name.
+the folder name. A name in capitals with an underscore (`MOOSAPPFACTORY_NAME`)
+is the placeholder of a template an app generator copies, and is not judged.
 
 ## Why is this bad?
 `CMOOSInstrument` is the base for apps that talk to hardware (it brings the

@@ -35,7 +35,10 @@ files), else the folder name (never for a folder that builds several programs
 and none clearly this app). It reports on the `Run` literal, or on the app class when the
 name comes from CMake or the folder. A program the linted C++ builds is reported
 there once, not again on each Run line that launches it. Only folders with a class derived from
-CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps.
+CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps. A name in capitals
+with an underscore (`add_executable(MOOSAPPFACTORY_NAME ...)`) is the
+placeholder of a template an app generator copies, not judged: the app is
+named when it is generated.
 
 ## Why is this bad?
 The MOOS Conventions (section 4.1) name every application by what it does:
