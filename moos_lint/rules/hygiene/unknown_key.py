@@ -169,9 +169,9 @@ def check(ctx):
     if not fragment and (moos.is_mission or moos.blocks):
         # lines between `/*` and `*/` were meant to be off: malformed-line names the markers
         off = {id(line) for s, e, _ in block_comments(moos.lines) for line in moos.lines[s:e]}
+        built = built_keys(ctx.run)
         for p in moos.globals:
             if id(p.line) not in off:
-                built = built_keys(ctx.run)
                 yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS, built)
     for block in moos.antler_blocks:
         known = [*ANTLER_KEYS, *APP_KEYS]

@@ -29,21 +29,6 @@ STOCK_FILE_WIDE = frozenset({k.lower() for k in MOOS_GLOBALS} | set(GLOBAL_KEYS)
 _GET_VALUE = re.compile(r"GetValue(?<=\bGetValue)\s*\(\s*\"([A-Za-z0-9_]+)\"", re.ASCII)
 
 
-def repo_globals(run) -> frozenset[str]:
-    """The keys the run's own C++ apps read with ``GetValue``, as written; once per run."""
-    found = run.memos.repo_globals
-    if found is not None:
-        return found
-    keys: set[str] = set()
-    for unit in run.units:
-        app = getattr(unit, "cpp", None)
-        for f in getattr(app, "files", None) or []:
-            # the text the C++ front end read (every file of an app is in the run's sources)
-            keys.update(_GET_VALUE.findall(app_text(f.path, run.sources)))
-    run.memos.repo_globals = found = frozenset(keys)
-    return found
-
-
 #: a ``GetValue(`` call, literal first; its first argument is read by :func:`_first_argument`
 _GET_VALUE_CALL = re.compile(r"GetValue(?<=\bGetValue)\s*\(", re.ASCII)
 #: a name's literal start (``"Beacon" + id``, ``std::string("Beacon") + id``) or end
@@ -99,24 +84,39 @@ def _bare(arg: str) -> str:
     return arg
 
 
+def repo_globals(run) -> frozenset[str]:
+    """The keys the run's own C++ apps read with ``GetValue``, as written; once per run."""
+    if run.memos.repo_globals is None:
+        _read_names(run)
+    return run.memos.repo_globals
+
+
 def built_keys(run) -> BuiltKeys:
     """The names the run's own C++ apps build for ``GetValue``; once per run."""
-    found = run.memos.built_keys
-    if found is not None:
-        return found
+    if run.memos.built_keys is None:
+        _read_names(run)
+    return run.memos.built_keys
+
+
+def _read_names(run) -> None:
+    """One pass over the run's apps: the names they give ``GetValue`` as literals
+    (:func:`repo_globals`) and the names they build (:func:`built_keys`)."""
+    keys: set[str] = set()
     starts: set[str] = set()
     ends: set[str] = set()
     any_key = False
     for unit in run.units:
         app = getattr(unit, "cpp", None)
         for f in getattr(app, "files", None) or []:
+            # the text the C++ front end read (every file of an app is in the run's sources)
             text = app_text(f.path, run.sources)
             if "GetValue" not in text:
                 continue
+            keys.update(_GET_VALUE.findall(text))
             for m in _GET_VALUE_CALL.finditer(text):
                 arg = _first_argument(text, m.end())
                 if not arg or (arg.startswith('"') and arg.endswith('"') and arg.count('"') == 2):
-                    continue  # a literal name (repo_globals), or no name
+                    continue  # a literal name (above), or no name
                 arg = _bare(arg)
                 head = _LITERAL_START.match(arg)
                 tail = _LITERAL_END.search(arg)
@@ -127,8 +127,8 @@ def built_keys(run) -> BuiltKeys:
                 if not head and not tail and '"' not in arg:
                     reader = _READER.search(text, max(0, m.start() - 80), m.start())
                     any_key = any_key or reader is not None
-    run.memos.built_keys = found = BuiltKeys(tuple(sorted(starts)), tuple(sorted(ends)), any_key)
-    return found
+    run.memos.repo_globals = frozenset(keys)
+    run.memos.built_keys = BuiltKeys(tuple(sorted(starts)), tuple(sorted(ends)), any_key)
 
 
 def file_wide(run) -> frozenset[str]:
