@@ -231,7 +231,10 @@ def read_head(path: str | Path, limit: int) -> bytes | None:
 
 
 def _read_bytes(path: str | Path) -> tuple[bytes | ReadProblem, tuple[int, int] | None]:
-    """The bytes (or the problem) and the file's (mtime, size) just before they were read."""
+    """The bytes (or the problem) and the file's (mtime, size) just before they were read.
+
+    The file is judged by ``stat`` before it is opened: what is not a regular file (a
+    device under a MOOS file's name) is never opened."""
     try:
         st = os.stat(path)
     except OSError as exc:
@@ -251,16 +254,18 @@ def _read_bytes(path: str | Path) -> tuple[bytes | ReadProblem, tuple[int, int] 
     except OSError as exc:
         return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}"), stamp
     try:
-        st = os.fstat(fd)
-        stamp = (st.st_mtime_ns, st.st_size)
-        if not stat.S_ISREG(st.st_mode):
-            why = "is not a regular file: not read"
-            return ReadProblem("not-regular", why), (st.st_mtime_ns, st.st_size)
-        # os.read, not a file object: most files come in one call, as large as the file
-        chunks = []
-        left = MAX_FILE_BYTES + 1
+        # os.read, not a file object. One byte more than the size is asked for: a
+        # shorter answer is the whole file, and no call is needed to see its end (a
+        # lint reads thousands of files). A file replaced by a FIFO since the stat
+        # reads as empty (O_NONBLOCK); the stamp is the stat's.
+        want = st.st_size + 1
+        first = os.read(fd, want)
+        if len(first) < want:
+            return first, stamp
+        chunks = [first]  # the file grew since the stat
+        left = MAX_FILE_BYTES + 1 - len(first)
         while left > 0:
-            chunk = os.read(fd, min(left, max(st.st_size + 1, 65536)))
+            chunk = os.read(fd, min(left, 1 << 20))
             if not chunk:
                 break
             chunks.append(chunk)
@@ -269,4 +274,4 @@ def _read_bytes(path: str | Path) -> tuple[bytes | ReadProblem, tuple[int, int] 
         return ReadProblem("unreadable", f"cannot read file: {exc.strerror or exc}"), stamp
     finally:
         os.close(fd)
-    return (chunks[0] if len(chunks) == 1 else b"".join(chunks)), stamp
+    return b"".join(chunks), stamp
