@@ -79,6 +79,8 @@ BASE_PARAMS = {
             "moos_max_apptick",
             "moos_commstick",
         ],
+        # the keys CMOOSApp reads from the block are added from MOOSApp.cpp itself
+        # (:func:`base_params`): these are the switches it also takes on the command line
         "provenance": "MOOS_Jul2724/MOOSCore/Core/libMOOS/App/MOOSApp.cpp:548-591,1149 (by hand)",
         # GetConfigurationParam(double) takes only values starting with a digit or `-`
         "param_forms": {
@@ -567,6 +569,38 @@ EXTRA_APPS: dict[str, dict] = {
 }
 
 
+#: a key CMOOSApp reads from its block: ``GetConfigurationParam("APPTICK", ...)``, and the
+#: switches it reads from the command line or else the block
+#: (``GetParameterFromCommandLineOrConfigurationFile("moos_suicide_phrase", ...)``,
+#: MOOSApp.hxx: ``m_MissionReader.GetConfigurationParam(sOption, vF)`` first)
+_BASE_READ = re.compile(
+    r"\b(?:m_MissionReader\s*\.\s*GetConfigurationParam"
+    r"|Get(?:Parameter|Flag)FromCommandLineOrConfigurationFile)\s*\(\s*\"(\w+)\""
+)
+MOOS_APP = "MOOSCore/Core/libMOOS/App/MOOSApp.cpp"
+
+
+def base_params(src: str, moos: str) -> dict:
+    """:data:`BASE_PARAMS`, with every key ``MOOSApp.cpp`` reads from an app's block (the
+    ``moos_suicide_*`` switches among them), each with the line it is read at."""
+    out = json.loads(json.dumps(BASE_PARAMS))
+    path = os.path.join(moos, *MOOS_APP.split("/"))
+    text = _read(path)
+    if not text:
+        return out
+    app = out["CMOOSApp"]
+    lines: list[int] = []
+    for m in _BASE_READ.finditer(text):
+        key = m.group(1).lower()
+        lines.append(text.count("\n", 0, m.start()) + 1)
+        if key not in app["params"]:
+            app["params"].append(key)
+    if lines:
+        spans = ",".join(str(n) for n in sorted(set(lines)))
+        app["provenance"] = f"{_rel(path, src)}:{spans} (every key read from the block)"
+    return out
+
+
 def _git_commit(src: str) -> tuple[str, str]:
     try:
         out = subprocess.run(
@@ -794,7 +828,7 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             "generator": "python scripts/generate_catalogue.py SRC",
             "extractor": "moos_lint.frontends.cpp (tree-sitter)",
         },
-        "base_classes": BASE_PARAMS,
+        "base_classes": base_params(src, moos),
         "behavior_extra_params": BEHAVIOR_EXTRA_PARAMS,
         "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
         "programs": PROGRAMS,
