@@ -55,7 +55,9 @@ suppress the finding on the header line.
   Commenting a Run line out while keeping its block is how MOOS users switch a
   process off for a while (a simulator for field runs, a logger, a timer
   script; 4 of the 8 such blocks in MOOS-IvP's own missions), so by default
-  such a block is taken as switched off on purpose.
+  such a block is taken as switched off on purpose. The commented line is read
+  as a live one is: the block its app's `main` hard-codes (`Run("iRemote", ...)`
+  in iRemoteMod) and the names its script quotes count as switched off too.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
@@ -96,7 +98,7 @@ import re
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.files.suffixes import script_stem
-from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -169,7 +171,7 @@ def check(ctx):
         advice = "rename the block"
         if why is None:
             if commented is None:
-                commented = _commented_runs(moos)
+                commented = _commented_runs(moos, cat, ctx.path)
             hint = commented.get(block.name.lower())
             if hint and not ctx.options.get("commented-runs"):
                 continue  # switched off on purpose
@@ -230,8 +232,12 @@ def _script_words(mission: str, moos) -> frozenset[str]:
     return frozenset(words)
 
 
-def _commented_runs(moos) -> dict[str, str]:
-    """Where a ``//Run = NAME`` line sits in an ANTLER block, by lower-case NAME (the first)."""
+def _commented_runs(moos, cat, mission: str) -> dict[str, str]:
+    """Where a ``//Run = NAME`` line sits in an ANTLER block, by the lower-case name of
+    every block its process would read were it launched (the first such line): the
+    line is read as a live one is, so an app whose ``main`` hard-codes its name
+    (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
+    quotes count too."""
     found: dict[str, str] = {}
     for antler in moos.antler_blocks:
         if antler.open is None:
@@ -246,10 +252,20 @@ def _commented_runs(moos) -> dict[str, str]:
             if not inside:
                 continue
             m = _COMMENTED_RUN.match(line.text)
-            if m:
-                launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
-                found.setdefault(launched.lower(), where(line))
-                stem = None if m.group(2) else script_stem(launched)
-                if stem:  # `// Run = ./iPydyna.py` would read `ProcessConfig = iPydyna`
-                    found.setdefault(stem.lower(), where(line))
+            if not m:
+                continue
+            here = where(line)
+            launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
+            found.setdefault(launched.lower(), here)
+            stem = None if m.group(2) else script_stem(launched)
+            if stem:  # `// Run = ./iPydyna.py` would read `ProcessConfig = iPydyna`
+                found.setdefault(stem.lower(), here)
+            eq = line.text.index("=")  # the one of `// Run =`: the key holds none
+            value = line.text[eq + 1 :]
+            run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)
+            for name in cat.block_names(run):
+                found.setdefault(name.lower(), here)
+            if run.script_block is not None and not has_macro(run.binary):
+                for name in script_names(mission, run.binary) or ():
+                    found.setdefault(name, here)
     return found
