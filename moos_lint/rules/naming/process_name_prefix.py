@@ -16,8 +16,11 @@ every name a process runs under:
 
 `Run` lines with `InhibitMOOSParams = true` are skipped: pAntler passes that
 program neither the mission file nor a MOOS name, as it does for a program that
-is no MOOS client (`gdb`, an LCM program). An alias equal to its program's name
-is judged once, as the program.
+is no MOOS client (`gdb`, an LCM program). The name of a shell script
+(`Run = ./inhouse-dp.sh`) is not judged either: a shell script is no MOOS client
+but a wrapper, and what it starts connects under a name of its own (its `~`
+alias, when it has one, is still judged: pAntler passes it on as the MOOS name).
+An alias equal to its program's name is judged once, as the program.
 
 The MOOS infrastructure is exempt, in any case: `MOOSDB`, `ANTLER` /
 `pAntler`, and the command-line tools MOOS core ships beside the MOOSDB
@@ -84,6 +87,7 @@ Rename the program, or choose an alias that keeps the program's prefix
 from __future__ import annotations
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.suffixes import is_shell_script
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -121,10 +125,11 @@ def check(ctx):
         launched.add(run.name.lower())
         if run.inhibits_moos_params:
             continue  # no MOOS client (`gdb`, an LCM program): pAntler passes it no MOOS name
+        shell = is_shell_script(program)  # a wrapper: what it starts connects, not it
         info = cat.app(program) if program else None
         if info is not None and info.own:
             pass  # an app of the linted C++: reported once, where it is defined
-        elif program and not has_macro(program) and not conforms(program, exempt):
+        elif program and not shell and not has_macro(program) and not conforms(program, exempt):
             yield ctx.report(
                 run.binary_span,
                 f"process `{program}` {prefix_problem(program)}",
