@@ -138,6 +138,16 @@ def test_include_loop_and_missing_are_problems_not_crashes(tmp_path):
     assert [ln.text for ln in exp.lines] == ["x = 1"]
 
 
+def test_missing_absolute_include_is_reported_only_inside_the_missions_folder(tmp_path):
+    inside = tmp_path / "mission" / "plugs" / "gone.moos"
+    outside = tmp_path / "vehicle" / "plug_iGPS.moos"  # the vehicle computer's own file
+    top = write(tmp_path, "mission/a.moos", f"#include {inside}\n#include {outside}\nx = 1\n")
+    exp = Preprocessor().expand(top)
+    missing = [p for p in exp.problems if p.kind == "include-not-found"]
+    assert [p.span.line for p in missing] == [1]
+    assert exp.incomplete
+
+
 def test_deep_include_chain_does_not_recurse(tmp_path):
     for i in range(1200):
         write(tmp_path, f"f{i}.plug", f"#include f{i + 1}.plug\n")

@@ -364,6 +364,19 @@ def _case_twin(name: str, folders: Sequence[str]) -> str | None:
     return None
 
 
+def _elsewhere(target: str, top_dir: str) -> bool:
+    """Whether a missing include is an absolute path outside the mission's folder: a file
+    of the machine the mission runs on (``/home/student/VehicleConfig/plug_iGPS.moos`` on a
+    vehicle's computer), which this machine need not have."""
+    if not os.path.isabs(target):
+        return False
+    top = _norm(top_dir)
+    try:
+        return os.path.commonpath([top, _norm(target)]) != top
+    except ValueError:  # another drive
+        return True
+
+
 def _norm(path: str | Path) -> str:
     return os.path.normpath(os.path.abspath(path))
 
@@ -865,7 +878,7 @@ class Preprocessor:
         found = self.resolve_include(target, top_dir, including_dir)
         if found is None:
             exp.incomplete = True
-            if self._made_at_launch(target, top_dir):
+            if self._made_at_launch(target, top_dir) or _elsewhere(target, top_dir):
                 return None
             message = f"included file `{target}` not found"
             if "//" in target:

@@ -21,6 +21,12 @@ on a case-insensitive file system (macOS's default) and fails on Linux. A
 `// comment` behind the path is part of it for nsplug (Expander.cpp reads the
 rest of the line as the path, an `<tag>` aside), and the message says so.
 
+An absolute path outside the top-level file's folder that does not exist here
+(`#include /home/student/VehicleConfig/plug_iGPS.moos`) is not reported: it
+names a file of the machine the mission runs on (the vehicle's own
+configuration), which the machine that lints need not have. The mission is
+then taken as incomplete, as for a macro in the path.
+
 ## Why is this bad?
 nsplug stops with an error and writes no mission file, so the launch script
 fails; with `--force` in a script the old generated file is used instead.
