@@ -13,7 +13,7 @@ pytest.importorskip("tree_sitter_cpp")
 from moos_lint.core.config import Settings
 from moos_lint.core.engine import lint_files
 from moos_lint.frontends.cpp.app import build_apps, read_relevant
-from moos_lint.frontends.cpp.cmake import executable_name
+from moos_lint.frontends.cpp.cmake import executable_name, unbuilt
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
 APP = Path(__file__).resolve().parent.parent / "fixtures" / "cpp" / "model_app"
@@ -245,3 +245,22 @@ def test_discovery_leaves_windows_module_definitions(tmp_path):
     assert [os.path.basename(f) for f in found] == ["vehicle.def"]
     named = discover([tmp_path / "proj.def"], [], str(tmp_path)).files
     assert named == []
+
+
+def test_unbuilt_sources_only_when_every_list_is_known(tmp_path):
+    names = frozenset({"App.cpp", "App_back.cpp", "main.cpp", "App.h"})
+    cmake = tmp_path / "CMakeLists.txt"
+    cmake.write_text("SET(SRC App.cpp main.cpp)\nADD_EXECUTABLE(pApp ${SRC})\n")
+    assert unbuilt(str(tmp_path), names) == {"App_back.cpp"}  # headers are never judged
+    cmake.write_text("ADD_LIBRARY(app_lib App_back.cpp)\nADD_EXECUTABLE(pApp App.cpp main.cpp)\n")
+    assert unbuilt(str(tmp_path), names) == set()
+    for unknown in (
+        "FILE(GLOB SRC *.cpp)\nADD_EXECUTABLE(pApp ${SRC})\n",
+        "ADD_EXECUTABLE(pApp ${SOURCES})\n",
+        "SET(SRC App.cpp)\nLIST(APPEND SRC main.cpp)\nADD_EXECUTABLE(pApp ${SRC})\n",
+        "SET(SRC App.cpp)\n",
+    ):
+        cmake.write_text(unknown)
+        assert unbuilt(str(tmp_path), names) == set(), unknown
+    cmake.unlink()
+    assert unbuilt(str(tmp_path), names) == set()

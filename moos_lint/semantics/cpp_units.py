@@ -12,6 +12,7 @@ import os
 from moos_lint.files.source import SourceFile
 from moos_lint.files.suffixes import Kind
 from moos_lint.frontends.cpp.app import build_apps, helper_io, link_apps, read_relevant
+from moos_lint.frontends.cpp.cmake import unbuilt
 from moos_lint.frontends.cpp.model import AppModel, CppFile
 from moos_lint.frontends.nsplug import Expansion
 from moos_lint.frontends.unit import Unit
@@ -61,7 +62,9 @@ def build_cpp_units(
         app = apps.get(folder) or AppModel(folder=folder)
         first = sorted(f.path for f in app.files)[0] if app.files else sorted(files)[0]
         if app.is_app:  # the I/O of the app's helper files that never name the MOOS API
-            for src, helper in helper_io(p for p in files if p not in sources):
+            helpers = [p for p in files if p not in sources]
+            stray = unbuilt(folder, frozenset(os.path.basename(p) for p in helpers))
+            for src, helper in helper_io(p for p in helpers if os.path.basename(p) not in stray):
                 run.sources[helper.path] = src
                 app.files.append(helper)
         units.append(Unit(path=first, kind=Kind.CPP, expansion=Expansion(path=first), cpp=app))

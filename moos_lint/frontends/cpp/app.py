@@ -12,7 +12,7 @@ from typing import Any
 from moos_lint.files.diagnostics import Span
 from moos_lint.files.source import SourceFile, decode, read_bytes
 from moos_lint.files.suffixes import CPP_SUFFIXES
-from moos_lint.frontends.cpp.cmake import executable_name, executables_in
+from moos_lint.frontends.cpp.cmake import executable_name, executables_in, unbuilt
 from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile, IOUse
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
@@ -222,7 +222,14 @@ def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
 
 
 def link_apps(apps: list[AppModel]) -> None:
-    """Find each folder's app class (base chains may cross folders) and its process name."""
+    """Find each folder's app class (base chains may cross folders) and its process name.
+
+    A source file the folder's CMakeLists.txt compiles into no target (a stray copy of
+    the app's class beside its real sources) is dropped first: it never runs."""
+    for app in apps:
+        stray = unbuilt(app.folder, frozenset(os.path.basename(f.path) for f in app.files))
+        if stray:
+            app.files = [f for f in app.files if os.path.basename(f.path) not in stray]
     bases: dict[str, list[str]] = {}
     for app in apps:
         for f in app.files:

@@ -3,6 +3,8 @@
 CMake is never run. ``${VAR}`` is resolved from ``set(VAR value)`` in the same
 file; a name that stays unresolved is not used. A folder that builds several
 programs gives the app the one whose source list holds the app class's files.
+A source file its folder's CMakeLists.txt compiles into no target, when its lists
+are all known, is not part of the app (:func:`unbuilt`).
 """
 
 from __future__ import annotations
@@ -11,8 +13,17 @@ import os
 import re
 
 from moos_lint.files.source import SourceFile, read_source
+from moos_lint.files.suffixes import CPP_SOURCE_SUFFIXES
 
 _ADD_EXEC = re.compile(r"\badd_executable\s*\(\s*([^\s()]+)([^)]*)\)", re.I)
+_ADD_TARGET = re.compile(r"\badd_(?:executable|library)\s*\(\s*([^\s()]+)([^)]*)\)", re.I)
+#: what adds sources a list of names does not show: a glob, a folder's every file, a
+#: list grown elsewhere or in a loop, an included file, sources added to a target later
+_OPEN_LISTS = re.compile(
+    r"\b(?:file\s*\(\s*GLOB|aux_source_directory|list\s*\(\s*(?:APPEND|INSERT)|foreach"
+    r"|include|target_sources|string\s*\()\b",
+    re.I,
+)
 _SET_LIST = re.compile(r"\bset\s*\(\s*([A-Za-z_][A-Za-z0-9_]*)\s+([^)]*)\)", re.I)
 _VAR = re.compile(r"\$\{(\w+)\}")
 _COMMENT = re.compile(r"#[^\n]*")
@@ -41,6 +52,37 @@ def _executables(text: str) -> list[tuple[str, str, int]]:
             continue
         out.append((name, srcs, text.count("\n", 0, m.start()) + 1))
     return out
+
+
+def unbuilt(folder: str, names: frozenset[str]) -> frozenset[str]:
+    """Which of the source files ``names`` (file names in ``folder``) the folder's own
+    CMakeLists.txt compiles into none of its executables and libraries: a stray copy
+    (``Test.cpp``, ``Old_App.cpp``) beside the app's real sources. Empty when that is not
+    clear: no CMakeLists.txt, no target, a glob, a list grown elsewhere, a name left
+    unresolved. Headers are never judged (a source includes them)."""
+    sources = frozenset(n for n in names if n.lower().endswith(CPP_SOURCE_SUFFIXES))
+    if not sources:
+        return frozenset()
+    text = _read(os.path.join(folder, "CMakeLists.txt"))
+    if text is None:
+        return frozenset()
+    text = _COMMENT.sub("", text)
+    if _OPEN_LISTS.search(text):
+        return frozenset()
+    lists = {m.group(1): m.group(2) for m in _SET_LIST.finditer(text)}
+    listed: set[str] = set()
+    targets = 0
+    for m in _ADD_TARGET.finditer(text):
+        srcs = m.group(2)
+        for _ in range(3):
+            srcs = _VAR.sub(lambda v: lists.get(v.group(1), v.group(0)), srcs)
+        if "${" in srcs or "$<" in srcs:
+            return frozenset()  # a list we cannot read may hold any file
+        listed |= _file_names(srcs)
+        targets += 1
+    if not targets:
+        return frozenset()
+    return frozenset(n for n in sources if n not in listed)
 
 
 def executables_in(folder: str) -> list[str]:
