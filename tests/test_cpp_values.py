@@ -461,3 +461,38 @@ def test_a_raw_reading_scaled_by_a_resolution_named_in_degrees_is_degrees():
     assert v["IMU_ROLL"].unit == "rad"
     # a conversion constant is no resolution: the arithmetic decides (radians from degrees)
     assert v["IMU_YAW"].unit != "deg"
+
+
+def test_the_classes_of_the_awaited_methods_are_searched_in_one_read(tmp_path):
+    """Values wait for ``getHeading`` and ``toLat``, methods of NodeRecord and Geo that
+    return a field: the files naming either class are found in one read, not one each."""
+    files = {
+        "lib/NodeRecord.h": "class NodeRecord {\n public:\n"
+        "  double getHeading() const { return m_heading; }\n  double m_heading;\n};\n",
+        "lib/NodeRecord.cpp": "void NodeRecord::set(double h) { m_heading = h * 180 / M_PI; }\n",
+        "geo/Geo.h": "struct Geo {\n  double toLat() const { return m_lat; }\n"
+        "  double m_lat;\n};\n",
+        "geo/Geo.cpp": "void Geo::init(double d) { m_lat = d * 180 / M_PI; }\n",
+        "app/Other.cpp": "int other() { return 1; }\n",
+    }
+    paths = []
+    for name, code in files.items():
+        p = tmp_path / name
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(code)
+        paths.append(str(p))
+    reads = []
+
+    def reader(path):
+        reads.append(path)
+        with open(path, "rb") as f:
+            return f.read()
+
+    resolver = RepositoryResolver(sorted(paths), reader)
+    waiting = [AbstractValue(pending="getHeading"), AbstractValue(pending="toLat")]
+    resolver.expect(waiting)
+    outs = [resolve_pending(v, resolver) for v in waiting]
+    assert [o.unit for o in outs] == ["deg", "deg"]
+    # the index, the files naming either class; then each method's file and each file
+    # writing its field, read to be parsed
+    assert len(reads) == 2 * len(paths) + 4, reads

@@ -1968,6 +1968,29 @@ def defined_names(data: bytes) -> set[bytes]:
     return names
 
 
+_CLASS_HEAD = re.compile(rb"\b(?:class|struct)\s+(\w+)[^;{}()]*\{")
+_LAST_WORD = re.compile(rb"(\w+)\s*$")
+
+
+def _owners_of(name: bytes, data: bytes) -> set[str]:
+    """The classes ``data`` defines a method ``name`` of, as far as its bytes tell: the
+    qualifier of ``Owner::name(...) {``, or for a definition inside a class body the
+    class whose head comes last before it (a guess: it only orders the reads)."""
+    out: set[str] = set()
+    for m in re.finditer(_DEF_TEMPLATE % re.escape(name), data):
+        if data.startswith(b"::", m.start()):  # ``Owner::name(...) {``
+            q = _LAST_WORD.search(data, max(0, m.start() - 200), m.start())
+            if q is not None:
+                out.add(q.group(1).decode("utf-8", "replace"))
+            continue
+        last = None
+        for c in _CLASS_HEAD.finditer(data, 0, m.start()):
+            last = c
+        if last is not None:
+            out.add(last.group(1).decode("utf-8", "replace"))
+    return out
+
+
 #: How many parsed files a :class:`RepositoryResolver` keeps. A syntax tree takes a few
 #: hundred KB of the heap, and a resolution asks again for one of the last few files it
 #: parsed (on the MOOS-IvP tree: 13 files parsed, 11 of the 13 asked again after at
@@ -1999,6 +2022,12 @@ class RepositoryResolver:
         self._all: list[str] | None = None
         #: classes whose fields are waited for (see :meth:`expect`)
         self._expected: set[str] = set()
+        #: the functions the values wait for (see :meth:`expect`), and the classes whose
+        #: methods they are (``NodeRecord`` for ``NodeRecord::getHeading``): a value such
+        #: a method returns often waits for a field of its class, and the files naming
+        #: each are found in one read, with the first class asked for (:meth:`_field`)
+        self._wanted: set[bytes] = set()
+        self._owners: set[str] = set()
 
     @property
     def all_paths(self) -> list[str]:
@@ -2036,6 +2065,8 @@ class RepositoryResolver:
             while v is not None:
                 if v.pending and v.pending.startswith("."):
                     self._expected.add(v.pending.split(".", 2)[1])
+                elif v.pending:
+                    self._wanted.add(v.pending.partition("#")[0].encode())
                 v = v.fallback if isinstance(v.fallback, AbstractValue) else None
 
     def _read_all(self) -> None:
@@ -2045,11 +2076,26 @@ class RepositoryResolver:
         classes = [(c, c.encode()) for c in sorted(self._expected - set(self._naming))]
         for cls, _ in classes:
             self._naming[cls] = []
+        wanted = self._wanted
         for i, path in enumerate(self.all_paths):
             data = self._data(path)
-            for n in defined_names(data):
+            names = defined_names(data)
+            for n in names:
                 self._index.setdefault(n, []).append(i)
             for cls, key in classes:
+                if key in data:
+                    self._naming[cls].append(path)
+            for n in names & wanted if wanted else ():
+                self._owners.update(_owners_of(n, data))
+
+    def _find_naming(self, classes: set[str]) -> None:
+        """One read of every file: which of ``classes`` each names (for :meth:`_field`)."""
+        keys = [(c, c.encode()) for c in sorted(classes)]
+        for cls, _ in keys:
+            self._naming[cls] = []
+        for path in self.all_paths:
+            data = self._data(path)
+            for cls, key in keys:
                 if key in data:
                     self._naming[cls].append(path)
 
@@ -2101,8 +2147,7 @@ class RepositoryResolver:
             self._expected.add(cls)
             self._read_all()
         if cls not in self._naming:  # a file that never names the class cannot write its fields
-            key = cls.encode()
-            self._naming[cls] = [path for path in self.all_paths if key in self._data(path)]
+            self._find_naming({cls} | (self._owners - set(self._naming)))
         wrote = field_write_pattern(names)
         out: AbstractValue | None = None
         for path in self._naming[cls]:
