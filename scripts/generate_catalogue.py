@@ -720,7 +720,10 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
         got = read_source(path)
         if isinstance(got, SourceFile):
             sources[path] = got
-    models = build_apps(sources)
+    # every source the tree holds, built by this release's CMake or not: a file one
+    # release leaves out (lib_marineview/VehicleSet.cpp) another may build, and a key
+    # the catalogue knows is never reported as unread
+    models = build_apps(sources, strays=True)
     top = set(folders)
     by_folder = {m.folder: m for m in models}
     # library folders by CMake target name (lib_marine_pid -> marine_pid)

@@ -211,22 +211,24 @@ def edited(old_tree: Any, old: bytes, new: bytes) -> Any:
     return tree
 
 
-def build_apps(sources: dict[str, SourceFile]) -> list[AppModel]:
-    """One :class:`AppModel` per folder of relevant C++ files, linked."""
+def build_apps(sources: dict[str, SourceFile], strays: bool = False) -> list[AppModel]:
+    """One :class:`AppModel` per folder of relevant C++ files, linked. ``strays``: keep
+    the sources no target of their folder compiles (see :func:`link_apps`)."""
     by_folder: dict[str, dict[str, SourceFile]] = {}
     for path, src in sources.items():
         by_folder.setdefault(os.path.dirname(path), {})[path] = src
     apps = [AppModel(folder=f, files=parse_folder(s)) for f, s in sorted(by_folder.items())]
-    link_apps(apps)
+    link_apps(apps, strays)
     return apps
 
 
-def link_apps(apps: list[AppModel]) -> None:
+def link_apps(apps: list[AppModel], strays: bool = False) -> None:
     """Find each folder's app class (base chains may cross folders) and its process name.
 
     A source file the folder's CMakeLists.txt compiles into no target (a stray copy of
-    the app's class beside its real sources) is dropped first: it never runs."""
-    for app in apps:
+    the app's class beside its real sources) is dropped first, unless ``strays``: it
+    never runs."""
+    for app in apps if not strays else ():
         stray = unbuilt(app.folder, frozenset(os.path.basename(f.path) for f in app.files))
         if stray:
             app.files = [f for f in app.files if os.path.basename(f.path) not in stray]
