@@ -162,11 +162,24 @@ def shell_scripts(folder: str) -> tuple[tuple[str, str], ...]:
     return _texts(folder, ".sh")
 
 
-def _texts(folder: str, suffix: str) -> tuple[tuple[str, str], ...]:
-    """``(path, text)`` of each file of ``folder`` whose name ends in ``suffix``, by name,
-    kept while every one keeps its (mtime, size)."""
+def notes(folder: str) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each note of ``folder`` (``README``, ``*.md``, ``*.txt``): the
+    steps a person runs by hand are often written there (``$ uPokeDB WPT_REQUEST=true``)."""
+    return _texts(folder, (".md", ".txt", ".markdown"), readme=True)
+
+
+def _texts(
+    folder: str, suffix: str | tuple[str, ...], readme: bool = False
+) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each file of ``folder`` whose name ends in ``suffix`` (or, with
+    ``readme``, starts with ``README`` in any case), by name, kept while every one keeps
+    its (mtime, size)."""
     try:
-        names = sorted(n for n in os.listdir(folder) if n.endswith(suffix))
+        names = sorted(
+            n
+            for n in os.listdir(folder)
+            if n.endswith(suffix) or (readme and n.lower().startswith("readme"))
+        )
     except OSError:
         return ()
     stamps = []

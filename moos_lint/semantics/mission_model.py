@@ -46,7 +46,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from moos_lint.files.diagnostics import Span
-from moos_lint.files.launch import launch_folders, project_folder, shell_scripts
+from moos_lint.files.launch import launch_folders, notes, project_folder, shell_scripts
 from moos_lint.frontends.nsplug import Expansion, Line, derived, parsed
 from moos_lint.frontends.parsers.bhv import parse_bhv
 from moos_lint.frontends.parsers.moos import parse_moos
@@ -243,8 +243,9 @@ def behavior_paths(value: str, folder: str, *parents: str) -> tuple[list[str], b
 
 
 def _pokes(folder: str) -> dict[str, str]:
-    """``VAR`` -> script, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``."""
-    return _poked(shell_scripts(folder))
+    """``VAR`` -> file, for ``uPokeDB ... VAR=value`` in the shell scripts of ``folder``
+    and in its notes (a README's ``$ uPokeDB WPT_REQUEST=true``: a step run by hand)."""
+    return _poked(shell_scripts(folder) + notes(folder))
 
 
 @functools.lru_cache(maxsize=256)

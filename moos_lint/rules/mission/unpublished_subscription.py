@@ -22,7 +22,9 @@ variable that a logic condition waits for: behavior `condition` and
   mission runs (the check stays quiet rather than guess where it goes);
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post;
-- a `uPokeDB ... VAR=value` in a shell script beside the mission;
+- a `uPokeDB ... VAR=value` in a shell script beside the mission, or in a
+  note beside it (`README`, `*.md`, `*.txt`: the steps a person runs by hand,
+  `$ uPokeDB WPT_REQUEST=true`);
 - when the mission receives variables from another community (pShare,
   uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
   in its folder publish (nsplug's outputs, `targ_*.moos`, count only for a
@@ -70,13 +72,16 @@ MOOS-IvP caveats, deliberately not reported:
   a published one (`(DEPLOY = true) or (RETRUN = true)`): that side is dead;
 - a mission that receives variables from another community when no other
   mission in its folder describes that community: anything may arrive;
-- variables that a person pokes by hand (uPokeDB from a terminal,
-  uMAC): give them a publisher in the mission, or suppress the finding;
 - a variable named after a launched app that the catalogue does not know,
   by its initials or its name (`UFRM_WINNER` when the mission runs
   uFldRescueMgr from another tree, `ODOMETRY_DIST` when it runs pOdometry):
   MOOS-IvP apps name their own variables so (uSimMarine `USM_*`,
   uFldShoreBroker `UFSB_*`), so that app most likely posts it.
+
+A variable a person pokes by hand (uPokeDB from a terminal, uMAC) is reported
+when nothing beside the mission shows the poke: write the step in a script or
+a README beside it, give the variable a publisher in the mission, or suppress
+the finding.
 """
 
 from moos_lint.files.diagnostics import Severity, Subject
