@@ -228,10 +228,11 @@ def link_apps(apps: list[AppModel], strays: bool = False) -> None:
     A source file the folder's CMakeLists.txt compiles into no target (a stray copy of
     the app's class beside its real sources) is dropped first, unless ``strays``: it
     never runs."""
-    for app in apps if not strays else ():
-        stray = unbuilt(app.folder, frozenset(os.path.basename(f.path) for f in app.files))
-        if stray:
-            app.files = [f for f in app.files if os.path.basename(f.path) not in stray]
+    if not strays:
+        for app in apps:
+            stray = unbuilt(app.folder, frozenset(os.path.basename(f.path) for f in app.files))
+            if stray:
+                app.files = [f for f in app.files if os.path.basename(f.path) not in stray]
     bases: dict[str, list[str]] = {}
     for app in apps:
         for f in app.files:

@@ -34,24 +34,30 @@ def _read(path: str) -> str | None:
     return src.text if isinstance(src, SourceFile) else None
 
 
-def _executables(text: str) -> list[tuple[str, str, int]]:
-    """(name, source list, line) of every add_executable with a resolvable name.
-
-    ``${VAR}`` in the source list is replaced by the values of ``set(VAR a b c)``.
-    """
+def _targets(text: str, pattern: re.Pattern[str]) -> list[tuple[str, str, int]]:
+    """(name, source list, line) of every target ``pattern`` finds in ``text`` (comments
+    removed), ``${VAR}`` replaced by the values of ``set(VAR a b c)`` (in a name, by the
+    first value); what stays unresolved keeps its ``${VAR}``."""
     text = _COMMENT.sub("", text)
     lists = {m.group(1): m.group(2) for m in _SET_LIST.finditer(text)}
     sets = {k: v.split()[0].strip('"') for k, v in lists.items() if v.split()}  # first value
     out = []
-    for m in _ADD_EXEC.finditer(text):
+    for m in pattern.finditer(text):
         name, srcs = m.group(1), m.group(2)
         for _ in range(3):
             name = _VAR.sub(lambda v: sets.get(v.group(1), v.group(0)), name)
             srcs = _VAR.sub(lambda v: lists.get(v.group(1), v.group(0)), srcs)
-        if "${" in name or name.upper() in ("WIN32", "MACOSX_BUNDLE"):
-            continue
         out.append((name, srcs, text.count("\n", 0, m.start()) + 1))
     return out
+
+
+def _executables(text: str) -> list[tuple[str, str, int]]:
+    """(name, source list, line) of every add_executable with a resolvable name."""
+    return [
+        (name, srcs, line)
+        for name, srcs, line in _targets(text, _ADD_EXEC)
+        if "${" not in name and name.upper() not in ("WIN32", "MACOSX_BUNDLE")
+    ]
 
 
 def unbuilt(folder: str, names: frozenset[str]) -> frozenset[str]:
@@ -64,24 +70,12 @@ def unbuilt(folder: str, names: frozenset[str]) -> frozenset[str]:
     if not sources:
         return frozenset()
     text = _read(os.path.join(folder, "CMakeLists.txt"))
-    if text is None:
+    if text is None or _OPEN_LISTS.search(_COMMENT.sub("", text)):
         return frozenset()
-    text = _COMMENT.sub("", text)
-    if _OPEN_LISTS.search(text):
-        return frozenset()
-    lists = {m.group(1): m.group(2) for m in _SET_LIST.finditer(text)}
-    listed: set[str] = set()
-    targets = 0
-    for m in _ADD_TARGET.finditer(text):
-        srcs = m.group(2)
-        for _ in range(3):
-            srcs = _VAR.sub(lambda v: lists.get(v.group(1), v.group(0)), srcs)
-        if "${" in srcs or "$<" in srcs:
-            return frozenset()  # a list we cannot read may hold any file
-        listed |= _file_names(srcs)
-        targets += 1
-    if not targets:
-        return frozenset()
+    targets = _targets(text, _ADD_TARGET)
+    if not targets or any("${" in srcs or "$<" in srcs for _n, srcs, _l in targets):
+        return frozenset()  # no target, or a list we cannot read: it may hold any file
+    listed = set().union(*(_file_names(srcs) for _n, srcs, _l in targets))
     return frozenset(n for n in sources if n not in listed)
 
 

@@ -2073,31 +2073,35 @@ class RepositoryResolver:
         """One read of every file: the names it may define a function of, and whether it
         names each expected class (for :meth:`_field`)."""
         self._index = {}
-        classes = [(c, c.encode()) for c in sorted(self._expected - set(self._naming))]
-        for cls, _ in classes:
-            self._naming[cls] = []
+        classes = self._naming_of(self._expected - set(self._naming))
         wanted = self._wanted
         for i, path in enumerate(self.all_paths):
             data = self._data(path)
             names = defined_names(data)
             for n in names:
                 self._index.setdefault(n, []).append(i)
-            for cls, key in classes:
+            for key, paths in classes:
                 if key in data:
-                    self._naming[cls].append(path)
+                    paths.append(path)
             for n in names & wanted if wanted else ():
                 self._owners.update(_owners_of(n, data))
 
+    def _naming_of(self, classes: set[str]) -> list[tuple[bytes, list[str]]]:
+        """Start :attr:`_naming` for ``classes``: (the class's bytes, its list to fill)."""
+        out = []
+        for cls in sorted(classes):
+            self._naming[cls] = []
+            out.append((cls.encode(), self._naming[cls]))
+        return out
+
     def _find_naming(self, classes: set[str]) -> None:
         """One read of every file: which of ``classes`` each names (for :meth:`_field`)."""
-        keys = [(c, c.encode()) for c in sorted(classes)]
-        for cls, _ in keys:
-            self._naming[cls] = []
+        keys = self._naming_of(classes)
         for path in self.all_paths:
             data = self._data(path)
-            for cls, key in keys:
+            for key, paths in keys:
                 if key in data:
-                    self._naming[cls].append(path)
+                    paths.append(path)
 
     def __call__(self, name: str) -> AbstractValue | None:
         if name in self.cache:

@@ -97,14 +97,13 @@ import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
-from moos_lint.files.suffixes import script_stem
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
 
-_COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*([^@~\s]+)\s*(?:@[^~]*)?(?:~\s*([^\s,]+))?", re.I)
+_COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*\S", re.I)
 
 
 @rule(
@@ -255,15 +254,12 @@ def _commented_runs(moos, cat, mission: str) -> dict[str, str]:
             if not m:
                 continue
             here = where(line)
-            launched = m.group(2) or m.group(1).replace("\\", "/").rsplit("/", 1)[-1]
-            found.setdefault(launched.lower(), here)
-            stem = None if m.group(2) else script_stem(launched)
-            if stem:  # `// Run = ./iPydyna.py` would read `ProcessConfig = iPydyna`
-                found.setdefault(stem.lower(), here)
             eq = line.text.index("=")  # the one of `// Run =`: the key holds none
             value = line.text[eq + 1 :]
             run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)
-            for name in cat.block_names(run):
+            # its name or alias, a script's stem (`// Run = ./iPydyna.py` would read
+            # `ProcessConfig = iPydyna`), and the name its app's main hard-codes
+            for name in (*run.block_names, *cat.block_names(run)):
                 found.setdefault(name.lower(), here)
             if run.script_block is not None and not has_macro(run.binary):
                 for name in script_names(mission, run.binary) or ():
