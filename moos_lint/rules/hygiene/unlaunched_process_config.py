@@ -51,7 +51,10 @@ suppress the finding on the header line.
   declares `launched_manually = true`. A block whose name *starts with* one of
   these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
 - `commented-runs` (boolean, default false): also report a block whose Run
-  line is commented out in the ANTLER block (`//Run = uTimerScript ...`).
+  line is commented out in the ANTLER block (`//Run = uTimerScript ...`; also
+  `#Run = ...` and `/Run = ...`, which MOOS does not take for comments but
+  which launch nothing all the same: not-a-comment, R007, reports their
+  spelling).
   Commenting a Run line out while keeping its block is how MOOS users switch a
   process off for a while (a simulator for field runs, a logger, a timer
   script; 4 of the 8 such blocks in MOOS-IvP's own missions), so by default
@@ -103,7 +106,9 @@ from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
 
-_COMMENTED_RUN = re.compile(r"^\s*//+\s*run\s*=\s*\S", re.I)
+#: `//Run = X`, and `#Run = X` or `/Run = X`: not comments to MOOS (not-a-comment, R007,
+#: reports them), but a Run line its author meant to switch off all the same
+_COMMENTED_RUN = re.compile(r"^\s*(?:/+|#+)\s*run\s*=\s*\S", re.I)
 
 
 @rule(
@@ -232,9 +237,9 @@ def _script_words(mission: str, moos) -> frozenset[str]:
 
 
 def _commented_runs(moos, cat, mission: str) -> dict[str, str]:
-    """Where a ``//Run = NAME`` line sits in an ANTLER block, by the lower-case name of
-    every block its process would read were it launched (the first such line): the
-    line is read as a live one is, so an app whose ``main`` hard-codes its name
+    """Where a ``//Run = NAME`` line (or ``#Run = NAME``) sits in an ANTLER block, by the
+    lower-case name of every block its process would read were it launched (the first
+    such line): the line is read as a live one is, so an app whose ``main`` hard-codes its name
     (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
     quotes count too."""
     found: dict[str, str] = {}
