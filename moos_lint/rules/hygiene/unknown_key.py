@@ -23,7 +23,10 @@ The app-level keys every MOOS app reads from its own
 block (`AppTick`, `CommsTick`, `MaxAppTick`, `IterateMode`, `SortMailByTime`,
 `CatchCommandMessages`, the `moos_*` flags, and AppCasting's `COMMS_POLICY`,
 `APP_LOGGING`, `TERM_REPORT_INTERVAL`, `MAX_APPCAST_EVENTS`,
-`MAX_APPCAST_RUN_WARNINGS`, `DEPRECATED_OK`) are accepted in the ANTLER block.
+`MAX_APPCAST_RUN_WARNINGS`, `DEPRECATED_OK`) are accepted in the ANTLER block,
+and so are the known globals: MOOS's file reader looks a global up on every
+line of the file, blocks included, so `LatOrigin` in the ANTLER block is read
+(global-key-in-block, R009, reports where it sits).
 
 ## Why is this bad?
 MOOS never complains about a key it does not read: `MSBetweenLaunch = 500`
@@ -174,7 +177,9 @@ def check(ctx):
             if id(p.line) not in off:
                 yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS, built)
     for block in moos.antler_blocks:
-        known = [*ANTLER_KEYS, *APP_KEYS]
+        # a global key (`LatOrigin`) is read wherever it sits, blocks included (MOOS's
+        # file reader scans every line for it): global-key-in-block (R009) reports the place
+        known = [*ANTLER_KEYS, *APP_KEYS, *globals_known]
         for run in (r for r in moos.runs if r.param.block is block):
             for opt in _LIST_OPTIONS:
                 if run.options.get(opt):
