@@ -347,11 +347,16 @@ def unreachable_branch(app: AppModel) -> Iterator[Finding]:
         )
 
 
-def depth_z_sign(app: AppModel) -> Iterator[Finding]:
+def depth_z_sign(
+    app: AppModel, own: Callable[[str], bool] = lambda var: False
+) -> Iterator[Finding]:
+    """``own``: whether a variable is the repository's own (its readers give its sense)."""
     for p, v in _valued(app, lambda n: angles.is_z_var(n) or angles.is_depth_var(n)):
         if v is None or v.sign is None:
             continue
         name = p.name.last
+        if p.name.text is not None and own(p.name.text):
+            continue
         if angles.is_z_var(name) and v.sign == "down":
             what, rule = "a depth (positive down)", "Z is up, so Z = −depth"
         elif angles.is_depth_var(name) and v.sign == "up" and not v.hint:

@@ -11,6 +11,14 @@ NED z (positive down: a field named so, `m_ned_down`, or the `z` of a NED
 type, `mavlink_set_position_target_local_ned_t sp; sp.z`) set from `NAV_Z`
 (positive up) without negation.
 
+A variable of the repository's own is left alone: one that an app of the
+repository subscribes to and that no MOOS-IvP app or behavior publishes or
+reads (a project's `VVV_Z`, kept positive down for its own depth
+controller). Its readers were written with its publisher, so they, not the
+MOOS frame, give its sense; negating the publication alone would invert them.
+A Z that MOOS-IvP's apps know (`NAV_Z`), or one that nothing in the
+repository reads, is judged.
+
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
 (README, "C++ apps"). The finding says why, as a chain; what the analysis
@@ -50,6 +58,13 @@ from moos_lint.rules.kit.declare import Kind, Scope, rule
 def check(ctx):
     # the C++ model is loaded only by runs that lint C++
     from moos_lint.rules.kit.cpp import cpp_findings
+    from moos_lint.semantics.catalogue import catalogue_for
     from moos_lint.semantics.cpp_checks import depth_z_sign
 
-    yield from cpp_findings(ctx, depth_z_sign)
+    cat = catalogue_for(ctx.run)
+    me = ctx.unit.cpp.process_name if ctx.unit.cpp is not None else None
+
+    def own(var: str) -> bool:
+        return cat.project_variable(var, me or "")
+
+    yield from cpp_findings(ctx, depth_z_sign, own=own)

@@ -216,6 +216,23 @@ class Catalogue:
         facts = self.app(program) or self.programs.get(program.lower())
         return None if facts is None else facts.needs_process_config
 
+    def project_variable(self, var: str, publisher: str = "") -> bool:
+        """Whether ``var`` is the linted repository's own: an app of the run's own C++
+        (other than ``publisher``) subscribes to it by name, and no other app or behavior
+        of the catalogue (MOOS-IvP's, a user catalogue's) publishes or reads it by that
+        name. Its
+        readers were written with its publishers: they, not MOOS-IvP, give its sense."""
+        read_here = False
+        for key, info in self.apps.items():
+            if info.own:
+                if var in info.subscribes and key != publisher.lower():
+                    read_here = True
+            elif var in info.publishes or var in info.subscribes:
+                return False  # (by name: uSimMarine's `<prefix>_Z` names no variable of its own)
+        if not read_here:
+            return False
+        return not any(var in b.reads or var in b.posts for b in self.behaviors.values())
+
     def started_by_hand(self) -> list[str]:
         """The apps and programs users start by hand with the mission file (lower case)."""
         found = [k for k, a in self.apps.items() if a.launched_manually]
