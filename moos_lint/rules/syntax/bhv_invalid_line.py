@@ -8,6 +8,12 @@ followed by a tab or with a malformed `VAR=VALUE` pair; a `#` line (not a
 comment in a behavior file); a merge-conflict marker (`<<<<<<< HEAD`), named
 as such.
 
+A line in the `#else` branch of an nsplug `#ifdef` chain on a macro the
+launch script gives, in a branch that holds nothing but comments and such
+lines, is not reported: it is a guard its author wrote to break the file
+on purpose when the launch script gives no known value (`~~ no vehicle role
+given ~~`).
+
 A run of consecutive lines rejected for the same reason (a `/* ... */` block,
 a pasted paragraph) is one finding, on its first line. A `.bhv` file with no
 line shaped like a behavior file's (`Behavior`, `initialize`, `set`, a brace,
@@ -66,10 +72,13 @@ def check(ctx):
     if written_for_cpp(line.text for line in bhv.lines):
         return  # a template of the C preprocessor: the helm reads only its output
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
+    guards = _guard_branches(ctx.expansion, bhv)
     runs: list[list] = []  # consecutive lines rejected for one reason: one finding
     for line, reason in ctx.bhv.invalid:
         if (line.path, line.lineno) in flagged:
             continue  # an nsplug problem on this line is reported already
+        if guards and any(b in guards for b in line.branches):
+            continue  # a guard that breaks the file on purpose when no branch applies
         last = runs[-1][-1] if runs else None
         if (
             last
@@ -85,3 +94,28 @@ def check(ctx):
         after = "the line after it" if len(run) == 2 else f"the {len(run) - 1} lines after it"
         more = f" (and {after})" if len(run) > 1 else ""
         yield ctx.at_line(line, f"{reason}{more}: the helm fails to load the whole behavior file")
+
+
+def _guard_branches(exp, bhv) -> set[tuple[int, int]]:
+    """The ``#else`` branches of an ``#ifdef`` chain whose macro's value is unknown (the
+    launch script gives it) that hold nothing but comments and lines the helm rejects:
+    a guard its author wrote to break the file when no branch applies (``~~ no vehicle
+    role given ~~``)."""
+    elses = {b for b, cond in exp.conditions.items() if cond == "else"}
+    if not elses:
+        return set()
+    rejected = {id(line) for line, _reason in bhv.invalid}
+    kept_groups: dict[int, set[int]] = {}
+    holds_other: set[tuple[int, int]] = set()
+    for line in bhv.lines:
+        for b in line.branches:
+            kept_groups.setdefault(b[0], set()).add(b[1])
+            if b in elses and id(line) not in rejected and not _blank(line.text):
+                holds_other.add(b)
+    # the chain's other branches were kept too: its macro's value is unknown
+    return {b for b in elses - holds_other if len(kept_groups.get(b[0], ())) > 1}
+
+
+def _blank(text: str) -> bool:
+    stripped = text.strip()
+    return not stripped or stripped.startswith("//")
