@@ -7,6 +7,7 @@ typed accessor:
 - ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
 - ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``,
   ``mission_files``: :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
+- ``shared_out``: :func:`moos_lint.semantics.shares.shared_out`;
 - ``repo_cpp_stems``, ``repo_behavior_files``:
   :func:`moos_lint.rules.mission._behaviors.repo_classes`;
 - ``repo_behavior_posts``: :func:`moos_lint.rules.mission._behaviors.repo_behavior_posts`;
@@ -50,6 +51,8 @@ class RunMemos:
     external_publishers: dict[str, dict[str, list[Publisher]]] = field(default_factory=dict)
     #: folder -> the normalised paths of the ``.moos`` files there that may be missions
     mission_files: dict[str, list[str]] = field(default_factory=dict)
+    #: route -> the variables the project's missions send on it with pShare
+    shared_out: dict[str, frozenset[str]] | None = None
     #: the names of the C++ files and classes of the project: lower case -> as written
     repo_cpp_stems: dict[str, str] | None = None
     #: the project's ``BHV_*.cpp`` files: lower-case class name -> paths (walked with the stems)

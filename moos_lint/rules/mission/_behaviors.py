@@ -9,12 +9,11 @@ from typing import TYPE_CHECKING
 
 from moos_lint.files.source import read_head
 from moos_lint.files.suffixes import is_cpp
+from moos_lint.files.walk import project_walk
 from moos_lint.semantics.catalogue import BehaviorInfo, catalogue_for
 
 if TYPE_CHECKING:  # rules are loaded by the engine: they do not import it
     from moos_lint.core.engine import Context
-
-_SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__", ".moos_lint_cache"}
 
 
 def repo_classes(ctx: Context) -> dict[str, str]:
@@ -35,8 +34,7 @@ def repo_classes(ctx: Context) -> dict[str, str]:
             for c in f.classes:
                 stems.add(c.name)
     root = _root(ctx)
-    for count, (dirpath, dirs, files) in enumerate(os.walk(root)):
-        dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
+    for dirpath, files in project_walk(root):
         for name in files:
             if is_cpp(name):
                 stem = os.path.splitext(name)[0]
@@ -51,8 +49,6 @@ def repo_classes(ctx: Context) -> dict[str, str]:
                 # a behavior class in a file named otherwise (TrailiSBL_PingFormation.h
                 # declares BHV_TrailiSBL_PingFormation): read the declarations
                 stems.update(_declared_behaviors(os.path.join(dirpath, name)))
-        if count > 20000:  # a huge tree: stop looking
-            break
     run.memos.repo_cpp_stems = found = {s.lower(): s for s in sorted(stems)}
     return found
 

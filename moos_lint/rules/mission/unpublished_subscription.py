@@ -29,7 +29,10 @@ variable that a logic condition waits for: behavior `condition` and
   uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
   in its folder publish (nsplug's outputs, `targ_*.moos`, count only for a
   `targ_` mission: in a repository that keeps only those, they are the other
-  communities).
+  communities), and what any mission of the project sends with pShare on a
+  route the mission's pShare listens on (`output = src_name=START,
+  route=multicast_8` in `missions/launcher.moos`, `input = route=multicast_8`
+  in the buoys' missions elsewhere).
 
 - a behavior of the project's own (a kind the catalogue does not describe,
   whose `BHV_X.cpp` is under the project root) that posts it by name
@@ -90,6 +93,7 @@ from moos_lint.rules.kit.spelling import misspelling_of
 from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
+from moos_lint.semantics.shares import input_routes, received
 from moos_lint.semantics.variables import alternative_starts, bare_name
 
 
@@ -141,12 +145,17 @@ def check(ctx):
     gaps = _gaps(model, unknown_kinds)
     unknown_prefixes = {pre for p in model.unknown_apps for pre in own_prefixes(p.binary)}
     seen: set[tuple[str, str, int]] = set()
+    routes: set[str] | None = None  # the pShare routes the mission listens on
     for ref in model.waits:
         name = bare_name(ref.name)
         if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
             continue
         if model.published_by(name) or name in posted:
             continue
+        if routes is None:
+            routes = _listened(model)
+        if received(ctx.run, routes, name):
+            continue  # a mission elsewhere in the project sends it on a route this one hears
         meant = None
         if _one_alternative(ref):
             # one side of an `or`: the condition may hold without it, so it is not waited
@@ -178,6 +187,15 @@ def check(ctx):
             )
         else:
             yield ctx.report(ref.span, msg, line=ref.line, subject=subject)
+
+
+def _listened(model) -> set[str]:
+    """The routes the mission's pShare listens on."""
+    found: set[str] = set()
+    for proc in model.processes:
+        if proc.binary.lower() == "pshare" and proc.block is not None:
+            found |= input_routes(proc.block)
+    return found
 
 
 #: a name this many typos from a published one is taken to be a misspelling of it

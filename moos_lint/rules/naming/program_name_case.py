@@ -41,11 +41,10 @@ from __future__ import annotations
 import os
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.files.walk import project_walk
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.catalogue import catalogue_for
-
-_SKIP_DIRS = {".git", ".hg", ".svn", "node_modules", ".venv", "__pycache__"}
 
 
 @rule(
@@ -85,8 +84,7 @@ def _built_by_project(ctx, program: str) -> bool:
     from moos_lint.frontends.cpp.cmake import executables_in
 
     found = False
-    for dirpath, dirs, files in os.walk(os.path.abspath(ctx.settings.root)):
-        dirs[:] = [d for d in dirs if d not in _SKIP_DIRS and not d.startswith("build")]
+    for dirpath, files in project_walk(os.path.abspath(ctx.settings.root)):
         if "CMakeLists.txt" in files and program in executables_in(dirpath):
             found = True
             break
