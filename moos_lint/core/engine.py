@@ -384,6 +384,8 @@ def lint_files(
     if progress is not None:
         progress.begin("checking", len(run.units))
     parallel_rules = parallel is not None and checked is None and jobs > 1 and len(run.units) > 1
+    if checked is None:  # every unit is checked: a folder's shared models go once it is done
+        run.memos.expect(unit.path for unit in run.units)
     if checked is not None:
         per_unit = (run.run_rules(unit) for unit in run.units if checked(unit))
     elif parallel is not None and parallel_rules:

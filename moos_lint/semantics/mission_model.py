@@ -406,7 +406,7 @@ class _Builder:
             ref_process=core.ref_process,
         )
         self._owned = set()
-        folder = os.path.dirname(m.path)
+        folder = os.path.dirname(_norm(m.path))
         pokes = self.run.memos.pokes
         if folder not in pokes:
             pokes[folder] = _pokes(folder)

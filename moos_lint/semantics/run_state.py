@@ -20,6 +20,7 @@ so that none of them imports the engine.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -71,13 +72,41 @@ class RunMemos:
     #: how those apps build the names they read (``GetValue(s + "_Longitude", v)``)
     built_keys: Any = None
 
+    #: folder -> how many of the run's units there the rules have yet to check (see
+    #: :meth:`expect`); empty when the run did not say
+    unchecked: dict[str, int] = field(default_factory=dict)
+
+    def expect(self, paths: Iterable[str]) -> None:
+        """The rules will check the units at ``paths``, each once (see :meth:`checked`)."""
+        for path in paths:
+            folder = os.path.dirname(os.path.normpath(os.path.abspath(path)))
+            self.unchecked[folder] = self.unchecked.get(folder, 0) + 1
+
     def checked(self, path: str) -> None:
         """The rules are done with the unit at ``path``: drop what only its rules read.
 
         A mission's whole model is read only by the rules of that mission; its
-        core stays (the models of the missions beside it are made from it).
+        core stays while the missions beside it are checked (their models are
+        made from it). Once every unit of a folder the run said it would check
+        (:meth:`expect`) is checked, the cores of its missions, what they publish
+        for one another and the pokes beside them are dropped too: the models of
+        the missions of one folder are made from one another only. (A rule that
+        asks for one again later gets it built anew.)
         """
-        self.mission_models.pop(os.path.normpath(os.path.abspath(path)), None)
+        norm = os.path.normpath(os.path.abspath(path))
+        self.mission_models.pop(norm, None)
+        folder = os.path.dirname(norm)
+        left = self.unchecked.get(folder)
+        if left is None:
+            return
+        if left > 1:
+            self.unchecked[folder] = left - 1
+            return
+        del self.unchecked[folder]
+        for memo in (self.mission_cores, self.external_publishers):
+            for key in [k for k in memo if os.path.dirname(k) == folder]:
+                del memo[key]
+        self.pokes.pop(folder, None)
 
 
 class RunView(Protocol):
