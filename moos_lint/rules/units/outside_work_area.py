@@ -2,7 +2,7 @@
 
 ## What it does
 Reports local-grid (x, y) coordinates farther from the origin than
-`max-distance` metres (10 km by default), in:
+`max-distance` metres (20 km by default), in:
 - behavior parameters that take points or polygons: `points`, `xpoints`,
   `point`, `polygon`, `station_pt`, `center_assign`, `bearing_point`,
   `match_region`, `ignore_region`;
@@ -20,8 +20,9 @@ not understood, is skipped.
 
 ## Why is this bad?
 x and y are metres east and north of `LatOrigin`/`LongOrigin`. MOOSGrid's
-geodesy assumes a local work area, a square under about 20 km on a side, so a
-point more than 10 km away is either a mistake (a UTM easting or northing,
+geodesy assumes a local work area, a square under about 20 km on a side
+with the origin in it, so a point more than 20 km away is either a mistake (a
+UTM easting or northing,
 which the message names from 100 km on, or a value typed in the wrong field:
 the vehicle then heads for a point far away, or the polygon is off the map)
 or an origin placed far from where the vehicle works, where the flat grid
@@ -51,7 +52,9 @@ closer to the operating area.
 
 ## Options
 - `max-distance` (number, metres): the largest distance from the origin that
-  is not reported. Default: `10000`.
+  is not reported. Default: `20000` (a point 16 km off still fits a 20 km
+  square with the origin near one side: a work area placed so is not
+  reported). Lower it to hear of points far from a centred origin.
 """
 
 import math
@@ -112,10 +115,10 @@ UTM_SCALE = 100_000
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.BHV),
-    options={"max-distance": 10000},
+    options={"max-distance": 20000},
 )
 def check(ctx):
-    limit = float(ctx.options.get("max-distance", 10000))
+    limit = float(ctx.options.get("max-distance", 20000))
     found = []
     if ctx.moos is not None:
         apps = _app_names(ctx.moos)
