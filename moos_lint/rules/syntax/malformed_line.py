@@ -25,6 +25,11 @@ its `//`) are decoration: MOOS drops them, and nothing was meant to be set
 there, so they are not reported. A line between two rulers further down is
 reported: it may be a key that lost its `=`.
 
+A `.moos` file that is a developer's notes rather than configuration (no
+ProcessConfig block, no key MOOS knows at the top of the file, included by no
+linted file, and more unreadable lines than `key = value` ones) is read by no
+MOOS program, and its lines are not reported.
+
 ## Example
 ```moos
 ProcessConfig = pLogger
@@ -55,6 +60,8 @@ from moos_lint.rules.kit.declare import Scope, rule
 
 @rule(code="R012", name="malformed-line", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
+    if _notes(ctx):
+        return  # notes kept under a `.moos` name: no MOOS program reads the file
     opens, closes = _block_comments(ctx.moos.lines)
     title = _banner_title(ctx.moos.lines) if ctx.moos.malformed else None
     for line in ctx.moos.malformed:
@@ -132,3 +139,16 @@ def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
             opens.add(id(lines[start]))
         closes[id(lines[end])] = reads
     return opens, closes
+
+
+def _notes(ctx) -> bool:
+    """Whether the file is a developer's notes with a ``.moos`` name rather than MOOS
+    configuration: no ProcessConfig block, no key MOOS knows at the top, no linted file
+    includes it, and more of its lines are unreadable than ``key = value``."""
+    moos = ctx.moos
+    if moos.blocks or moos.is_mission or ctx.unit.path in ctx.run.included_elsewhere:
+        return False
+    known = {k.lower() for k in MOOS_GLOBALS}
+    if any(p.key.strip().lower() in known for p in moos.globals):
+        return False
+    return len(moos.malformed) > len(moos.globals)
