@@ -152,10 +152,6 @@ def check(ctx):
             continue
         if model.published_by(name) or name in posted:
             continue
-        if routes is None:
-            routes = _listened(model)
-        if received(ctx.run, routes, name):
-            continue  # a mission elsewhere in the project sends it on a route this one hears
         meant = None
         if _one_alternative(ref):
             # one side of an `or`: the condition may hold without it, so it is not waited
@@ -169,6 +165,11 @@ def check(ctx):
         seen.add(key)
         if _named_after(name, unknown_prefixes):
             continue  # named after an app the catalogue does not know: likely its own
+        # last, as it may walk the project's missions (once per run): only for a finding
+        if routes is None:
+            routes = _listened(model)
+        if received(ctx.run, routes, name):
+            continue  # a mission elsewhere in the project sends it on a route this one hears
         owner = ref.app if ref.app else "the mission"
         subject = Subject(variable=name, app=ref.app or None, key=ref.param)
         if meant is not None:

@@ -72,7 +72,7 @@ def check(ctx):
     if written_for_cpp(line.text for line in bhv.lines):
         return  # a template of the C preprocessor: the helm reads only its output
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
-    guards = _guard_branches(ctx.expansion, bhv)
+    guards = _guard_branches(ctx.expansion, bhv) if bhv.invalid else set()
     runs: list[list] = []  # consecutive lines rejected for one reason: one finding
     for line, reason in ctx.bhv.invalid:
         if (line.path, line.lineno) in flagged:

@@ -220,8 +220,8 @@ class Catalogue:
         """Whether ``var`` is the linted repository's own: an app of the run's own C++
         (other than ``publisher``) subscribes to it by name, and no other app or behavior
         of the catalogue (MOOS-IvP's, a user catalogue's) publishes or reads it by that
-        name. Its
-        readers were written with its publishers: they, not MOOS-IvP, give its sense."""
+        name. Its readers were written with its publishers: they, not MOOS-IvP, give its
+        sense."""
         read_here = False
         for key, info in self.apps.items():
             if info.own:
