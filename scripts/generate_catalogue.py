@@ -541,6 +541,27 @@ PROGRAMS: dict[str, dict] = {
         "why": "the MOOS scope GUI, started by hand; it asks for the server to watch "
         "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uMS/uMS.cpp:139)",
     },
+    "uPlayback": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "the alog playback GUI, started by hand: its main only opens the window, and it "
+        "reads no mission file "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uPlayBack/uPlayBackMain.cpp:45-55)",
+    },
+    "uIndexedPlayback": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "the indexed alog playback GUI, started by hand: its main only opens the "
+        "window, and it reads no mission file "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uIndexedPlayBack/uPlayBackMain.cpp:45-54)",
+    },
+    "uPoke": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "pokes one variable given on its command line (server, port, name, value), and "
+        "reads no mission file "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Console/uPoke/main.cpp:60-97)",
+    },
 }
 
 #: apps the extractor does not see as apps (no CMOOSApp class), described by hand

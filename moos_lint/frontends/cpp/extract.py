@@ -1345,7 +1345,10 @@ class Extractor:
         mail_fn = fname == "OnNewMail" or re.search(r"mail", low)
         if not mail_fn and (fname == "OnStartUp" or _CONFIG_FN.search(fname)):
             if re.search(r"param|key|line|name|sVar|arg", subject_text, re.I):
-                self.out.config_params.append(ConfigParam(lit.lower(), span))
+                head = _head_of(subject)  # ``param.substr(0, 6) == "IMAGE_"``
+                self.out.config_params.append(
+                    ConfigParam(lit.lower(), span, prefix=prefix or head is not None)
+                )
         elif mail_fn or re.search(r"\bkey\b|GetKey|GetName", subject_text):
             direct = not (prefix or suffix) and self._message_key(node, subject)
             self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
@@ -1450,6 +1453,13 @@ class Extractor:
                 a, b = strip_parens(pair[0]), strip_parens(pair[1])
                 if a is not None and b is not None:
                     self._config_against(a, b)
+            if n.type == "call_expression":
+                lit_node = _prefix_test(n)
+                if lit_node is not None:
+                    lit = string_value(lit_node)
+                    if lit and (lit[0].isalpha() or lit[0] == "_"):  # not `line.find("//") == 0`
+                        span = self.pf.spans.of(lit_node)
+                        self.out.config_params.append(ConfigParam(lit.lower(), span, prefix=True))
 
     def _config_against(self, a: Any, b: Any) -> None:
         for subject, other in ((a, b), (b, a)):
@@ -1540,6 +1550,69 @@ _THREAD_STARTS = {b"Initialise", b"pthread_create", b"thread", b"Start", b"CMOOS
 _NAME_NODES = ("identifier", "field_expression", "qualified_identifier")
 #: the functions that read an app's configuration, and the key they compare
 _CONFIG_FN = re.compile(r"config|startup|param", re.I)
+
+
+def _head_of(subject: Any) -> Any:
+    """The string ``subject`` takes the head of (``param`` of ``param.substr(0, 6)``), or None."""
+    subject = strip_parens(subject)
+    if subject is None or subject.type != "call_expression":
+        return None
+    fn = subject.child_by_field_name("function")
+    args = subject.child_by_field_name("arguments")
+    if fn is None or fn.type != "field_expression" or callee(fn) != "substr" or args is None:
+        return None
+    argv = [a for a in args.named_children if a.type != "comment"]
+    if len(argv) != 2 or text(argv[0]).strip() != "0":
+        return None
+    return fn.child_by_field_name("argument")
+
+
+#: a method that tests how a string starts, by its arguments: ``s.find("X") == 0``,
+#: ``s.rfind("X", 0) == 0``, ``s.compare(0, 6, "IMAGE_") == 0``, ``s.starts_with("X")``
+#: (the index of the literal, and the arguments that must be 0)
+_PREFIX_METHODS = {
+    "find": (0, (1,)),
+    "rfind": (0, (1,)),
+    "compare": (2, (0,)),
+    "starts_with": (0, ()),
+}
+
+
+def _prefix_test(call: Any) -> Any:
+    """The literal of a test of how a configuration key starts (see :data:`_PREFIX_METHODS`),
+    on a subject named like one (``param``, ``sKey``, ``line``), or None."""
+    fn = call.child_by_field_name("function")
+    if fn is None or fn.type != "field_expression":
+        return None
+    spec = _PREFIX_METHODS.get(callee(fn))
+    subject = strip_parens(fn.child_by_field_name("argument"))
+    args = call.child_by_field_name("arguments")
+    if spec is None or subject is None or subject.type != "identifier" or args is None:
+        return None
+    if not _CONFIG_SUBJECT.search(text(subject)):
+        return None
+    argv = [a for a in args.named_children if a.type != "comment"]
+    at, zeros = spec
+    if len(argv) <= at or string_value(strip_parens(argv[at])) is None:
+        return None
+    if callee(fn) == "find" and len(argv) == 1:
+        zeros = ()
+    if any(len(argv) <= z or text(argv[z]).strip() != "0" for z in zeros):
+        return None
+    if callee(fn) != "starts_with":  # the result must be compared with 0
+        parent = call.parent
+        while parent is not None and parent.type == "parenthesized_expression":
+            parent = parent.parent
+        if parent is None or parent.type != "binary_expression":
+            return None
+        op = parent.child_by_field_name("operator")
+        sides = [strip_parens(parent.child_by_field_name(k)) for k in ("left", "right")]
+        others = [s for s in sides if s is not None and s.id != call.id]
+        if op is None or op.type != "==" or len(others) != 1 or text(others[0]).strip() != "0":
+            return None
+    return strip_parens(argv[at])
+
+
 _CONFIG_SUBJECT = re.compile(r"^(?:s|str)?(?:param|key|line|name|var|arg)\w*$", re.I)
 #: the message's key (``msg.GetKey()``, ``key``, ``sKey``, ``rMsg.m_sKey``)
 _KEY_SUBJECT = re.compile(r"key|GetName", re.I)

@@ -122,6 +122,9 @@ class MailKey:
 class ConfigParam:
     text: str
     span: Span
+    #: the app reads every key that starts with ``text`` (``param.find("IMAGE_") == 0``,
+    #: ``strBegins(param, "IMAGE_")``)
+    prefix: bool = False
 
 
 @dataclass(slots=True)

@@ -43,7 +43,8 @@ it names the existing block.
   uLoadWatch, uMACView, uMayFinish, uQueryDB, uXMS), those that read their
   block only when there is one (uMAC, uPokeDB), or read none (uFunctionVis),
   pLogger (without a block it logs every variable), MOOSDB and the uMS scope
-  (top-of-file settings only) and pAntler (it reads the ANTLER block); an app
+  (top-of-file settings only), pAntler (it reads the ANTLER block), and core MOOS's
+  tools that read no mission file (the uPlayback and uIndexedPlayback GUIs, uPoke); an app
   linted in the same run needs its block unless its C++ declares it optional,
   or it is a plain CMOOSApp whose start-up compares keys with the `foo` and
   `bar` placeholders of MOOS-IvP's GenMOOSApp template and nothing else (core

@@ -544,7 +544,8 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     dynamic = any(p.name.dynamic and not p.name.prefix for p in app.publications)
     info = AppInfo(
         name=name,
-        params={c.text for c in app.config_params} | _base_keys(),
+        params={c.text for c in app.config_params if not c.prefix} | _base_keys(),
+        param_prefixes={c.text for c in app.config_params if c.prefix},
         # the list is the whole parser: the app reports other keys, or reads none of its
         # own (the template's loop, left as generated, silently drops every line)
         strict=not DELEGATE.search(text) and (bool(_UNHANDLED.search(text)) or _template_only(app)),
