@@ -77,7 +77,22 @@ _GROUPS = itertools.count(1)
 
 _MACRO_DEFAULT = re.compile(r"([$%])\(([^()=:$%]+?)(:?=)([^()]*)\)")
 _MACRO_REF = re.compile(r"[$%]\(([^()]*)\)")
-_TAG_LINE = re.compile(r"^\s*<tag>\s*<([^<>]*)>")
+
+
+def tag_of(raw: str) -> str | None:
+    """The section a ``<tag>`` line opens (``<tag><iM300>`` and ``<tag> iM300`` alike), or
+    None for any other line. nsplug reads every line that starts with ``<tag>`` so, and
+    never writes it out (Expander.cpp ``strBegins(line_orig, "<tag>")``, then
+    ``stripChevrons``)."""
+    text = raw.strip()
+    if not text.startswith("<tag>"):
+        return None
+    tag = text[5:].strip()
+    if len(tag) >= 2 and tag[0] == "<" and tag[-1] == ">":
+        tag = tag[1:-1]
+    return tag
+
+
 _INCLUDE_TAG = re.compile(r"^(.*?)\s*<([^<>]+)>\s*$")
 _DIRECTIVE_LIKE = re.compile(r"^\s*(#+\s*)([A-Za-z]+)")
 
@@ -598,9 +613,9 @@ class Preprocessor:
                 self._over_budget(exp, here, f"more than {MAX_EXPANDED_LINES:,} lines")
                 return
 
-            tag_match = _TAG_LINE.match(raw) if "<tag>" in raw else None
-            if tag_match:  # <tag> lines are never written out
-                work.in_tag = tag_match.group(1).strip() == work.tag
+            opened = tag_of(raw) if "<tag>" in raw else None
+            if opened is not None:  # <tag> lines are never written out
+                work.in_tag = opened == work.tag
                 continue
             if work.tag is not None:
                 # Inside a tagged section nsplug skips lines starting with '#'.
@@ -907,9 +922,7 @@ class Preprocessor:
             exp.incomplete = True
             self._problem(exp, "include-not-found", here, f"included file `{target}` {src.message}")
             return None
-        if tag is not None and not any(
-            (m := _TAG_LINE.match(ln)) and m.group(1).strip() == tag for ln in src.lines
-        ):
+        if tag is not None and not any("<tag>" in ln and tag_of(ln) == tag for ln in src.lines):
             self._problem(
                 exp,
                 "unknown-include-tag",

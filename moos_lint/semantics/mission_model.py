@@ -422,6 +422,12 @@ class _Builder:
         m = self.m
         seen: set[str] = set()
         for run in m.moos.runs:
+            if run.name and has_macro(run.name) and not has_macro(run.binary):
+                # `Run = pMOOSBridge ~ pMOOSBridge_$(VNAME)`: whatever its name, the process
+                # brings in what other communities send
+                binary = run.program.strip()
+                if binary.lower() in INBOUND_APPS:
+                    m.inbound.append(Process(run.name, binary, run, None, self.cat.app(binary)))
             if not run.name or has_macro(run.name) or has_macro(run.binary):
                 continue
             binary = run.program.strip()

@@ -21,7 +21,7 @@ from moos_lint.commands.rule_page import render_rule_page
 from moos_lint.core.registry import all_rules, get_rule, is_valid_selector, matches
 from moos_lint.files.diagnostics import Severity, Span
 from moos_lint.files.source import split_lines
-from moos_lint.frontends.nsplug import Preprocessor
+from moos_lint.frontends.nsplug import Preprocessor, tag_of
 
 SOURCE = "moos-lint"
 _SEVERITY = {
@@ -35,7 +35,6 @@ _SUPPRESSION = re.compile(
 _IGNORE = re.compile(r"//\s*moos-lint:\s*ignore\s*\[(?P<codes>[^\]]*)\]")
 _INCLUDE = re.compile(r"^\s*#include\s+(?P<rest>.*?)\s*$")
 _INCLUDE_TAG = re.compile(r"^(.*?)\s*<([^<>]+)>\s*$")
-_TAG_LINE = re.compile(r"^\s*<tag>\s*<([^<>]*)>")
 _KEY_VALUE = re.compile(r"^(?P<indent>\s*)(?P<key>[^=\s][^=]*?)\s*=\s*(?P<value>.*?)\s*$")
 _HEADER = re.compile(r"^\s*(?P<what>ProcessConfig|Behavior)\s*=\s*(?P<name>[^\s{]+)", re.I)
 _RUN = re.compile(r"^\s*Run\s*=\s*(?P<binary>[^\s@~]+)[^~]*(?:~\s*(?P<alias>\S+))?", re.I)
@@ -462,8 +461,7 @@ def definition(
         row = 0
         if tag is not None:
             for idx, ln in enumerate(lines_of(found)):
-                tm = _TAG_LINE.match(ln)
-                if tm and tm.group(1).strip() == tag:
+                if "<tag>" in ln and tag_of(ln) == tag:
                     row = idx
                     break
         return _location(found, row)

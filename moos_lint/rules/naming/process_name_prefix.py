@@ -16,10 +16,12 @@ every name a process runs under:
 
 `Run` lines with `InhibitMOOSParams = true` are skipped: pAntler passes that
 program neither the mission file nor a MOOS name, as it does for a program that
-is no MOOS client (`gdb`, an LCM program). The name of a shell script
-(`Run = ./inhouse-dp.sh`) is not judged either: a shell script is no MOOS client
-but a wrapper, and what it starts connects under a name of its own (its `~`
-alias, when it has one, is still judged: pAntler passes it on as the MOOS name).
+is no MOOS client (`gdb`, an LCM program). The name of a script
+(`Run = ./inhouse-dp.sh`, `Run = shoreside.py`) is not judged either: a shell script
+is no MOOS client but a wrapper, and what it starts connects under a name of its own;
+a Python (or Perl, Ruby, ...) client connects under the name its code gives
+(pymoos's `comms.run(host, port, "name")`), not its file's. Its `~` alias, when it
+has one, is still judged: pAntler passes it on as the MOOS name.
 An alias equal to its program's name is judged once, as the program.
 
 The MOOS infrastructure is exempt, in any case: `MOOSDB`, `ANTLER` /
@@ -87,7 +89,7 @@ Rename the program, or choose an alias that keeps the program's prefix
 from __future__ import annotations
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.suffixes import is_shell_script
+from moos_lint.files.suffixes import is_shell_script, script_stem
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -125,7 +127,9 @@ def check(ctx):
         launched.add(run.name.lower())
         if run.inhibits_moos_params:
             continue  # no MOOS client (`gdb`, an LCM program): pAntler passes it no MOOS name
-        shell = is_shell_script(program)  # a wrapper: what it starts connects, not it
+        # a wrapper (what it starts connects, not it), or a script that connects under a
+        # name its own code gives (pymoos's `comms.run(host, port, "name")`)
+        shell = is_shell_script(program) or script_stem(program) is not None
         info = cat.app(program) if program else None
         if info is not None and info.own:
             pass  # an app of the linted C++: reported once, where it is defined
