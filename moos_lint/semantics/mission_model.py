@@ -145,6 +145,27 @@ class MissionModel:
                 found.extend(pubs)
         return found
 
+    def built_from_config(self, var: str) -> Process | None:
+        """The launched process that most likely posts ``var`` under a name built from a
+        value of its block: pMarinePIDV22's ``output_suffix = _PID`` posts
+        ``DESIRED_RUDDER_PID`` (``"DESIRED_RUDDER" + m_output_suffix``), a simulator the
+        catalogue does not know with ``PREFIX = NAV`` posts ``NAV_DEPTH``. For an app the
+        catalogue knows, the rest of the name must be one it publishes, and the app must
+        build names at run time; for an unknown app, the value must be a whole word at
+        either end of the name."""
+        for proc in self.processes:
+            app = proc.app
+            if proc.block is None or (app is not None and not app.publishes_dynamic):
+                continue
+            for param in proc.block.params:
+                value = param.value.strip()
+                if len(value.strip("_")) < 2 or not _CONFIG_WORD.fullmatch(value):
+                    continue
+                for rest in _rests(var, value):
+                    if app is None or rest in app.publishes:
+                        return proc
+        return None
+
     def _dynamic(self) -> tuple[list[tuple[AppInfo, list[int]]], list[tuple[str, list]]]:
         """The processes grouped by app, and the wildcard publications: what a name no one
         publishes exactly is matched against (each app once, however many processes run
@@ -260,6 +281,20 @@ def _poked(scripts: tuple[tuple[str, str], ...]) -> dict[str, str]:
 
 
 _CONFIG_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_CONFIG_WORD = re.compile(r"[A-Za-z0-9_]+")
+
+
+def _rests(var: str, value: str) -> list[str]:
+    """What is left of ``var`` once the configuration ``value`` is taken off either end,
+    where it stands as a whole word (``DESIRED_RUDDER`` of ``DESIRED_RUDDER_PID`` and
+    ``_PID``; ``_DEPTH`` of ``NAV_DEPTH`` and ``NAV``)."""
+    out = []
+    if len(var) > len(value):
+        if var.endswith(value) and (value[0] == "_" or var[-len(value) - 1] == "_"):
+            out.append(var[: -len(value)].rstrip("_"))
+        if var.startswith(value) and (value[-1] == "_" or var[len(value)] == "_"):
+            out.append(var[len(value) :].lstrip("_"))
+    return [r for r in out if r]
 
 
 @dataclass(frozen=True, slots=True)

@@ -79,7 +79,13 @@ MOOS-IvP caveats, deliberately not reported:
   by its initials or its name (`UFRM_WINNER` when the mission runs
   uFldRescueMgr from another tree, `ODOMETRY_DIST` when it runs pOdometry):
   MOOS-IvP apps name their own variables so (uSimMarine `USM_*`,
-  uFldShoreBroker `UFSB_*`), so that app most likely posts it.
+  uFldShoreBroker `UFSB_*`), so that app most likely posts it;
+- a name a launched app builds from a value of its block: pMarinePIDV22's
+  `output_suffix = _PID` makes `DESIRED_RUDDER_PID` of `DESIRED_RUDDER`
+  (`"DESIRED_RUDDER" + m_output_suffix`), when the app builds names at run time
+  and the rest of the name is one it publishes; for an app the catalogue does
+  not know, a value that is a whole word at either end of the name
+  (`PREFIX = NAV` and `NAV_DEPTH`).
 
 A variable a person pokes by hand (uPokeDB from a terminal, uMAC) is reported
 when nothing beside the mission shows the poke: write the step in a script or
@@ -165,6 +171,8 @@ def check(ctx):
         seen.add(key)
         if _named_after(name, unknown_prefixes):
             continue  # named after an app the catalogue does not know: likely its own
+        if model.built_from_config(name) is not None:
+            continue  # a name an app builds from a value of its block (`output_suffix`)
         # last, as it may walk the project's missions (once per run): only for a finding
         if routes is None:
             routes = _listened(model)
