@@ -31,7 +31,10 @@ posts; two MOOS-IvP missions (`m9_indigo/hotel.moos`,
 `s9_indigo/indigo.moos`) do this. Run-time placeholders that the app
 expands itself (`$[OWNSHIP]`, `$V`, `$UP_V1`) are left out of the check, and a
 name holding an nsplug macro (`$(X)`, `%(X)`) is skipped. Values of
-parameters moos-lint does not know are not looked at.
+parameters moos-lint does not know are not looked at. A name an app builds
+from an upper-case prefix and a vehicle's name as given (`ACK_MESSAGE_abe`:
+uFldNodeComms posts `"ACK_MESSAGE_" + dest_name`, a prefix the catalogue
+lists) is not reported: the vehicle's name decides its case, not the writer.
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
 more than 5000 variable names they configure. Two kinds of exceptions
@@ -122,6 +125,8 @@ def check(ctx):
             continue  # a condition written as a flag: invalid-parameter-value says so
         if any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
             continue
+        if _built_by_app(ctx, bare):
+            continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
         where = f"{ref.app} `{ref.param}`"
         if not ref.wildcard and _UPPER_WILD.fullmatch(bare):
             message = (
@@ -144,6 +149,20 @@ def check(ctx):
         yield ctx.report(ref.span, message, line=ref.line, subject=subject)
     if ctx.moos is not None:
         yield from _configured(ctx, allow, seen)
+
+
+def _built_by_app(ctx, name: str) -> bool:
+    """Whether ``name`` is an upper-case prefix that an app posts names under, followed
+    by the rest as the app writes it: uFldNodeComms posts ``"ACK_MESSAGE_" + dest_name``,
+    with the vehicle's name as given (``ACK_MESSAGE_abe``), and no one can write it
+    otherwise."""
+    from moos_lint.semantics.catalogue import catalogue_for
+
+    prefixes = {p for app in catalogue_for(ctx.run).apps.values() for p in app.publish_prefixes}
+    for i, ch in enumerate(name):
+        if ch == "_" and name[: i + 1] in prefixes and _UPPER.fullmatch(name[:i]):
+            return True
+    return False
 
 
 def _posted_in_upper_case(ctx, name: str) -> str:
