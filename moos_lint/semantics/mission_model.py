@@ -153,18 +153,43 @@ class MissionModel:
         catalogue knows, the rest of the name must be one it publishes, and the app must
         build names at run time; for an unknown app, the value must be a whole word at
         either end of the name."""
+        values = self._config_values()
+        if not values:
+            return None
+        for i, ch in enumerate(var):
+            if ch != "_" or i == 0 or i == len(var) - 1:
+                continue
+            # the value at the end (`_PID` or `PID`) or at the start (`NAV` or `NAV_`)
+            for value, rest in (
+                (var[i:], var[:i]),
+                (var[i + 1 :], var[:i]),
+                (var[:i], var[i + 1 :]),
+                (var[: i + 1], var[i + 1 :]),
+            ):
+                for proc in values.get(value, ()):
+                    if proc.app is None or rest in proc.app.publishes:
+                        return proc
+        return None
+
+    def _config_values(self) -> dict[str, list[Process]]:
+        """The word values of the blocks of the processes that may build names from them
+        (unknown apps, and apps that build names at run time), once per model."""
+        kept = self.__dict__.get("_config_values_kept")
+        if kept is not None and kept[0] == len(self.processes):
+            return kept[1]
+        found: dict[str, list[Process]] = {}
         for proc in self.processes:
             app = proc.app
             if proc.block is None or (app is not None and not app.publishes_dynamic):
                 continue
             for param in proc.block.params:
                 value = param.value.strip()
-                if len(value.strip("_")) < 2 or not _CONFIG_WORD.fullmatch(value):
-                    continue
-                for rest in _rests(var, value):
-                    if app is None or rest in app.publishes:
-                        return proc
-        return None
+                if len(value.strip("_")) >= 2 and _CONFIG_WORD.fullmatch(value):
+                    procs = found.setdefault(value, [])
+                    if not procs or procs[-1] is not proc:  # (a value twice in one block)
+                        procs.append(proc)
+        self.__dict__["_config_values_kept"] = (len(self.processes), found)
+        return found
 
     def _dynamic(self) -> tuple[list[tuple[AppInfo, list[int]]], list[tuple[str, list]]]:
         """The processes grouped by app, and the wildcard publications: what a name no one
@@ -282,19 +307,6 @@ def _poked(scripts: tuple[tuple[str, str], ...]) -> dict[str, str]:
 
 _CONFIG_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _CONFIG_WORD = re.compile(r"[A-Za-z0-9_]+")
-
-
-def _rests(var: str, value: str) -> list[str]:
-    """What is left of ``var`` once the configuration ``value`` is taken off either end,
-    where it stands as a whole word (``DESIRED_RUDDER`` of ``DESIRED_RUDDER_PID`` and
-    ``_PID``; ``_DEPTH`` of ``NAV_DEPTH`` and ``NAV``)."""
-    out = []
-    if len(var) > len(value):
-        if var.endswith(value) and (value[0] == "_" or var[-len(value) - 1] == "_"):
-            out.append(var[: -len(value)].rstrip("_"))
-        if var.startswith(value) and (value[-1] == "_" or var[len(value)] == "_"):
-            out.append(var[len(value) :].lstrip("_"))
-    return [r for r in out if r]
 
 
 @dataclass(frozen=True, slots=True)

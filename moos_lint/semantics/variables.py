@@ -271,6 +271,24 @@ def arrow(sep: str) -> Syntax:
     return read
 
 
+def custom_key() -> Syntax:
+    """iRemote / iRemoteLite ``CustomKey = 9 : VAR @ "value"``: the key posts VAR
+    (MOOSRemoteLite.cpp:789-807, ``MOOSChomp(sVal, ":")`` then ``MOOSChomp(sVal, "@")``)."""
+
+    def read(piece: Piece) -> Iterator[tuple[Piece, str]]:
+        parts = _bite(piece, ":")
+        if parts is None:
+            return
+        name = parts[1]
+        at = name[0].find("@")
+        if at >= 0:
+            name = _trim((name[0][:at], name[1]))
+        if _is_name(name[0]):
+            yield name, PUBLISH
+
+    return read
+
+
 def term_command() -> Syntax:
     """uTermCommand ``cmd = KEY --> VAR --> value``."""
 
@@ -471,6 +489,8 @@ APP_PARAMS: dict[str, dict[str, tuple[Syntax, bool]]] = {
     },
     "ucommand": {"cmd": (keyed({"var": PUBLISH}), False)},
     "utermcommand": {"cmd": (term_command(), False)},
+    "iremote": {"customkey": (custom_key(), False)},
+    "iremotelite": {"customkey": (custom_key(), False)},
     "upokedb": {"poke": (_FLAG, False)},
     "uplotviewer": {"plot_var": (keyed({"var": SUBSCRIBE}), False)},
     "ufldscope": {"scope": (keyed({"var": SUBSCRIBE}), False)},

@@ -14,7 +14,7 @@ variable that a logic condition waits for: behavior `condition` and
   events, pMarineViewer buttons and actions, pEchoVar targets and flips, the
   `*_flag` VarDataPairs of the apps that read them (pObstacleMgr
   `new_obs_flag = OBM_NEW_GIVEN=true`), share and
-  bridge routes, ...);
+  bridge routes, iRemote's custom keys (`CustomKey = 9 : SURFACING @ "true"`), ...);
 - a node message (`NODE_MESSAGE_LOCAL = src_node=alpha,dest_node=all,
   var_name=CHASER,string_val=alpha`) posted in a mission that launches
   uFldMessageHandler (the handler posts `CHASER` on the vehicle that
