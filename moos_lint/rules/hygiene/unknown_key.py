@@ -17,8 +17,11 @@ Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
 Known ANTLER keys: `Run`, `MSBetweenLaunches`, `ExecutablePath`,
 `GentleKill`, `EnableDistributed`, `KillOnDBDisconnect`, and the named lists
 that a Run line refers to with `ExtraProcessParams=NAME`, `XConfig=NAME` or
-`Win32Config=NAME`, and numbered console configurations (`4 = -geometry,...`,
-which old missions keep for `XConfig=4` lines, some of them commented out).
+`Win32Config=NAME`, and console configurations, numbered or named
+(`4 = -geometry,...`, `pSPConfig = -geometry,...`: any key whose value starts with
+`-`), which old missions keep for `XConfig=` lines, some of them commented out.
+A misspelt ANTLER key is respelt by `--fix` only when the block does not set the
+right name already.
 The app-level keys every MOOS app reads from its own
 block (`AppTick`, `CommsTick`, `MaxAppTick`, `IterateMode`, `SortMailByTime`,
 `CatchCommandMessages`, the `moos_*` flags, and AppCasting's `COMMS_POLICY`,
@@ -184,10 +187,15 @@ def check(ctx):
             for opt in _LIST_OPTIONS:
                 if run.options.get(opt):
                     known.append(run.options[opt])
+        present = frozenset(_norm(p.key) for p in block.params)
         for p in block.params:
             if _norm(p.key).isdigit():
                 continue  # a numbered console configuration (`4 = -geometry,...`, XConfig=4)
-            yield from _judge(ctx, p, known, "ANTLER-block", r007)
+            if p.value.strip().startswith("-"):
+                # a console configuration (`pSPConfig = -geometry,80x20+0+0,-bg,green`) or
+                # a list of arguments, kept for a Run line that names it (or once did)
+                continue
+            yield from _judge(ctx, p, known, "ANTLER-block", r007, present=present)
 
 
 def _judge(
@@ -198,6 +206,7 @@ def _judge(
     r007: bool,
     block_keys: Sequence[str] = (),
     built: BuiltKeys | None = None,
+    present: frozenset[str] = frozenset(),
 ):
     key = p.key
     if _skip_key(key):
@@ -251,7 +260,8 @@ def _judge(
         f"`{n}`" + (" (a block key)" if n.lower() not in by_lower else "") for n in names
     )
     fix = None
-    if len(names) == 1 and names[0].lower() in by_lower:
+    # (no respelling onto a key the block already sets: that would make two of it)
+    if len(names) == 1 and names[0].lower() in by_lower and names[0].lower() not in present:
         span = p.key_span
         raw = p.line.raw
         if span.line == p.line.lineno and raw[span.col - 1 : span.end_col - 1] == key:
