@@ -153,7 +153,9 @@ class MissionModel:
         catalogue knows, the rest of the name must be one it publishes, and the app must
         build names at run time; for an unknown app, the value must be a whole word at
         either end of the name."""
-        values = self._config_values()
+        values, exact = self._config_values()
+        if var in exact:
+            return exact[var]
         if not values:
             return None
         for i, ch in enumerate(var):
@@ -171,16 +173,27 @@ class MissionModel:
                         return proc
         return None
 
-    def _config_values(self) -> dict[str, list[Process]]:
+    def _config_values(self) -> tuple[dict[str, list[Process]], dict[str, Process]]:
         """The word values of the blocks of the processes that may build names from them
-        (unknown apps, and apps that build names at run time), once per model."""
+        (unknown apps, and apps that build names at run time), and the names the apps'
+        own C++ publishes under a key of their block (``PREFIX = NAV`` of
+        ``Notify(m_sim_prefix + "_DEPTH", ...)``: ``NAV_DEPTH``), once per model."""
         kept = self.__dict__.get("_config_values_kept")
         if kept is not None and kept[0] == len(self.processes):
             return kept[1]
         found: dict[str, list[Process]] = {}
+        exact: dict[str, Process] = {}
         for proc in self.processes:
             app = proc.app
-            if proc.block is None or (app is not None and not app.publishes_dynamic):
+            if proc.block is None:
+                continue
+            if app is not None and app.published_keys:
+                for param in proc.block.params:
+                    value = param.value.strip()
+                    if _CONFIG_NAME.fullmatch(value):
+                        for pub in app.published_keys.get(param.lkey, ()):
+                            exact.setdefault(value + pub.suffix, proc)
+            if app is not None and not app.publishes_dynamic:
                 continue
             for param in proc.block.params:
                 value = param.value.strip()
@@ -188,8 +201,8 @@ class MissionModel:
                     procs = found.setdefault(value, [])
                     if not procs or procs[-1] is not proc:  # (a value twice in one block)
                         procs.append(proc)
-        self.__dict__["_config_values_kept"] = (len(self.processes), found)
-        return found
+        self.__dict__["_config_values_kept"] = (len(self.processes), (found, exact))
+        return found, exact
 
     def _dynamic(self) -> tuple[list[tuple[AppInfo, list[int]]], list[tuple[str, list]]]:
         """The processes grouped by app, and the wildcard publications: what a name no one

@@ -85,7 +85,9 @@ MOOS-IvP caveats, deliberately not reported:
   (`"DESIRED_RUDDER" + m_output_suffix`), when the app builds names at run time
   and the rest of the name is one it publishes; for an app the catalogue does
   not know, a value that is a whole word at either end of the name
-  (`PREFIX = NAV` and `NAV_DEPTH`).
+  (`PREFIX = NAV` and `NAV_DEPTH`); for an app of the linted C++, the name it
+  publishes under a key of its block (`Notify(m_sim_prefix + "_DEPTH", ...)`
+  with `m_sim_prefix` read from `PREFIX`).
 
 A variable a person pokes by hand (uPokeDB from a terminal, uMAC) is reported
 when nothing beside the mission shows the poke: write the step in a script or
