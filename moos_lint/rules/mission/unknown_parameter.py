@@ -10,7 +10,9 @@ that respells the key when exactly one known parameter is close.
 
 The catalogue holds the apps whose C++ is linted in the same run (the keys
 their start-up compares with a literal, a `#define` or a member set to a
-literal, `param == m_depth_key`), the
+literal, `param == m_depth_key`, and the keys it reads by how they start:
+`param.find("IMAGE_") == 0`, `compare(0, 6, "SONAR_") == 0`, `substr(0, 5) ==
+"LAMP_"`, `starts_with`, `strBegins`), the
 catalogue files named in `catalogues = [...]`, and the stock MOOS and
 MOOS-IvP apps (generated from their sources; see `moos_lint/semantics/catalogue/`).
 Every app also accepts the keys its base classes read (`AppTick`,

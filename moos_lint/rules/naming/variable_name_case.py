@@ -93,6 +93,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.variables import bare_name, unit_variables
 
 _UPPER = re.compile(r"[A-Z0-9_]*")
@@ -158,7 +159,13 @@ def _built_by_app(ctx, name: str) -> bool:
     otherwise."""
     from moos_lint.semantics.catalogue import catalogue_for
 
-    prefixes = {p for app in catalogue_for(ctx.run).apps.values() for p in app.publish_prefixes}
+    prefixes = per_run(
+        ctx.run,
+        "publish-prefixes",
+        lambda _units: {
+            p for a in catalogue_for(ctx.run).apps.values() for p in a.publish_prefixes
+        },
+    )
     for i, ch in enumerate(name):
         if ch == "_" and name[: i + 1] in prefixes and _UPPER.fullmatch(name[:i]):
             return True
