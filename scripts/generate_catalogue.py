@@ -46,6 +46,12 @@ _POST_SUFFIXED = re.compile(
     r"\+\s*m_\w*suffix\s*\)",
     re.MULTILINE,
 )
+#: a literal prefix and a run-time rest: ``postMessage(("RANGE_AVD_" + m_contact), ...)``
+#: posts under ``RANGE_AVD_`` with the contact's name as given (BHV_AvoidCollision.cpp:522)
+_POST_PREFIX = re.compile(
+    r"\bpost(?:Int|Bool|Repeatable|Event)?Message\s*\(\s*\(?\s*\"([A-Z][A-Z0-9_]*_)\"\s*\+\s*(?!m_\w*suffix\b)",
+    re.MULTILINE,
+)
 #: a VarDataPair an app builds from a literal name is one it posts: pMarineViewer's
 #: connection posts and default mouse-click posts (PMV_MOOSApp.cpp:51-54, PMV_Viewer.cpp:92-93)
 _PAIR = re.compile(r"\bVarDataPair\s+\w+\s*\(\s*\"([A-Za-z0-9_]+)\"")
@@ -331,6 +337,17 @@ BEHAVIOR_CORRECTIONS: dict[str, dict] = {
         },
         "why": "bias returns false unless the lower-cased value is right or left",
     },
+}
+BEHAVIOR_CORRECTIONS["BHV_Timer"] = {
+    "param_forms": {},
+    # names the behavior posts under: a parameter's value (else its default), and the
+    # value of ``post_suffix``'s parameter joined with `_`
+    "post_params": {"var_status_idle": "TIMER_IDLE", "var_status_running": "TIMER_RUNNING"},
+    "post_suffix": "status_suffix",
+    "why": "posts m_var_status_idle + m_var_status_suffix and m_var_status_running + "
+    "m_var_status_suffix; var_status_idle and var_status_running set the names (defaults "
+    "TIMER_IDLE, TIMER_RUNNING), status_suffix the suffix, `_` put before it when missing "
+    "(ivp/src/lib_behaviors-marine/BHV_Timer.cpp:36-38, 46-55, 68-72)",
 }
 BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["param_forms"].update(
     {
@@ -821,6 +838,7 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
                 params |= class_params[m_type.group(1)]
                 delegated.append(m_type.group(1))
         posts = set(_POST.findall(text)) | set(_POST_SUFFIXED.findall(text))
+        post_prefixes = set(_POST_PREFIX.findall(text))
         reads: set[str] = set()
         for lit in _INFO_VARS.findall(text):
             reads.update(v.strip() for v in lit.split(",") if _NAME.match(v.strip()))
@@ -835,6 +853,7 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             "bases": chain[1:],
             "params": sorted(p for p in params if _param_like(p)),
             "posts": sorted(posts),
+            "post_prefixes": sorted(post_prefixes),
             "reads": sorted(reads),
             "params_from_members": delegated,
             "param_forms": dict(sorted(forms.items())),
@@ -842,6 +861,9 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
         bhv_corr = BEHAVIOR_CORRECTIONS.get(cls)
         if bhv_corr:
             entry["param_forms"] = dict(sorted({**forms, **bhv_corr["param_forms"]}.items()))
+            for key in ("post_params", "post_suffix"):
+                if key in bhv_corr:
+                    entry[key] = bhv_corr[key]
             entry["corrected"] = [bhv_corr["why"]]
         behaviors[cls] = entry
     return {

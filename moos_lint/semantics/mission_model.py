@@ -50,8 +50,21 @@ from moos_lint.files.launch import launch_folders, notes, project_folder, shell_
 from moos_lint.frontends.nsplug import Expansion, Line, derived, parsed
 from moos_lint.frontends.parsers.bhv import parse_bhv
 from moos_lint.frontends.parsers.moos import parse_moos
-from moos_lint.frontends.parsers.nodes import BehaviorFile, Block, MoosFile, RunLine, has_macro
-from moos_lint.semantics.catalogue import AppInfo, Catalogue, PublishedKey, catalogue_for
+from moos_lint.frontends.parsers.nodes import (
+    Behavior,
+    BehaviorFile,
+    Block,
+    MoosFile,
+    RunLine,
+    has_macro,
+)
+from moos_lint.semantics.catalogue import (
+    AppInfo,
+    BehaviorInfo,
+    Catalogue,
+    PublishedKey,
+    catalogue_for,
+)
 from moos_lint.semantics.run_state import RunView
 from moos_lint.semantics.variables import (
     PUBLISH,
@@ -567,9 +580,13 @@ class _Builder:
                 for bhv in bf.behaviors:
                     info = self.cat.behavior(bhv.kind)
                     if info is not None:
+                        who = f"{proc.name}: {bhv.kind}"
                         for var in info.posts:
-                            who = f"{proc.name}: {bhv.kind}"
                             self.add(var, who, "behavior", process=proc.name)
+                        for pre in info.post_prefixes:  # "RANGE_AVD_" + the contact's name
+                            self.add(pre + "*", who, "behavior", process=proc.name)
+                        for var, line in _configured_posts(bhv, info):
+                            self.add(var, who, "behavior", line, proc.name)
 
     def _parse_bhv(self, path: str) -> BehaviorFile | None:
         exp = self.run.preprocessor.expand(path)
@@ -594,6 +611,26 @@ class _Builder:
             self.m.sibling_missions.append(cand)
             for key, pubs in _external_publishers(self.run, cand, moos).items():
                 self._put_all(key, pubs, share=True)
+
+
+def _configured_posts(bhv: Behavior, info: BehaviorInfo) -> list[tuple[str, Line | None]]:
+    """The names a behavior posts under that its parameters make: BHV_Timer's
+    ``var_status_idle = TIMER_IDLE_SECONDS`` with ``status_suffix = base`` posts
+    ``TIMER_IDLE_SECONDS_base``."""
+    if not info.post_params:
+        return []
+    suffix = ""
+    for p in bhv.get(info.post_suffix) if info.post_suffix else ():
+        value = p.value.strip()
+        suffix = value if not value or value.startswith("_") else "_" + value
+    found: list[tuple[str, Line | None]] = []
+    for key, default in info.post_params.items():
+        given = bhv.get(key)
+        if given:
+            found.extend((p.value.strip() + suffix, p.line) for p in given if p.value.strip())
+        else:
+            found.append((default + suffix, None))
+    return found
 
 
 def _missions_beside(run: RunView, folder: str, generated: bool = False) -> list[str]:

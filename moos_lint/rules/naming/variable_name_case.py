@@ -33,7 +33,8 @@ expands itself (`$[OWNSHIP]`, `$V`, `$UP_V1`) are left out of the check, and a
 name holding an nsplug macro (`$(X)`, `%(X)`) is skipped. Values of
 parameters moos-lint does not know are not looked at. A name an app builds
 from an upper-case prefix and a vehicle's name as given (`ACK_MESSAGE_abe`:
-uFldNodeComms posts `"ACK_MESSAGE_" + dest_name`, a prefix the catalogue
+uFldNodeComms posts `"ACK_MESSAGE_" + dest_name`; `RANGE_AVD_henry`:
+BHV_AvoidCollision posts `"RANGE_AVD_" + m_contact`; prefixes the catalogue
 lists) is not reported: the vehicle's name decides its case, not the writer.
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
@@ -153,19 +154,19 @@ def check(ctx):
 
 
 def _built_by_app(ctx, name: str) -> bool:
-    """Whether ``name`` is an upper-case prefix that an app posts names under, followed
-    by the rest as the app writes it: uFldNodeComms posts ``"ACK_MESSAGE_" + dest_name``,
-    with the vehicle's name as given (``ACK_MESSAGE_abe``), and no one can write it
-    otherwise."""
+    """Whether ``name`` is an upper-case prefix that an app or a behavior posts names
+    under, followed by the rest as it writes it: uFldNodeComms posts
+    ``"ACK_MESSAGE_" + dest_name`` with the vehicle's name as given (``ACK_MESSAGE_abe``),
+    BHV_AvoidCollision ``"RANGE_AVD_" + m_contact`` with the contact's
+    (``RANGE_AVD_henry``), and no one can write them otherwise."""
     from moos_lint.semantics.catalogue import catalogue_for
 
-    prefixes = per_run(
-        ctx.run,
-        "publish-prefixes",
-        lambda _units: {
-            p for a in catalogue_for(ctx.run).apps.values() for p in a.publish_prefixes
-        },
-    )
+    def gather(_units) -> set[str]:
+        cat = catalogue_for(ctx.run)
+        found = {p for a in cat.apps.values() for p in a.publish_prefixes}
+        return found | {p for b in cat.behaviors.values() for p in b.post_prefixes}
+
+    prefixes = per_run(ctx.run, "publish-prefixes", gather)
     for i, ch in enumerate(name):
         if ch == "_" and name[: i + 1] in prefixes and _UPPER.fullmatch(name[:i]):
             return True

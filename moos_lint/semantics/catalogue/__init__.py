@@ -134,7 +134,15 @@ class BehaviorInfo:
     name: str
     params: set[str] = field(default_factory=set)  # lower case, generic keys included
     posts: set[str] = field(default_factory=set)
+    #: prefixes it posts under with a run-time rest: ``"RANGE_AVD_" + m_contact``
+    post_prefixes: set[str] = field(default_factory=set)
     reads: set[str] = field(default_factory=set)  # ``addInfoVars``: what the behavior reads
+    #: parameters naming a variable it posts (lower case) -> the name it posts without
+    #: them: BHV_Timer's ``var_status_idle`` (TIMER_IDLE)
+    post_params: dict[str, str] = field(default_factory=dict)
+    #: the parameter whose value, joined with `_`, ends each of those names (BHV_Timer's
+    #: ``status_suffix``), or ""
+    post_suffix: str = ""
     provenance: str = ""
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
 
@@ -333,7 +341,10 @@ def stock() -> Catalogue:
                 name=name,
                 params={p.lower() for p in d.get("params", [])} | extra,
                 posts=set(d.get("posts", [])),
+                post_prefixes=set(d.get("post_prefixes", [])),
                 reads=set(d.get("reads", [])),
+                post_params={k.lower(): v for k, v in d.get("post_params", {}).items()},
+                post_suffix=d.get("post_suffix", "").lower(),
                 provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}",
                 forms=_forms(d),
             )
