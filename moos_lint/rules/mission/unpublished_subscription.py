@@ -21,7 +21,13 @@ variable that a logic condition waits for: behavior `condition` and
   receives it), or in another mission of its folder, whatever the receiving
   mission runs (the check stays quiet rather than guess where it goes);
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
-  `set MODE` variables, the variables behaviors post;
+  `set MODE` variables, the variables behaviors post, under names of their
+  source (`AVD_STATUS`), names their parameters make (BHV_Timer's
+  `var_status_idle` with its `status_suffix`: `TIMER_IDLE_SECONDS_BASE`) and
+  prefixes followed by a contact's name (BHV_AvoidCollision's `RANGE_AVD_`);
+- a flag given in an update string of the mission or of a mission beside it
+  (`button_two = STOP # LEG_UPDATE = midflag=FULL_STOPPING=true`: the behavior
+  with `updates = LEG_UPDATE` takes the flag and posts `FULL_STOPPING`);
 - a `uPokeDB ... VAR=value` in a shell script beside the mission, or in a
   note beside it (`README`, `*.md`, `*.txt`: the steps a person runs by hand,
   `$ uPokeDB WPT_REQUEST=true`);
@@ -95,6 +101,8 @@ a README beside it, give the variable a publisher in the mission, or suppress
 the finding.
 """
 
+import re
+
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.spelling import misspelling_of
@@ -154,6 +162,7 @@ def check(ctx):
     unknown_prefixes = {pre for p in model.unknown_apps for pre in own_prefixes(p.binary)}
     seen: set[tuple[str, str, int]] = set()
     routes: set[str] | None = None  # the pShare routes the mission listens on
+    flagged: set[str] | None = None  # names update strings set flags to post
     for ref in model.waits:
         name = bare_name(ref.name)
         if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
@@ -175,6 +184,10 @@ def check(ctx):
             continue  # named after an app the catalogue does not know: likely its own
         if model.built_from_config(name) is not None:
             continue  # a name an app builds from a value of its block (`output_suffix`)
+        if flagged is None:
+            flagged = _flag_targets(ctx, model)
+        if name in flagged:
+            continue  # an update string sets a behavior's flag to post it
         # last, as it may walk the project's missions (once per run): only for a finding
         if routes is None:
             routes = _listened(model)
@@ -198,6 +211,28 @@ def check(ctx):
             )
         else:
             yield ctx.report(ref.span, msg, line=ref.line, subject=subject)
+
+
+#: a flag given in a behavior's update string: ``midflag=FULL_STOPPING=true``
+_FLAG_IN_UPDATE = re.compile(r"\b\w*flag\s*=\s*([A-Za-z0-9_]+)\s*=", re.IGNORECASE)
+
+
+def _flag_targets(ctx, model) -> set[str]:
+    """The names an update string of the mission or of a mission beside it sets a
+    behavior's flag to post: pMarineViewer's ``button_7 = STOP # LEG_UPDATE_ALL =
+    midflag=FULL_STOPPING=true`` reaches a behavior with ``updates = LEG_UPDATE``,
+    which then posts ``FULL_STOPPING``."""
+    found: set[str] = set()
+    expansions = [model.moos.expansion]
+    for path in model.sibling_missions:
+        exp = ctx.run.preprocessor.expand(path)
+        if exp.read_problem is None:
+            expansions.append(exp)
+    for exp in expansions:
+        for line in exp.lines:
+            if "flag" in line.text.lower():
+                found.update(_FLAG_IN_UPDATE.findall(line.text.split("//", 1)[0]))
+    return found
 
 
 def _listened(model) -> set[str]:
