@@ -1,7 +1,8 @@
 """The MOOS Conventions' process-name prefix (section 4.1), as one fact for every check.
 
 A process is named ``i``, ``p`` or ``u`` (instrument, pure process, utility)
-followed by an upper-case letter: ``iGPS``, ``pHelmIvP``, ``uXMS``. Both the
+followed by an upper-case letter or a digit: ``iGPS``, ``pHelmIvP``, ``uXMS``,
+``p2BTracker`` (a digit begins a word as well as a capital does). Both the
 mission check (Run lines, aliases, blocks) and the C++ check (an app's own
 name) word what is wrong with a name the same way, and say it truly: a name
 such as ``pmidca`` starts with a prefix letter and lacks only the upper-case
@@ -14,7 +15,7 @@ from __future__ import annotations
 import re
 
 #: a name that follows the convention
-PREFIXED = re.compile(r"^[ipu][A-Z]")
+PREFIXED = re.compile(r"^[ipu][A-Z0-9]")
 _WORD = re.compile(r"\w+", re.ASCII)
 #: the words for a name without any prefix
 NO_PREFIX = "does not start with `i`, `p` or `u` and an upper-case letter"

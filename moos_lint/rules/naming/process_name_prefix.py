@@ -2,8 +2,8 @@
 
 ## What it does
 Reports a MOOS process name that does not start with `i`, `p` or `u`
-followed by an upper-case letter (`iGPS`, `pHelmIvP`, `uXMS`). It looks at
-every name a process runs under:
+followed by an upper-case letter or a digit (`iGPS`, `pHelmIvP`, `uXMS`,
+`p2BTracker`). It looks at every name a process runs under:
 
 - the program of an Antler `Run` line (`Run = Logger @ ...`);
 - the `~` alias of a `Run` line (`Run = pShare @ NewConsole = false ~ ShareA`);
