@@ -19,11 +19,11 @@ the file was committed in the middle of a merge, and MOOS reads the lines of
 both sides, the later line of a key winning or both kept.
 
 A ruler (a line of only `=`, `-`, `*`, `_`, `~`, `+` or `.`, such as
-`=====`) and the title between the two rulers that open a file (the banner
-that MOOS-IvP apps' `--example` output began with, pasted into a file without
-its `//`) are decoration: MOOS drops them, and nothing was meant to be set
-there, so they are not reported. A line between two rulers further down is
-reported: it may be a key that lost its `=`.
+`=====`) and the title between the two rulers that open a file, or a plug
+it includes (the banner that MOOS-IvP apps' `--example` output began with,
+pasted into a file without its `//`), are decoration: MOOS drops them, and
+nothing was meant to be set there, so they are not reported. A line between
+two rulers further down is reported: it may be a key that lost its `=`.
 
 A `.moos` file that is a developer's notes rather than configuration (no
 ProcessConfig block, no key MOOS knows at the top of the file, included by no
@@ -63,10 +63,10 @@ def check(ctx):
     if _notes(ctx):
         return  # notes kept under a `.moos` name: no MOOS program reads the file
     opens, closes = _block_comments(ctx.moos.lines)
-    title = _banner_title(ctx.moos.lines) if ctx.moos.malformed else None
+    titles = _banner_titles(ctx.moos.lines) if ctx.moos.malformed else set()
     for line in ctx.moos.malformed:
         text = line.text.strip()
-        if line is title or _ruler(strip_comment(text).strip()):
+        if id(line) in titles or _ruler(strip_comment(text).strip()):
             continue  # decoration
         if id(line) in opens:
             msg = "MOOS has no `/* */` comments: it drops this line, but reads the lines "
@@ -101,16 +101,24 @@ def _ruler(text: str) -> bool:
     return len(text) >= 3 and set(text) <= _RULER
 
 
-def _banner_title(lines):
-    """The title of a banner that opens the file: a line without an ``=`` between two
-    rulers, the first of them the file's first line with text (a line between two rulers
-    further down may be a key that lost its ``=``: it is reported)."""
-    for i, line in enumerate(lines):
-        if strip_comment(line.text).strip():
-            texts = [strip_comment(x.text).strip() for x in lines[i : i + 3]]
-            banner = len(texts) == 3 and _ruler(texts[0]) and _ruler(texts[2])
-            return lines[i + 1] if banner and texts[1] and "=" not in texts[1] else None
-    return None
+def _banner_titles(lines) -> set[int]:
+    """The ids of the titles of the banners that open the file and each file it includes:
+    a line without an ``=`` between two rulers, the first of them the source file's first
+    line with text (a line between two rulers further down may be a key that lost its
+    ``=``: it is reported)."""
+    by_file: dict[tuple, list] = {}
+    for line in lines:
+        by_file.setdefault((line.path, line.chain), []).append(line)
+    found: set[int] = set()
+    for own in by_file.values():
+        for i, line in enumerate(own):
+            if strip_comment(line.text).strip():
+                texts = [strip_comment(x.text).strip() for x in own[i : i + 3]]
+                banner = len(texts) == 3 and _ruler(texts[0]) and _ruler(texts[2])
+                if banner and texts[1] and "=" not in texts[1]:
+                    found.add(id(own[i + 1]))
+                break
+    return found
 
 
 def _block_comments(lines) -> tuple[set[int], dict[int, bool]]:
