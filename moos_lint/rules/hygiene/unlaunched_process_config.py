@@ -69,6 +69,12 @@ MOOS-IvP caveats, deliberately not reported:
   configuration its own way, so its stem's block (`iSonar`) and any block
   whose name it quotes (`MoosReader(file, "iSonar")`) count as read. The
   script is read as text, never run;
+- a renamed copy whose source moos-lint cannot see: a launched script that is
+  not in the project (`Run = ./iPydyna2.py`) or a commented-out app that is
+  neither in the catalogue nor in the linted C++ (`//Run = iRemoteMod`) most
+  often connects under the name it was copied from, so a block named as the
+  start of its name, a word or number short (`iPydyna`, `iRemote`), is taken
+  as its;
 - a block that a process started another way launches: a `Run` line of an
   nspatch patch file (`*.xmoos`) beside the mission (`nspatch
   --stem=meta_shoreside.moos full-logging.xmoos` overwrites or augments the
@@ -144,8 +150,8 @@ def check(ctx):
         else:
             for name in reads[id(run)]:
                 by_name.setdefault(name.lower(), []).append(run)
-    commented: dict[str, str] | None = None
-    scripts: frozenset[str] | None = None  # what the launched scripts quote
+    commented: _Commented | None = None
+    scripts: _Words | None = None  # what the launched scripts quote
     patched: frozenset[str] | None = None  # what the nspatch patches beside it launch
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
@@ -164,8 +170,8 @@ def check(ctx):
             continue  # a shared fragment: another mission that includes it launches it
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
-        if block.lname in scripts:
-            continue  # a launched script names it: the script reads it its own way
+        if block.lname in scripts or _extends(block.lname, scripts.unread):
+            continue  # a launched script names it (or may): it reads it its own way
         if patched is None:
             folder = os.path.dirname(os.path.abspath(ctx.path))
             patched = patch_launches(folder) | script_launches(folder, ctx.path)
@@ -176,7 +182,7 @@ def check(ctx):
         if why is None:
             if commented is None:
                 commented = _commented_runs(moos, cat, ctx.path)
-            hint = commented.get(block.name.lower())
+            hint = commented.get(block.name.lower()) or _extends(block.lname, commented.unknown)
             if hint and not ctx.options.get("commented-runs"):
                 continue  # switched off on purpose
             why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
@@ -226,23 +232,56 @@ def _names_by_fragment(units, cat) -> dict[str, set[str]]:
     return found
 
 
-def _script_words(mission: str, moos) -> frozenset[str]:
+class _Words(frozenset):
+    """The lower-case words the launched scripts quote, and (``unread``) the stems of
+    those that cannot be read: such a script may connect under any name."""
+
+    unread: dict[str, str]
+
+
+def _script_words(mission: str, moos) -> _Words:
     """The lower-case words the scripts the mission launches quote (see
     :func:`moos_lint.files.launch.script_names`)."""
     words: set[str] = set()
+    unread: dict[str, str] = {}
     for run in moos.runs:
         if run.script_block is not None and not has_macro(run.binary):
-            words |= script_names(mission, run.binary) or frozenset()
-    return frozenset(words)
+            quoted = script_names(mission, run.binary)
+            if quoted is None:
+                unread[run.script_block.lower()] = run.binary
+            words |= quoted or frozenset()
+    found = _Words(words)
+    found.unread = unread
+    return found
 
 
-def _commented_runs(moos, cat, mission: str) -> dict[str, str]:
+def _extends(name: str, names) -> str | None:
+    """What ``names`` holds for a name that is ``name`` with a word or a number added
+    (``ipydyna2`` or ``iremotemod`` for block ``iremote``): a copy of an app or a script
+    kept under a new name most often connects under the old one, and moos-lint cannot
+    see which, its source not being linted."""
+    for other in names:
+        if len(other) > len(name) and other.startswith(name) and other[len(name)].isalnum():
+            return names[other]
+    return None
+
+
+class _Commented(dict):
+    """Where each commented Run line is, by the names of the blocks it would read, and
+    (``unknown``) by the name of each whose app's source moos-lint does not see."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.unknown: dict[str, str] = {}
+
+
+def _commented_runs(moos, cat, mission: str) -> _Commented:
     """Where a ``//Run = NAME`` line (or ``#Run = NAME``) sits in an ANTLER block, by the
     lower-case name of every block its process would read were it launched (the first
     such line): the line is read as a live one is, so an app whose ``main`` hard-codes its name
     (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
     quotes count too."""
-    found: dict[str, str] = {}
+    found = _Commented()
     for antler in moos.antler_blocks:
         if antler.open is None:
             continue
@@ -266,6 +305,10 @@ def _commented_runs(moos, cat, mission: str) -> dict[str, str]:
             # `ProcessConfig = iPydyna`), and the name its app's main hard-codes
             for name in (*run.block_names, *cat.block_names(run)):
                 found.setdefault(name.lower(), here)
+            if cat.app(run.program) is None and cat.app(run.name) is None:
+                # an app whose source is not linted: its main may hard-code a shorter
+                # name (iRemoteMod reads `iRemote`), which `_extends` looks for
+                found.unknown.setdefault(run.name.lower(), here)
             if run.script_block is not None and not has_macro(run.binary):
                 for name in script_names(mission, run.binary) or ():
                     found.setdefault(name, here)
