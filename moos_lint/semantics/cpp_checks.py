@@ -84,7 +84,10 @@ def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
         uses = [*uses, *termios]
     bridge = name.startswith(MOOS_NETWORK_APPS) or any(u.kind == "moos" for u in io)
     if sockets and name.startswith("p") and not bridge:
-        uses += [u for u in io if u.kind == "socket"]
+        # a GUI that fetches over HTTP (a viewer downloading its background map with
+        # libcurl) talks to no vehicle or service of the mission
+        gui = any(u.kind == "gui" for u in io)
+        uses += [u for u in io if u.kind == "socket" and not (gui and "curl" in u.detail)]
     if not uses:
         return
     first = min(uses, key=lambda u: (u.span.path, u.span.line, u.span.col))

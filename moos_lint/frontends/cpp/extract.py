@@ -1746,4 +1746,10 @@ def include_io(path: str) -> str:
         return "serial"
     if low in ("sys/socket.h", "netinet/in.h", "arpa/inet.h", "winsock2.h", "curl/curl.h"):
         return "socket"
+    if low.startswith(("fl/", "qtwidgets/", "qtgui/")) or low in _QT_WINDOWS:
+        return "gui"  # FLTK (pMarineViewer's `FL/Fl.H`) or Qt: a window of its own
     return ""
+
+
+#: Qt headers included by class name that only a program with windows includes
+_QT_WINDOWS = frozenset({"qapplication", "qmainwindow", "qwidget", "qguiapplication"})

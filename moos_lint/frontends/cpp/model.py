@@ -164,7 +164,8 @@ class OriginRead:
 @dataclass(slots=True)
 class IOUse:
     """External I/O: ``kind`` is serial, device, termios, can, usb, socket or network
-    (``moos``: a client of another MOOS community, the I/O of a bridge)."""
+    (``moos``: a client of another MOOS community, the I/O of a bridge; ``gui``: a
+    window toolkit, FLTK or Qt)."""
 
     kind: str
     detail: str

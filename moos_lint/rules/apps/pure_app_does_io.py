@@ -29,10 +29,12 @@ reading a mission's Antler block relies on the prefix to know which apps touch
 hardware or the outside world (what must run on the vehicle, what can be
 simulated).
 
-Not reported: writing log files, a GUI, termios used alone (keyboard input in a
-terminal), network traffic that carries MOOS itself (pShare, pMOOSBridge, and
-any app holding a `CMOOSCommClient` / `MOOSAsyncCommClient` of another
-community), and sockets in `u` apps (tools that talk to a shoreside service).
+Not reported: writing log files, a GUI (an app with an FLTK or Qt window, also
+when it downloads with libcurl: a viewer fetching its background map), termios
+used alone (keyboard input in a terminal), network traffic that carries MOOS
+itself (pShare, pMOOSBridge, and any app holding a `CMOOSCommClient` /
+`MOOSAsyncCommClient` of another community), and sockets in `u` apps (tools
+that talk to a shoreside service).
 
 ## Example
 ```cpp
