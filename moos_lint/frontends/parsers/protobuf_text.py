@@ -29,6 +29,8 @@ _WORD = re.compile(r"(?:[$%]\([^)\n]*\)|[^\s{}<>\[\]:,;#\"'/]|/(?!/))+")
 _IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
 _FIELD_LINE = re.compile(r"^\s*(?:\[[\w.]+\]|[A-Za-z_]\w*)\s*(?::|\{|<)")
 _QUOTED = re.compile(r"\"[^\"]*\"|'[^']*'")
+#: a nested message on one line, ``common { verbosity: DEBUG2 }``: no MOOS line looks so
+_ONE_LINE_MESSAGE = re.compile(r"^[A-Za-z_]\w*\s*\{[^{}=]*:[^{}=]*\}$")
 
 
 class _Tok:
@@ -215,19 +217,23 @@ def looks_like_text_format(lines: list[Line], known_app: bool) -> bool:
 
     An app the catalogue knows reads text format: its block is read so unless
     ``key = value`` lines outnumber the field lines (an older version of the app).
-    For any other block, field lines must be most of its lines.
+    For any other block, field lines must be most of its lines, or all of them when
+    one is a whole nested message (``common { verbosity: DEBUG2 }``).
     """
     if not known_app:  # a field line holds `:`, `{` or `<`: most blocks have no two such
         maybe = 0
         for line in lines:
             t = line.text
-            if ":" in t or "{" in t or "<" in t:
+            if "{" in t:  # (a nested message may be the whole body)
+                maybe = 2
+                break
+            if ":" in t or "<" in t:
                 maybe += 1
                 if maybe == 2:
                     break
         if maybe < 2:
             return False
-    fields = moos = other = 0
+    fields = moos = other = whole = 0
     for line in lines:
         text = _QUOTED.sub('""', line.text).split("#", 1)[0].split("//", 1)[0].strip()
         if not text or text in ("{", "}"):
@@ -236,8 +242,11 @@ def looks_like_text_format(lines: list[Line], known_app: bool) -> bool:
             moos += 1
         elif _FIELD_LINE.match(text):
             fields += 1
+            whole += bool(_ONE_LINE_MESSAGE.match(text))
         elif not text.startswith("}"):
             other += 1
     if known_app:
         return fields >= moos
+    if whole and not moos and not other:
+        return True
     return fields >= 2 and fields > moos + other

@@ -40,7 +40,9 @@ ProcessConfig = pLogger
 
 Inside a block that an app reads with protobuf's text format (goby's MOOS
 apps such as pAcommsHandler and iFrontSeat, or a block whose lines are mostly
-`key: value`), the line must read as protobuf text instead: `name: value`,
+`key: value`, or that holds only field lines, one of them a whole nested
+message: `common { verbosity: DEBUG2 }`), the line must read as protobuf text
+instead: `name: value`,
 `name { ... }` with balanced braces, `#` comments. The app stops at start-up
 on such a line ("fatal configuration errors").
 
