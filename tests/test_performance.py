@@ -171,6 +171,28 @@ def test_the_cache_notices_a_changed_launched_script(tmp_path, counted):
     assert [d["code"] for d in after if d["code"] == "H001"] == ["H001"]
 
 
+def test_the_cache_notices_a_changed_ignore_file(tmp_path, counted):
+    """An ignore file above the mission decides whether a missing behavior file is kept
+    out of the repository on purpose."""
+    project = tmp_path / "project"
+    mission = project / "missions" / "m.moos"
+    mission.parent.mkdir(parents=True)
+    (project / ".git").mkdir()
+    (project / ".gitignore").write_text("*.bhv\n")
+    mission.write_text(
+        "ServerPort = 9000\nCommunity = abe\n\nProcessConfig = ANTLER\n{\n"
+        "  Run = MOOSDB @ NewConsole = false\n  Run = pHelmIvP @ NewConsole = false\n}\n\n"
+        "ProcessConfig = pHelmIvP\n{\n  behaviors = abe.bhv\n}\n"
+    )
+    store = tmp_path / "cache"
+    settings = resolve_settings([project], None)
+    assert not any(d["code"] == "H003" for d in _json(_cached(project, store, settings)))
+    (project / ".gitignore").write_text("*.log\n")  # behavior files are committed now
+    after = _json(_cached(project, store, settings))
+    assert len(counted) == 2
+    assert [d["code"] for d in after if d["code"] == "H003"] == ["H003"]
+
+
 def test_the_cache_notices_a_changed_launch_script_in_the_folder_above(tmp_path, counted):
     """A launch script above the linted folder that runs nsplug on one of its templates
     decides where nsplug looks for the template's includes (its working folder)."""

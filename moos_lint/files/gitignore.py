@@ -285,3 +285,10 @@ def ignored(frame: Frame, path: str, is_dir: bool) -> bool:
             if include != decision and regex is not None and regex.search(rel) is not None:
                 decision = include
     return bool(decision)
+
+
+def ignored_file(path: str, root: str) -> bool:
+    """Whether ``path`` (a file, absolute) is ignored as discovery would find it, with
+    ``root`` the project root: a file a project keeps out of git on purpose."""
+    ignorer = Ignorer(root)
+    return ignored(ignorer.start(os.path.dirname(path)), path, False)

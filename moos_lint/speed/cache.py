@@ -83,6 +83,7 @@ from pathlib import Path
 
 import moos_lint
 from moos_lint import __version__
+from moos_lint.files.gitignore import FOLDER_FILES
 from moos_lint.files.stamps import file_stamp, folder_mtime, package_stamps
 from moos_lint.files.suffixes import SCRIPT_SUFFIXES, is_cpp
 from moos_lint.speed.cache_codec import BadEntry, decode_result, encode_result, want, want_list
@@ -188,6 +189,14 @@ def _side_files(files: list[str], settings: Settings) -> set[str]:
         above = os.path.abspath(parent)
         if above == top or above.startswith(top + os.sep):
             where.append(parent)
+        # the ignore files of the folder and those above it, up to the project root:
+        # missing-behavior-file leaves out a file they ignore
+        here = os.path.abspath(d)
+        while here == top or here.startswith(top + os.sep):
+            out.update(os.path.join(here, n) for n in FOLDER_FILES)
+            if here == top:
+                break
+            here = os.path.dirname(here)
         for folder in where:
             try:
                 names = os.listdir(folder)

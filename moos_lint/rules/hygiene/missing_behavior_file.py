@@ -53,6 +53,9 @@ MOOS-IvP caveats, deliberately not reported:
 - a file that a shell script of those folders writes (`gen_obstacles ... >
   obstacles.txt`) or removes (`rm -f obstacles.txt` in `clean.sh`): the launch
   makes it, so it is absent at rest (the scripts are read as text, never run);
+- a file the project's `.gitignore` (or `.ignore`) leaves out where the mission
+  would find it (`*.bhv`): behavior files deployed to the vehicle or written by
+  a tool, kept out of the repository on purpose;
 - pMarineViewer's `tiff_file`: the viewer looks for it in the MOOS-IvP data
   folder and in IVP_IMAGE_DIRS, not only next to the mission.
 """
@@ -63,6 +66,7 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.gitignore import ignored_file
 from moos_lint.files.launch import (
     find_relative,
     launch_folders,
@@ -167,6 +171,8 @@ def check(ctx):
                     continue
                 if any(os.path.basename(name) in made_by_scripts(f) for f in folders):
                     continue  # a launch script writes it (and the clean script removes it)
+                if _kept_out(name, folders):
+                    continue  # git ignores it: kept out of the repository on purpose
                 where = "next to the mission"
                 if len(folders) > 1:
                     where += (
@@ -177,3 +183,13 @@ def check(ctx):
                     f"`{p.key} = {name}`: no such file {where} ({os.path.basename(ctx.unit.path)})",
                     line=p.line,
                 )
+
+
+def _kept_out(name: str, folders: list[str]) -> bool:
+    """Whether the project ignores the file where the mission would find it first
+    (``*.bhv`` in a ``.gitignore``: behavior files deployed to the vehicle, or written by
+    a tool, and never committed)."""
+    if os.path.isabs(name):
+        return False
+    path = os.path.normpath(os.path.join(os.path.abspath(folders[0]), name))
+    return ignored_file(path, os.path.abspath(folders[-1]))
