@@ -35,16 +35,6 @@ CPP_SUFFIXES = CPP_SOURCE_SUFFIXES + CPP_HEADER_SUFFIXES
 SCRIPT_SUFFIXES = (".py", ".sh", ".bash", ".pl", ".rb", ".js", ".lua", ".jar")
 
 
-#: scripts a shell runs: a wrapper that starts other programs (a MOOS app under a name of
-#: its own choosing, a Java program), never a MOOS client itself
-SHELL_SUFFIXES = (".sh", ".bash")
-
-
-def is_shell_script(program: str) -> bool:
-    """Whether ``program`` (a Run line's program) is a shell script (``./dp.sh``)."""
-    return program.lower().endswith(SHELL_SUFFIXES) and script_stem(program) is not None
-
-
 def script_stem(program: str) -> str | None:
     """``iSonar`` for a script ``iSonar.py`` (no folder); None for any other program."""
     if "." not in program:  # (most programs: one test)

@@ -150,8 +150,8 @@ def check(ctx):
         else:
             for name in reads[id(run)]:
                 by_name.setdefault(name.lower(), []).append(run)
-    commented: _Commented | None = None
-    scripts: _Words | None = None  # what the launched scripts quote
+    commented: tuple[dict[str, str], dict[str, str]] | None = None
+    scripts: tuple[frozenset[str], dict[str, str]] | None = None  # what launched scripts quote
     patched: frozenset[str] | None = None  # what the nspatch patches beside it launch
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
@@ -170,7 +170,8 @@ def check(ctx):
             continue  # a shared fragment: another mission that includes it launches it
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
-        if block.lname in scripts or _extends(block.lname, scripts.unread):
+        quoted, unread = scripts
+        if block.lname in quoted or _extends(block.lname, unread):
             continue  # a launched script names it (or may): it reads it its own way
         if patched is None:
             folder = os.path.dirname(os.path.abspath(ctx.path))
@@ -182,7 +183,8 @@ def check(ctx):
         if why is None:
             if commented is None:
                 commented = _commented_runs(moos, cat, ctx.path)
-            hint = commented.get(block.name.lower()) or _extends(block.lname, commented.unknown)
+            lines, unknown = commented
+            hint = lines.get(block.lname) or _extends(block.lname, unknown)
             if hint and not ctx.options.get("commented-runs"):
                 continue  # switched off on purpose
             why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
@@ -232,16 +234,10 @@ def _names_by_fragment(units, cat) -> dict[str, set[str]]:
     return found
 
 
-class _Words(frozenset):
-    """The lower-case words the launched scripts quote, and (``unread``) the stems of
-    those that cannot be read: such a script may connect under any name."""
-
-    unread: dict[str, str]
-
-
-def _script_words(mission: str, moos) -> _Words:
+def _script_words(mission: str, moos) -> tuple[frozenset[str], dict[str, str]]:
     """The lower-case words the scripts the mission launches quote (see
-    :func:`moos_lint.files.launch.script_names`)."""
+    :func:`moos_lint.files.launch.script_names`), and the program of each script that
+    cannot be read, by lower-case stem: such a script may connect under any name."""
     words: set[str] = set()
     unread: dict[str, str] = {}
     for run in moos.runs:
@@ -250,9 +246,7 @@ def _script_words(mission: str, moos) -> _Words:
             if quoted is None:
                 unread[run.script_block.lower()] = run.binary
             words |= quoted or frozenset()
-    found = _Words(words)
-    found.unread = unread
-    return found
+    return frozenset(words), unread
 
 
 def _extends(name: str, names) -> str | None:
@@ -266,22 +260,15 @@ def _extends(name: str, names) -> str | None:
     return None
 
 
-class _Commented(dict):
-    """Where each commented Run line is, by the names of the blocks it would read, and
-    (``unknown``) by the name of each whose app's source moos-lint does not see."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self.unknown: dict[str, str] = {}
-
-
-def _commented_runs(moos, cat, mission: str) -> _Commented:
+def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
     """Where a ``//Run = NAME`` line (or ``#Run = NAME``) sits in an ANTLER block, by the
     lower-case name of every block its process would read were it launched (the first
     such line): the line is read as a live one is, so an app whose ``main`` hard-codes its name
     (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
-    quotes count too."""
-    found = _Commented()
+    quotes count too. Second, where each line is whose program moos-lint knows nothing
+    of, by its lower-case name."""
+    found: dict[str, str] = {}
+    unknown: dict[str, str] = {}
     for antler in moos.antler_blocks:
         if antler.open is None:
             continue
@@ -305,11 +292,11 @@ def _commented_runs(moos, cat, mission: str) -> _Commented:
             # `ProcessConfig = iPydyna`), and the name its app's main hard-codes
             for name in (*run.block_names, *cat.block_names(run)):
                 found.setdefault(name.lower(), here)
-            if cat.app(run.program) is None and cat.app(run.name) is None:
+            if cat.program_name(run.program) is None:
                 # an app whose source is not linted: its main may hard-code a shorter
                 # name (iRemoteMod reads `iRemote`), which `_extends` looks for
-                found.unknown.setdefault(run.name.lower(), here)
+                unknown.setdefault(run.name.lower(), here)
             if run.script_block is not None and not has_macro(run.binary):
                 for name in script_names(mission, run.binary) or ():
                     found.setdefault(name, here)
-    return found
+    return found, unknown

@@ -89,7 +89,7 @@ Rename the program, or choose an alias that keeps the program's prefix
 from __future__ import annotations
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.suffixes import is_shell_script, script_stem
+from moos_lint.files.suffixes import script_stem
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -129,11 +129,11 @@ def check(ctx):
             continue  # no MOOS client (`gdb`, an LCM program): pAntler passes it no MOOS name
         # a wrapper (what it starts connects, not it), or a script that connects under a
         # name its own code gives (pymoos's `comms.run(host, port, "name")`)
-        shell = is_shell_script(program) or script_stem(program) is not None
+        script = script_stem(program) is not None
         info = cat.app(program) if program else None
         if info is not None and info.own:
             pass  # an app of the linted C++: reported once, where it is defined
-        elif program and not shell and not has_macro(program) and not conforms(program, exempt):
+        elif program and not script and not has_macro(program) and not conforms(program, exempt):
             yield ctx.report(
                 run.binary_span,
                 f"process `{program}` {prefix_problem(program)}",

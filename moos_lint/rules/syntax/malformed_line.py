@@ -42,9 +42,8 @@ Inside a block that an app reads with protobuf's text format (goby's MOOS
 apps such as pAcommsHandler and iFrontSeat, or a block whose lines are mostly
 `key: value`, or that holds only field lines, one of them a whole nested
 message: `common { verbosity: DEBUG2 }`), the line must read as protobuf text
-instead: `name: value`,
-`name { ... }` with balanced braces, `#` comments. The app stops at start-up
-on such a line ("fatal configuration errors").
+instead: `name: value`, `name { ... }` with balanced braces, `#` comments. The
+app stops at start-up on such a line ("fatal configuration errors").
 
 ## How to fix
 Add the `=`, or turn the line into a `//` comment. In a protobuf-text block,
