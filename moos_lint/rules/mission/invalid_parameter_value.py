@@ -110,7 +110,12 @@ MOOS-IvP caveats, deliberately not reported:
   `zigzag:`, `lawnmower`, edge `tags=`; a polygon of more than 400
   vertices; a polygon whose convexity rests on floating-point rounding (a
   vertex all but on an edge's line);
-- apps the catalogue does not know.
+- apps the catalogue does not know;
+- in a project that builds its own helm (a vendored, often older, MOOS-IvP,
+  found as unknown-behavior-parameter finds it), a word its own copy of the
+  stock behavior names (`src/*/BHV_Waypoint.cpp` holding `"internal"`, which
+  MOOS-IvP 14.7's BHV_Waypoint still took for `efficiency_measure`): that
+  helm runs its copy, not today's.
 """
 
 import re
@@ -118,7 +123,7 @@ import re
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission.unknown_parameter import block_apps, text_blocks
 from moos_lint.semantics.catalogue import text_format_schema
 from moos_lint.semantics.geometry_forms import INVALID, is_geometry_form, judge
@@ -255,8 +260,13 @@ def check(ctx):
                 if is_flag_param(p.lkey):  # any behavior's, known to the catalogue or not
                     yield from _double_equals(ctx, p)
                 got = None if info is None else info.forms.get(p.lkey)
-                if info is not None and got is not None:
-                    yield from _judge(ctx, p, p.value.strip(), got, info.name)
+                if info is None or got is None:
+                    continue
+                if got[0].startswith(("enum:", "enum_or_")) and p.value.strip().lower() in (
+                    own_source_keys(ctx, bhv.kind.strip(), ctx.path)
+                ):
+                    continue  # the project's own helm runs its copy, which names the word
+                yield from _judge(ctx, p, p.value.strip(), got, info.name)
 
 
 def _double_equals(ctx, p):

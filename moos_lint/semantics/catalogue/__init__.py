@@ -288,7 +288,7 @@ def _stock_app(name: str, d: dict[str, Any], bases: dict[str, Any], commit: str)
         needs_process_config=bool(d.get("needs_process_config", True)),
         launched_manually=bool(d.get("launched_manually")),
         provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}".strip(),
-        forms=_forms(d),
+        forms=_forms(d, commit),
     )
     for base in ("CMOOSApp", d.get("base", "")):
         b = bases.get(base)
@@ -298,16 +298,20 @@ def _stock_app(name: str, d: dict[str, Any], bases: dict[str, Any], commit: str)
         info.publishes.update(b.get("publishes", []))
         info.publish_suffixes.update(b.get("publish_suffixes", []))
         info.subscribes.update(b.get("subscribes", []))
-        for key, form in _forms(b).items():
+        for key, form in _forms(b, commit).items():
             info.forms.setdefault(key, form)
     return info
 
 
-def _forms(d: dict[str, Any]) -> dict[str, tuple[str, str]]:
+def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
+    """The value forms of a stock entry, each with the MOOS-IvP lines that read it (named
+    with the commit, as the entry's provenance is: the lines are MOOS-IvP's, not a path
+    of the linted project)."""
     out = {}
     for key, f in (d.get("param_forms") or {}).items():
         if isinstance(f, dict) and f.get("form"):
-            out[key.lower()] = (str(f["form"]), str(f.get("at", "")))
+            at = str(f.get("at", ""))
+            out[key.lower()] = (str(f["form"]), f"moos-ivp {commit[:8]} {at}" if at else "")
     return out
 
 
@@ -346,7 +350,7 @@ def stock() -> Catalogue:
                 post_params={k.lower(): v for k, v in d.get("post_params", {}).items()},
                 post_suffix=d.get("post_suffix", "").lower(),
                 provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}",
-                forms=_forms(d),
+                forms=_forms(d, commit),
             )
         )
     for name in data.get("editor_behaviors", {}):
