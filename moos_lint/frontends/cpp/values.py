@@ -248,6 +248,13 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
         return offset(a)  # ``yaw_deg + m_correction``: still degrees
     if _opaque(a) and (b.unit is not None or b.pending is not None):
         return offset(neg(b) if minus else b)
+    if a.pending is not None and b.pending is None and b.hint and b.unit is not None:
+        # ``m_filter.getYaw() + m_heading_correction``: the getter decides, if it turns
+        # out in the unit the correction's name gives
+        return replace(a, ops=(*a.ops, ("offset", b.unit)))
+    if b.pending is not None and a.pending is None and a.hint and a.unit is not None:
+        b2 = neg(b) if minus else b
+        return replace(b2, ops=(*b2.ops, ("offset", a.unit)))
     if a.pending is not None or b.pending is not None:
         return UNKNOWN
     b2 = neg(b) if minus else b
@@ -308,7 +315,10 @@ def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> Abstract
             v = wrapped(v, arg[0], arg[1], arg[2])
         elif op == "shift":
             v = shift(v, arg)
-        elif op == "offset":
+        elif op == "offset":  # plus a term of unknown value (of ``arg``'s unit if given)
+            v = settle(v)
+            if arg is not None and v.unit != arg:
+                return UNKNOWN
             v = offset(v)
         elif op == "scale":
             v = settle(replace(v, scale=arg))
