@@ -264,3 +264,45 @@ def test_unbuilt_sources_only_when_every_list_is_known(tmp_path):
         assert unbuilt(str(tmp_path), names) == set(), unknown
     cmake.unlink()
     assert unbuilt(str(tmp_path), names) == set()
+
+
+_STREAMED = """\
+#include <sstream>
+#include "MOOS/libMOOS/MOOSLib.h"
+class Front : public CMOOSApp
+{
+  bool Iterate();
+  std::string m_vname;
+};
+bool Front::Iterate()
+{
+  std::stringstream ss;
+  ss << "DONE_WITH_FIRST_" << m_vname;
+  std::string note = ss.str();
+  Notify(note, "true");
+  std::ostringstream whole;
+  whole << "FRONT_" << "REPORT";
+  Notify(whole.str(), 1);
+  std::ostringstream reset;
+  reset << "FIRST_";
+  reset.str("");
+  reset << "OTHER";
+  Notify(reset.str(), 2);
+  std::ostringstream given("SEED_");
+  given << "X";
+  Notify(given.str(), 3);
+  return true;
+}
+int main(int argc, char *argv[]) { Front app; app.Run("pFront", argv[1]); }
+"""
+
+
+def test_names_built_with_a_string_stream(tmp_path):
+    (tmp_path / "Front.cpp").write_text(_STREAMED)
+    (app,) = build_apps(read_relevant([str(tmp_path / "Front.cpp")]))
+    names = {p.name.source: (p.name.text, p.name.prefix) for p in app.publications}
+    assert names["note"] == (None, "DONE_WITH_FIRST_")  # the vehicle's name follows
+    assert names["whole.str()"] == ("FRONT_REPORT", "FRONT_REPORT")
+    # a stream reset, or given a first text, is not followed
+    assert names["reset.str()"] == (None, "")
+    assert names["given.str()"] == (None, "")

@@ -808,7 +808,12 @@ class Extractor:
             fn = n.child_by_field_name("function")
             args = n.child_by_field_name("arguments").named_children
             if fn.type == "field_expression" and callee(fn) in ("c_str", "str") and not args:
-                return self._resolve(fn.child_by_field_name("argument"), depth + 1)
+                inner = strip_parens(fn.child_by_field_name("argument"))
+                if callee(fn) == "str" and inner is not None and inner.type == "identifier":
+                    parts = self._stream_parts(n, text(inner))
+                    if parts is not None:
+                        return self._resolve_parts(parts, depth + 1)
+                return self._resolve(inner, depth + 1)
             if text(fn) in ("string", "std::string") and len(args) == 1:
                 return self._resolve(args[0], depth + 1)
             if fn.type == "identifier" and text(fn) in self.tables.passthrough and len(args) == 1:
@@ -830,6 +835,68 @@ class Extractor:
             if vals and len(set(vals)) == 1 and vals[0] is not None:
                 return vals[0], vals[0]
         return None, ""
+
+    def _resolve_parts(self, parts: list[Any], depth: int) -> tuple[str | None, str]:
+        """The text of ``parts`` joined, as ``_resolve`` gives a sum: (the whole text or
+        None, the known text it starts with)."""
+        done = ""
+        for part in parts:
+            value, prefix = self._resolve(part, depth)
+            if value is None:
+                return None, done + prefix
+            done += value
+        return done, done
+
+    def _stream_parts(self, use: Any, key: str) -> list[Any] | None:
+        """What was written into the local string stream ``key`` before ``use`` (its
+        ``key.str()``), in order: ``ostringstream ss; ss << "DONE_" << vname;`` gives the
+        two operands. None unless the stream is declared without a value in the block of
+        ``use``'s statement and only written by ``<<`` statements of that same block."""
+        fn = self.pf.function_of(use)
+        if fn is None:
+            return None
+        block = enclosing(use, ("compound_statement",))
+        if block is None:
+            return None
+        declared = False
+        writes: list[tuple[int, list[Any]]] = []
+        for stmt in block.named_children:
+            if stmt.end_byte > use.start_byte:  # the statement of ``use``, or after it
+                break
+            if stmt.type == "declaration":
+                kind = text(stmt.child_by_field_name("type"))
+                names = [target_name(d) for d in stmt.children_by_field_name("declarator")]
+                if key in names:
+                    if not kind.endswith("stringstream") or any(
+                        d.type == "init_declarator"
+                        for d in stmt.children_by_field_name("declarator")
+                    ):
+                        return None
+                    declared = True
+                continue
+            if key.encode() not in stmt.text:
+                continue
+            chain = (
+                strip_parens(stmt.named_children[0])
+                if stmt.type == "expression_statement"
+                else None
+            )
+            operands: list[Any] = []
+            while (
+                chain is not None
+                and chain.type == "binary_expression"
+                and text(chain.child_by_field_name("operator")) == "<<"
+            ):
+                operands.append(chain.child_by_field_name("right"))
+                chain = strip_parens(chain.child_by_field_name("left"))
+            if chain is None or chain.type != "identifier" or text(chain) != key or not operands:
+                return None  # any other use of the stream (a reset, a read, a nested write)
+            if any(key.encode() in (o.text or b"") for o in operands):
+                return None
+            writes.append((stmt.start_byte, operands[::-1]))
+        if not declared or not writes:
+            return None
+        return [o for _start, ops in writes for o in ops]
 
     def _local_before(self, n: Any, key: str) -> _Asg | None:
         """The last assignment to ``key`` before ``n`` in n's function (locals only)."""
