@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 
 import pytest
@@ -145,3 +146,51 @@ def test_radian_value_from_a_degree_fix_is_quiet(tmp_path):
     # What U001's fix writes for 180 degrees (3.1416) is not "unwrapped".
     text = "initialize NAV_YAW=3.1416, NAV_PITCH=-3.1416\n"
     assert _lint(tmp_path, "a.bhv", text, "U002") == []
+
+
+_PITCHED_APP = """\
+#include "MOOS/libMOOS/MOOSLib.h"
+class Tilt : public CMOOSInstrument
+{
+  bool Iterate();
+  double m_pitch;
+};
+bool Tilt::Iterate()
+{
+  Notify("TILT_PITCH", m_pitch * 180.0 / M_PI);
+  return true;
+}
+int main(int argc, char *argv[])
+{
+  Tilt app;
+  app.Run("iTilt", argv[1]);
+}
+"""
+
+
+@pytest.mark.parametrize(
+    ("select", "extend", "options", "missions"),
+    [
+        (None, [], {}, False),  # the default: C++ only
+        (None, [], {"in-missions": True}, True),
+        (None, ["U003"], {}, True),  # named by a selector: as when it was opt-in
+        (["angle-in-degrees"], [], {}, True),
+        (["ALL"], [], {}, True),
+        (["U"], [], {}, True),
+    ],
+)
+def test_angle_in_degrees_checks_missions_when_asked(tmp_path, select, extend, options, missions):
+    (tmp_path / "iTilt").mkdir()
+    (tmp_path / "iTilt" / "Tilt.cpp").write_text(_PITCHED_APP)
+    (tmp_path / "a.moos").write_text("ProcessConfig = uTimerScript\n{\n  START_PITCH = 15\n}\n")
+    settings = Settings(
+        root=str(tmp_path),
+        select=select,
+        extend_select=extend,
+        rule_options={"angle-in-degrees": options} if options else None,
+    )
+    paths = [str(tmp_path / "a.moos"), str(tmp_path / "iTilt" / "Tilt.cpp")]
+    result = lint_files(paths, settings)
+    assert result.internal_errors == 0
+    found = sorted(os.path.basename(d.span.path) for d in result.diagnostics if d.code == "U003")
+    assert found == (["Tilt.cpp", "a.moos"] if missions else ["Tilt.cpp"])

@@ -38,7 +38,7 @@ def _lint(options: dict | None = None, select: list[str] | None = None):
 
 
 def test_flagship_missions_are_clean():
-    # U003 is off by default; selected here so it is checked too.
+    # U003 checks missions only when a selector names it: selected here so it does.
     assert _lint() == []
 
 

@@ -28,11 +28,13 @@ cannot know is never reported.
 The MOOS Conventions put every angle except heading in radians, and MOOS-IvP
 publishes `NAV_PITCH` in radians. A pitch of `15` is read as 15 radians.
 
-This rule is off by default: unlike yaw, pitch and roll appear in app
-configuration with app-specific units, and MOOS-IvP itself documents some of
-them in degrees (pMarinePID's `maxpitch`, exempted here; `DESIRED_ELEVATOR`
-is degrees too, but its name does not match). Enable it for code bases that
-follow the radian convention for every angle.
+In C++ the rule is on by default: a driver that publishes its pitch, roll
+or rates in degrees breaks every consumer that follows the convention, and
+the value analysis reports only a unit it can show. In `.moos` and `.bhv`
+files it is off unless asked for (`in-missions`, below): unlike yaw, pitch and
+roll appear in app configuration with app-specific units, and MOOS-IvP itself
+documents some of them in degrees (pMarinePID's `maxpitch`, exempted here;
+`DESIRED_ELEVATOR` is degrees too, but its name does not match).
 
 Deliberately not reported: heading fields (degrees by convention), names
 where the angle word is not the last (`pitch_pid_kp`), `maxpitch` and
@@ -52,13 +54,17 @@ initialize NAV_PITCH=0.2618
 ```
 
 ## Options
-None.
+- `in-missions` (boolean, default false): also check `.moos` and `.bhv`
+  files. They are checked as well when `select` or `extend-select` names the
+  rule (`U003`, `angle-in-degrees`, `U`, `ALL`), as they were when the rule
+  was off by default.
 """
 
 import math
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.selectors import selects
 from moos_lint.semantics.angles import angle_values, degrees_to_radians
 
 
@@ -68,12 +74,14 @@ from moos_lint.semantics.angles import angle_values, degrees_to_radians
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
-    default_enabled=False,
     fixable=True,
+    options={"in-missions": False},
 )
 def check(ctx):
     if ctx.unit.kind is Kind.CPP:
         yield from cpp_check(ctx)
+        return
+    if not _in_missions(ctx):
         return
     for av in angle_values(ctx):
         if av.kind == "yaw" or abs(av.value) <= 2 * math.pi:
@@ -87,6 +95,15 @@ def check(ctx):
             line=av.line,
             fix=av.fix(new, f"write the angle in radians: {new}"),
         )
+
+
+def _in_missions(ctx) -> bool:
+    """Whether mission and behavior files are checked: asked for by the option, or by a
+    selector of the configuration that names the rule."""
+    if ctx.options.get("in-missions"):
+        return True
+    chosen = [*(ctx.settings.select or ()), *ctx.settings.extend_select]
+    return any(selects(s, ctx.rule.code, ctx.rule.name) for s in chosen)
 
 
 def cpp_check(ctx):
