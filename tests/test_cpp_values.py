@@ -496,3 +496,37 @@ def test_the_classes_of_the_awaited_methods_are_searched_in_one_read(tmp_path):
     # the index, the files naming either class; then each method's file and each file
     # writing its field, read to be parsed
     assert len(reads) == 2 * len(paths) + 4, reads
+
+
+@pytest.mark.parametrize(
+    ("comment", "unit"),
+    [
+        ("// degrees", "deg"),
+        ("/**< Speed over the ground in kph */", "km/h"),
+        ("/**< Speed over the ground in knots */", "kn"),
+        ("//!< rate, deg/s", "deg/s"),
+        ("// radians", "rad"),
+        ("// in m/s", None),  # no unit of the rules: nothing to say
+        ("// degrees or radians, as configured", None),
+        ("/**< Speed in knots, or km/h when set so */", None),
+        ("// the number of the sentence", None),
+    ],
+)
+def test_a_declaration_comment_gives_one_unit(comment, unit):
+    from moos_lint.frontends.cpp.values import declaration_hint
+
+    v = declaration_hint(comment, "`Fix::x` (fix.h:3)")
+    assert (v.unit if v is not None else None) == unit
+    if v is not None:
+        assert v.hint and "fix.h:3" in v.why[0]
+
+
+def test_class_body_of_a_struct_and_of_a_typedef():
+    from moos_lint.frontends.cpp.values import class_body
+
+    data = b"struct A { int x; struct { int y; } in; };\ntypedef struct _B { double s; } B;\n"
+    start, end = class_body(data, "A")
+    assert data[start:end] == b" int x; struct { int y; } in; "
+    start, end = class_body(data, "B")
+    assert data[start:end] == b" double s; "
+    assert class_body(data, "C") is None

@@ -16,6 +16,7 @@ known facts.
 from __future__ import annotations
 
 import math
+import os
 import re
 from collections import OrderedDict
 from collections.abc import Callable, Iterable, Iterator
@@ -473,6 +474,71 @@ def comment_hint(line: str) -> AbstractValue:
     return AbstractValue(
         unit=unit, hint=True, why=(f"the comment says `{m.group(0)[2:].strip()}`",)
     )
+
+
+#: a speed unit in a declaration's comment (``/**< Speed over the ground in kph */``)
+_COMMENT_SPEED = re.compile(
+    r"\b(?:(knots?|kts)|(kph|km\s*/\s*h|kmh|kilomet(?:er|re)s?\s*(?:per|/)\s*hour)|"
+    r"(mph|miles\s*(?:per|an|/)\s*hour))\b",
+    re.I,
+)
+_COMMENT_DEG = re.compile(r"\bdeg(?:rees?|s)?\b|°", re.I)
+_COMMENT_RAD = re.compile(r"\brad(?:ians?|s)?\b", re.I)
+
+
+def declaration_hint(comment: str, where: str) -> AbstractValue | None:
+    """The unit a field's declaration comment gives (``double pitch; // degrees``,
+    ``double speed; /**< Speed over the ground in kph */``): one angle unit or one speed
+    unit, never both kinds nor two of a kind; None otherwise."""
+    body = comment.strip().lstrip("/*!<").rstrip("*/").strip()
+    if not body:
+        return None
+    deg, rad = _COMMENT_DEG.search(body), _COMMENT_RAD.search(body)
+    speeds = {next(i for i, g in enumerate(m.groups()) if g) for m in _COMMENT_SPEED.finditer(body)}
+    found = [u for u in (deg and "deg", rad and "rad") if u] + [
+        ("kn", "km/h", "mph")[i] for i in speeds
+    ]
+    if len(found) != 1:
+        return None
+    unit = found[0]
+    if unit in ("deg", "rad"):
+        v = comment_hint("// " + body)  # (a rate: degrees per second)
+        if v.unit is None or v.unit.split("/")[0] != unit:
+            return None
+        unit = v.unit
+    why = f"{where} is declared with the comment `{brief(body, 50)}`"
+    return AbstractValue(unit=unit, hint=True, why=(why,))
+
+
+#: a field's declaration with a comment after it on its line (``double roll, pitch; // deg``)
+_FIELD_LINE = (
+    rb"^[^\n;{}]*?\b(?:%s)\s*(?:\[[^\]\n]*\])?\s*(?:=[^;\n]*)?(?:,[^;\n]*)?;"
+    rb"[ \t]*(//[^\n]*|/\*.*?\*/)"
+)
+
+
+def class_body(data: bytes, cls: str) -> tuple[int, int] | None:
+    """Where the body of class or struct ``cls`` lies in ``data`` (``struct cls {...}``
+    or ``typedef struct {...} cls;``), braces counted (comments and strings are not
+    told apart): (start, end) offsets, or None."""
+    name = re.escape(cls.encode())
+    m = re.search(rb"(?:class|struct)\s+" + name + rb"\b[^;{}()]*\{", data)
+    if m is not None:
+        depth, i = 1, m.end()
+        while i < len(data) and depth:
+            c = data[i]
+            depth += (c == 0x7B) - (c == 0x7D)
+            i += 1
+        return (m.end(), i - 1) if depth == 0 else None
+    m = re.search(rb"\}\s*" + name + rb"\s*;", data)
+    if m is None or b"typedef" not in data[: m.start()]:
+        return None
+    depth, i = 1, m.start() - 1
+    while i >= 0 and depth:
+        c = data[i]
+        depth += (c == 0x7D) - (c == 0x7B)
+        i -= 1
+    return (i + 2, m.start()) if depth == 0 else None
 
 
 #: calls whose first string argument formats the ones after it
@@ -1939,6 +2005,10 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
         # or the comment or print label where the app reads it
         first = v.pending.split("|")[0]
         before = v.fallback if v.fallback is not None else name_hint(first)
+        if not before.known and isinstance(resolver, RepositoryResolver):
+            declared = resolver.declared(v.pending)
+            if declared is not None:
+                before = declared
         out = apply_ops(before, v.ops)
         return replace(out, why=(*out.why, *v.why[1:])) if out.known else UNKNOWN
     if "#" in v.pending and (base is None or not base.known):
@@ -2194,6 +2264,36 @@ class RepositoryResolver:
                 if not out.known and out.const is None:
                     return None  # a write we cannot read: the field stays unknown
         return out if out is not None and out.known else None
+
+    def declared(self, pending: str) -> AbstractValue | None:
+        """The unit the comment on field ``.Class.name|alias``'s declaration gives (a
+        device library's ``double pitch; // degrees``): the same in every declaration
+        found in the class's body, else None."""
+        _, cls, names_text = pending.split(".", 2)
+        if cls not in self._naming:
+            if self._index is None:
+                self._expected.add(cls)
+                self._read_all()
+            if cls not in self._naming:
+                self._find_naming({cls})
+        names = b"|".join(re.escape(n.encode()) for n in names_text.split("|") if n)
+        if not names:
+            return None
+        pattern = re.compile(_FIELD_LINE % names, re.M | re.S)
+        found: AbstractValue | None = None
+        for path in self._naming.get(cls, []):
+            data = self._data(path)
+            at = class_body(data, cls)
+            if at is None:
+                continue
+            for m in pattern.finditer(data, at[0], at[1]):
+                line = data.count(b"\n", 0, m.start(1)) + 1
+                where = f"`{cls}::{names_text.split('|')[0]}` ({os.path.basename(path)}:{line})"
+                v = declaration_hint(m.group(1).decode("utf-8", "replace"), where)
+                if v is None or (found is not None and found.unit != v.unit):
+                    return None
+                found = found or v
+        return found
 
     def _parse(self, path: str, data: bytes | None) -> Any:
         """The parsed file (None if it cannot be parsed); ``data``: its bytes, if read."""
