@@ -852,14 +852,11 @@ class Extractor:
         ``key.str()``), in order: ``ostringstream ss; ss << "DONE_" << vname;`` gives the
         two operands. None unless the stream is declared without a value in the block of
         ``use``'s statement and only written by ``<<`` statements of that same block."""
-        fn = self.pf.function_of(use)
-        if fn is None:
-            return None
-        block = enclosing(use, ("compound_statement",))
+        block = enclosing(use, ("compound_statement",))  # (a function's body, or in one)
         if block is None:
             return None
         declared = False
-        writes: list[tuple[int, list[Any]]] = []
+        written: list[Any] = []
         for stmt in block.named_children:
             if stmt.end_byte > use.start_byte:  # the statement of ``use``, or after it
                 break
@@ -893,10 +890,10 @@ class Extractor:
                 return None  # any other use of the stream (a reset, a read, a nested write)
             if any(key.encode() in (o.text or b"") for o in operands):
                 return None
-            writes.append((stmt.start_byte, operands[::-1]))
-        if not declared or not writes:
+            written += operands[::-1]
+        if not declared or not written:
             return None
-        return [o for _start, ops in writes for o in ops]
+        return written
 
     def _local_before(self, n: Any, key: str) -> _Asg | None:
         """The last assignment to ``key`` before ``n`` in n's function (locals only)."""

@@ -243,22 +243,21 @@ def add(a: AbstractValue, b: AbstractValue, minus: bool) -> AbstractValue:
     a, b = settle(a), settle(b)
     if b.const is not None:
         return shift(a, -b.const if minus else b.const)
+    b2 = neg(b) if minus else b
     if a.const is not None:
-        return shift(neg(b) if minus else b, a.const)
+        return shift(b2, a.const)
     if _opaque(b) and (a.unit is not None or a.pending is not None):
         return offset(a)  # ``yaw_deg + m_correction``: still degrees
     if _opaque(a) and (b.unit is not None or b.pending is not None):
-        return offset(neg(b) if minus else b)
+        return offset(b2)
+    # ``m_filter.getYaw() + m_heading_correction``: the getter, resolved later, decides
+    # if it turns out in the unit the correction's name gives
     if a.pending is not None and b.pending is None and b.hint and b.unit is not None:
-        # ``m_filter.getYaw() + m_heading_correction``: the getter decides, if it turns
-        # out in the unit the correction's name gives
         return replace(a, ops=(*a.ops, ("offset", b.unit)))
     if b.pending is not None and a.pending is None and a.hint and a.unit is not None:
-        b2 = neg(b) if minus else b
         return replace(b2, ops=(*b2.ops, ("offset", a.unit)))
     if a.pending is not None or b.pending is not None:
         return UNKNOWN
-    b2 = neg(b) if minus else b
     if a.unit is None or a.unit != b2.unit:
         return UNKNOWN
     rng = (a.range[0] + b2.range[0], a.range[1] + b2.range[1]) if a.range and b2.range else None
@@ -2108,6 +2107,8 @@ class RepositoryResolver:
         #: each are found in one read, with the first class asked for (:meth:`_field`)
         self._wanted: set[bytes] = set()
         self._owners: set[str] = set()
+        #: the unit each field's declaration gives (see :meth:`declared`)
+        self._declared: dict[str, AbstractValue | None] = {}
 
     @property
     def all_paths(self) -> list[str]:
@@ -2227,14 +2228,9 @@ class RepositoryResolver:
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
         names = set(names_text.split("|"))
-        if cls not in self._naming and self._index is None:
-            self._expected.add(cls)
-            self._read_all()
-        if cls not in self._naming:  # a file that never names the class cannot write its fields
-            self._find_naming({cls} | (self._owners - set(self._naming)))
         wrote = field_write_pattern(names)
         out: AbstractValue | None = None
-        for path in self._naming[cls]:
+        for path in self._files_naming(cls):  # a file that never names it cannot write it
             data = None
             if path not in self.parsed_once:  # a file parsed before is not searched
                 data = self._data(path)
@@ -2265,23 +2261,33 @@ class RepositoryResolver:
                     return None  # a write we cannot read: the field stays unknown
         return out if out is not None and out.known else None
 
+    def _files_naming(self, cls: str) -> list[str]:
+        """The files whose bytes name class ``cls``: found with the one read of every file
+        that indexes the functions when it is still to come, else in a read of their own
+        (with the classes of the awaited methods, :attr:`_owners`)."""
+        if cls not in self._naming and self._index is None:
+            self._expected.add(cls)
+            self._read_all()
+        if cls not in self._naming:
+            self._find_naming({cls} | (self._owners - set(self._naming)))
+        return self._naming[cls]
+
     def declared(self, pending: str) -> AbstractValue | None:
         """The unit the comment on field ``.Class.name|alias``'s declaration gives (a
         device library's ``double pitch; // degrees``): the same in every declaration
-        found in the class's body, else None."""
+        found in the class's body, else None. Once per field."""
+        if pending not in self._declared:
+            self._declared[pending] = self._declared_now(pending)
+        return self._declared[pending]
+
+    def _declared_now(self, pending: str) -> AbstractValue | None:
         _, cls, names_text = pending.split(".", 2)
-        if cls not in self._naming:
-            if self._index is None:
-                self._expected.add(cls)
-                self._read_all()
-            if cls not in self._naming:
-                self._find_naming({cls})
         names = b"|".join(re.escape(n.encode()) for n in names_text.split("|") if n)
         if not names:
             return None
         pattern = re.compile(_FIELD_LINE % names, re.M | re.S)
         found: AbstractValue | None = None
-        for path in self._naming.get(cls, []):
+        for path in self._files_naming(cls):
             data = self._data(path)
             at = class_body(data, cls)
             if at is None:
