@@ -37,16 +37,19 @@ command or any of its processes.
 ``pip install`` leaves it in a fresh virtual environment: the console script,
 compiled bytecode, and no start-up hooks from a development machine's own
 site-packages (an editable-install finder, certificate injectors, ...). The
-environment is made in a temporary folder and reaches moos-lint and its
-dependencies where this interpreter has them, through one ``.pth`` file that
-lists those folders (paths only, no import lines). The tree is never written:
-caches (and the cache key: ``XDG_CACHE_HOME``), reports and copies go to the
-temporary folder.
+environment is made in a temporary folder and reaches moos-lint where this
+interpreter has it, through one ``.pth`` file (paths only, no import lines),
+and its run-time dependencies alone (``[project] dependencies``, and theirs),
+linked into a folder of their own: what else this interpreter has installed
+(typing_extensions, which changes what pathspec imports, for one) is not there.
+The tree is never written: caches (and the cache key: ``XDG_CACHE_HOME``),
+reports and copies go to the temporary folder.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import glob
 import json
 import os
@@ -60,9 +63,12 @@ import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 #: the console script's entry point, as ``[project.scripts]`` in pyproject.toml names it
 ENTRY_POINT = "moos_lint.commands.cli:run"
+#: the distribution's name, as ``[project]`` in pyproject.toml gives it
+DISTRIBUTION = "moos-lint"
 MISSION_SUFFIXES = (".moos", ".bhv")
 RELINT_RUNS = 20
 COPIES = (1, 4, 16)
@@ -131,6 +137,39 @@ def p95(values: list[float]) -> float:
     return values[min(len(values) - 1, round(0.95 * (len(values) - 1)))]
 
 
+def runtime_dependencies(name: str) -> list[Any]:
+    """The installed distributions ``name`` needs at run time (no extras), and theirs."""
+    import importlib.metadata as metadata
+
+    from packaging.requirements import Requirement
+
+    found: dict[str, Any] = {}
+    todo = [name]
+    while todo:
+        requires = metadata.requires(todo.pop()) or []
+        for text in requires:
+            req = Requirement(text)
+            if req.marker is not None and not req.marker.evaluate({"extra": ""}):
+                continue
+            key = req.name.lower().replace("_", "-")
+            if key not in found:
+                found[key] = metadata.distribution(req.name)
+                todo.append(req.name)
+    return list(found.values())
+
+
+def link_distribution(dist: Any, target: str) -> None:
+    """Link the top-level modules and metadata of installed distribution ``dist`` into
+    ``target``, a folder on the path."""
+    tops = {Path(str(f)).parts[0] for f in dist.files or ()}
+    for top in sorted(tops):
+        source = Path(str(dist.locate_file(top)))
+        if top in ("..", "__pycache__") or not source.exists():
+            continue
+        with contextlib.suppress(FileExistsError):
+            os.symlink(source, os.path.join(target, top))
+
+
 def clean_install(folder: str) -> Installation:
     """A fresh virtual environment in ``folder`` that runs this moos-lint (see above)."""
     import moos_lint
@@ -147,11 +186,16 @@ def clean_install(folder: str) -> Installation:
         text=True,
         check=True,
     ).stdout.strip()
-    # moos-lint and its dependencies, where this interpreter finds them
+    # moos-lint where this interpreter finds it, and its dependencies alone: linked into a
+    # folder of their own, as pip would install them (the rest of this interpreter's
+    # site-packages, a development machine's tools, is not there: typing_extensions, for
+    # one, changes what pathspec imports)
     package = os.path.dirname(os.path.dirname(os.path.abspath(moos_lint.__file__)))
-    here = sysconfig.get_paths()
-    roots = dict.fromkeys([package, here["purelib"], here["platlib"]])
-    Path(site, "moos_lint_benchmark.pth").write_text("".join(f"{r}\n" for r in roots))
+    deps = os.path.join(folder, "dependencies")
+    os.mkdir(deps)
+    for dist in runtime_dependencies(DISTRIBUTION):
+        link_distribution(dist, deps)
+    Path(site, "moos_lint_benchmark.pth").write_text(f"{package}\n{deps}\n")
     # the console script, as pip writes it for [project.scripts]
     module, function = ENTRY_POINT.split(":")
     script = Path(bindir, "moos-lint")
@@ -165,7 +209,14 @@ def clean_install(folder: str) -> Installation:
     env["PYTHONPYCACHEPREFIX"] = os.path.join(folder, "bytecode")
     # compile every module once, as pip does at install time
     subprocess.run(
-        [python, "-m", "compileall", "-q", os.path.dirname(os.path.abspath(moos_lint.__file__))],
+        [
+            python,
+            "-m",
+            "compileall",
+            "-q",
+            os.path.dirname(os.path.abspath(moos_lint.__file__)),
+            deps,
+        ],
         env=env,
         capture_output=True,
         check=False,

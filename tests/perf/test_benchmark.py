@@ -135,3 +135,15 @@ def test_the_benchmark_runs_the_console_script_pip_installs():
     scripts = data["project"]["scripts"]
     assert scripts["moos-lint"] == _load().ENTRY_POINT
     assert not any("benchmark" in target for target in scripts.values())  # a development script
+
+
+def test_the_measured_installation_holds_moos_lint_and_its_dependencies_alone(tmp_path):
+    inst = _load().clean_install(str(tmp_path))
+    probe = (
+        "import importlib.util as u, tree_sitter, tree_sitter_cpp, pathspec, moos_lint;"
+        "print(u.find_spec('pytest') is None, u.find_spec('typing_extensions') is None)"
+    )
+    out = subprocess.run(
+        [inst.python, "-c", probe], capture_output=True, text=True, env=inst.env, check=True
+    )
+    assert out.stdout.split() == ["True", "True"]
