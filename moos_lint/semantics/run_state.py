@@ -64,6 +64,10 @@ class RunMemos:
     #: ``KIND@folder`` -> the keys the project's own copy of behavior KIND, beside a helm
     #: it builds itself above that folder, compares with
     repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)
+    #: folder -> the source folders holding a helm of the project's own at or above it
+    helm_sources: dict[str, list[str]] = field(default_factory=dict)
+    #: such a source folder -> ``BHV_X.cpp`` -> its copies one folder below it
+    helm_copies: dict[str, dict[str, list[str]]] = field(default_factory=dict)
     #: program name -> whether the project's CMake builds a program of exactly that name
     built_programs: dict[str, bool] = field(default_factory=dict)
     #: top-of-file keys the run's own C++ apps read with ``GetValue``

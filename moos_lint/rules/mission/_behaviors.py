@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import glob
 import os
 import re
 from typing import TYPE_CHECKING
@@ -136,8 +135,15 @@ def own_source_keys(ctx: Context, kind: str, bhv_path: str) -> frozenset[str]:
     if key in memo:
         return memo[key]
     keys: set[str] = set()
-    for src in _helm_sources(os.path.dirname(os.path.abspath(bhv_path))):
-        for path in glob.glob(os.path.join(glob.escape(src), "*", glob.escape(kind) + ".cpp")):
+    folder = os.path.dirname(os.path.abspath(bhv_path))
+    sources = ctx.run.memos.helm_sources.get(folder)
+    if sources is None:
+        sources = ctx.run.memos.helm_sources[folder] = _helm_sources(folder)
+    for src in sources:
+        copies = ctx.run.memos.helm_copies.get(src)
+        if copies is None:
+            copies = ctx.run.memos.helm_copies[src] = _behavior_sources(src)
+        for path in copies.get(kind + ".cpp", ()):
             data = read_head(path, 1024 * 1024)
             if data is None:
                 continue
@@ -152,6 +158,24 @@ _HELM_LIBRARY = (
     os.path.join("src", "lib_helmivp"),
     os.path.join("ivp", "src", "lib_helmivp"),
 )
+
+
+def _behavior_sources(src: str) -> dict[str, list[str]]:
+    """The ``BHV_*.cpp`` files one folder below source folder ``src``, by file name."""
+    found: dict[str, list[str]] = {}
+    try:
+        subs = sorted(e.path for e in os.scandir(src) if e.is_dir() and e.name[0] != ".")
+    except OSError:
+        return found
+    for sub in subs:
+        try:
+            names = [e.name for e in os.scandir(sub) if e.name.startswith("BHV_")]
+        except OSError:
+            continue
+        for name in sorted(names):
+            if name.endswith(".cpp"):
+                found.setdefault(name, []).append(os.path.join(sub, name))
+    return found
 
 
 def _helm_sources(folder: str, levels: int = 6) -> list[str]:
