@@ -233,6 +233,20 @@ def test_names_through_a_function_that_returns_its_argument(tmp_path):
     assert names == ["WATCH_SUMMARY", None]
 
 
+def test_names_through_a_function_that_returns_a_reference(tmp_path):
+    """``const std::string& Watch::postVar(...)``: a function returning a reference is
+    found by its name as one returning a value is."""
+    (tmp_path / "Watch.cpp").write_text(
+        "class Watch : public AppCastingMOOSApp {};\n"
+        "const std::string& Watch::postVar(const std::string& varname) const\n{\n"
+        "  return(varname);\n}\n"
+        "bool Watch::Iterate()\n{\n"
+        '  Notify(postVar("WATCH_SUMMARY"), m_summary);\n  return true;\n}\n'
+    )
+    names = [p.name.text for p in _app(tmp_path).publications]
+    assert names == ["WATCH_SUMMARY"]
+
+
 def test_discovery_leaves_windows_module_definitions(tmp_path):
     """``proj.def`` / ``iMatlab.def`` (a DLL's exports) share the suffix of nsplug's
     definition files; they are not MOOS files, walked or named."""

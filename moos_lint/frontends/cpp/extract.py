@@ -37,6 +37,7 @@ from moos_lint.frontends.cpp.model import (
 from moos_lint.frontends.cpp.names import (
     MAIL_COMPARES,
     WORD_BYTES,
+    function_declarator,
     key_literal,
     mail_key_of,
     valued_name,
@@ -229,9 +230,7 @@ def target_name(n: Any) -> str:
 
 def function_name(fn_def: Any) -> str:
     """``App::OnNewMail`` for a function definition node."""
-    decl = fn_def.child_by_field_name("declarator")
-    while decl is not None and decl.type != "function_declarator":
-        decl = decl.child_by_field_name("declarator")
+    decl = function_declarator(fn_def)
     if decl is None:
         return ""
     return re.sub(r"\s+", "", text(decl.child_by_field_name("declarator")))
@@ -242,9 +241,7 @@ _PARAM_DECL = "parameter_declaration"
 
 def _parameters(fn_def: Any) -> list[tuple[str, str]]:
     """(type, name) of each parameter of a function definition ("" for a missing name)."""
-    decl = fn_def.child_by_field_name("declarator")
-    while decl is not None and decl.type != "function_declarator":
-        decl = decl.child_by_field_name("declarator")
+    decl = function_declarator(fn_def)
     params = decl.child_by_field_name("parameters") if decl is not None else None
     out = []
     for p in params.named_children if params else []:
@@ -916,9 +913,7 @@ class Extractor:
         return best
 
     def _is_param(self, fn: Any, key: str) -> bool:
-        decl = fn.child_by_field_name("declarator")
-        while decl is not None and decl.type != "function_declarator":
-            decl = decl.child_by_field_name("declarator")
+        decl = function_declarator(fn)
         if decl is None:
             return False
         params = decl.child_by_field_name("parameters")

@@ -13,8 +13,8 @@ import re
 from collections.abc import Iterator
 from typing import Any
 
+from moos_lint.frontends.cpp.names import callee_name, function_declarator, strip
 from moos_lint.frontends.cpp.names import node_text as text
-from moos_lint.frontends.cpp.names import strip
 
 _CLASS_TYPES = ("struct_specifier", "class_specifier", "union_specifier")
 #: words of a declared type that are not its name
@@ -23,9 +23,7 @@ _TYPE_NOISE = {"const", "struct", "class", "union", "volatile", "mutable", "stat
 
 def _qualified_class(fn: Any) -> str | None:
     """``S`` for an out-of-line method ``T S::f(...)``."""
-    decl = fn.child_by_field_name("declarator")
-    while decl is not None and decl.type != "function_declarator":
-        decl = decl.child_by_field_name("declarator")
+    decl = function_declarator(fn)
     name = decl.child_by_field_name("declarator") if decl is not None else None
     if name is None or name.type != "qualified_identifier":
         return None
@@ -97,6 +95,38 @@ def declared_type(fn: Any, name: str) -> str | None:
         if n == name:
             return type_name(t)
     return None
+
+
+def auto_getter(fn: Any, name: str) -> str | None:
+    """The function whose return initialises ``name`` when function ``fn`` declares it
+    ``auto`` (``getUniHeadingA`` for ``const auto &hdg = m_parser->getUniHeadingA();``);
+    None for any other declaration, or when ``fn`` declares ``name`` more than once."""
+    if fn is None:
+        return None
+    found: list[str | None] = []
+    stack = [fn]
+    while stack:
+        x = stack.pop()
+        stack.extend(x.named_children)
+        if x.type not in ("declaration", "parameter_declaration"):
+            continue
+        for d in x.children_by_field_name("declarator"):
+            if _declarator_name(d) != name:
+                continue
+            t = x.child_by_field_name("type")
+            value = d.child_by_field_name("value") if d.type == "init_declarator" else None
+            if t is None or t.type != "placeholder_type_specifier" or value is None:
+                found.append(None)
+            else:
+                found.append(_callee(strip(value)))
+    return found[0] if len(found) == 1 else None
+
+
+def _callee(call: Any) -> str | None:
+    """The short name of the function a call expression calls (``getX`` for ``p->getX()``)."""
+    if call is None or call.type != "call_expression":
+        return None
+    return callee_name(call.child_by_field_name("function")) or None
 
 
 def _field_names(body: Any) -> list[str]:

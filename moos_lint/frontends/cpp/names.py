@@ -78,6 +78,19 @@ def strip(n: Any) -> Any:
     return n
 
 
+def function_declarator(fn: Any) -> Any:
+    """The ``function_declarator`` of a function definition (or declaration): below the
+    pointers and references of its return type (``const T& get() const``, whose reference
+    declarator names its declarator by no field); None when there is none."""
+    decl = fn.child_by_field_name("declarator")
+    while decl is not None and decl.type != "function_declarator":
+        inner = decl.child_by_field_name("declarator")
+        if inner is None and decl.type == "reference_declarator" and decl.named_children:
+            inner = decl.named_children[-1]
+        decl = inner
+    return decl
+
+
 def callee_name(fn: Any) -> str:
     """The called function's own name: ``Notify`` for ``m_Comms.Notify`` or ``A::Notify``."""
     t = fn.type

@@ -28,6 +28,7 @@ from moos_lint.frontends.cpp.names import (
     WORD_BYTES,
     callee_name,
     displacement_axis,
+    function_declarator,
     mail_key_of,
     node_text,
     strip,
@@ -807,15 +808,8 @@ def _declared_local(pf: Any, a: Any) -> bool:
     return _is_param(a.fn, a.target)
 
 
-def _function_declarator(fn: Any) -> Any:
-    decl = fn.child_by_field_name("declarator")
-    while decl is not None and decl.type != "function_declarator":
-        decl = decl.child_by_field_name("declarator")
-    return decl
-
-
 def _function_short_name(fn: Any) -> str:
-    decl = _function_declarator(fn)
+    decl = function_declarator(fn)
     if decl is None:
         return ""
     return re.split(r"::", re.sub(r"\s+", "", text(decl.child_by_field_name("declarator"))))[-1]
@@ -824,7 +818,7 @@ def _function_short_name(fn: Any) -> str:
 def _is_param(fn: Any, key: str) -> bool:
     if fn is None:
         return False
-    decl = _function_declarator(fn)
+    decl = function_declarator(fn)
     params = decl.child_by_field_name("parameters") if decl is not None else None
     for p in params.named_children if params is not None else ():
         d = p.child_by_field_name("declarator")
@@ -839,7 +833,7 @@ def _is_param(fn: Any, key: str) -> bool:
 
 
 def _param_index(fn: Any, key: str) -> int | None:
-    decl = _function_declarator(fn)
+    decl = function_declarator(fn)
     params = decl.child_by_field_name("parameters") if decl is not None else None
     plist = [
         p for p in (params.named_children if params is not None else ()) if p.type != "comment"
@@ -1269,6 +1263,9 @@ class Evaluator:
             if obj is None or obj.type != "identifier":
                 return None
             cls = fields.declared_type(fnode, text(obj)) or self.folder.member_type(text(obj))
+            if cls is None:  # ``auto x = p->getX(); x.yaw``: of the class getX returns
+                getter = fields.auto_getter(fnode, text(obj))
+                cls = f"{getter}()" if getter else None
             field = text(n.child_by_field_name("field"))
         elif n.type == "identifier" and self.library:
             cls, field = fields.enclosing_class(n), key
@@ -1288,9 +1285,10 @@ class Evaluator:
         anywhere: AbstractValue | None = hint if hint.known else None
         if cls:
             aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
+            whose = f"what {cls} returns" if cls.endswith("()") else cls
             anywhere = AbstractValue(
                 pending=f".{cls}.{'|'.join(aliases)}",
-                why=(f"`{brief(text(n), 30)}`, a field of {cls}, at {_at(pf, n)}",),
+                why=(f"`{brief(text(n), 30)}`, a field of {whose}, at {_at(pf, n)}",),
                 fallback=anywhere,
             )
         if n.type == "field_expression":
@@ -1732,7 +1730,7 @@ def _calls_by_argument(fnode: Any) -> dict[str, list[tuple[Any, str, int]]]:
 def _out_param(fn: Any, index: int) -> tuple[str, bool] | None:
     """The ``index``-th parameter of ``fn`` when the function may set it: its name, and
     whether it is a pointer (else a non-const reference)."""
-    decl = _function_declarator(fn)
+    decl = function_declarator(fn)
     params = decl.child_by_field_name("parameters") if decl is not None else None
     plist = [
         p for p in (params.named_children if params is not None else ()) if p.type != "comment"
@@ -2109,6 +2107,8 @@ class RepositoryResolver:
         self._owners: set[str] = set()
         #: the unit each field's declaration gives (see :meth:`declared`)
         self._declared: dict[str, AbstractValue | None] = {}
+        #: the class each function returns (see :meth:`returned_class`)
+        self._returned: dict[str, str | None] = {}
 
     @property
     def all_paths(self) -> list[str]:
@@ -2145,7 +2145,9 @@ class RepositoryResolver:
             v: AbstractValue | None = first
             while v is not None:
                 if v.pending and v.pending.startswith("."):
-                    self._expected.add(v.pending.split(".", 2)[1])
+                    cls = v.pending.split(".", 2)[1]
+                    if not cls.endswith("()"):  # (a getter's class is known once it is read)
+                        self._expected.add(cls)
                 elif v.pending:
                     self._wanted.add(v.pending.partition("#")[0].encode())
                 v = v.fallback if isinstance(v.fallback, AbstractValue) else None
@@ -2227,6 +2229,9 @@ class RepositoryResolver:
         """What the repository writes to field ``.Class.name|alias`` (the join of every
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
+        if cls.endswith("()"):  # a field of what a function returns: of its class
+            real = self.returned_class(cls[:-2])
+            return self(f".{real}.{names_text}") if real else None
         names = set(names_text.split("|"))
         wrote = field_write_pattern(names)
         out: AbstractValue | None = None
@@ -2272,6 +2277,21 @@ class RepositoryResolver:
             self._find_naming({cls} | (self._owners - set(self._naming)))
         return self._naming[cls]
 
+    def returned_class(self, name: str) -> str | None:
+        """The class that every definition of function ``name`` in the repository returns
+        (``UniHeadingAData`` for ``const UniHeadingAData& getUniHeadingA() const``); None
+        when none is found, one returns no class, or two return different ones."""
+        if name not in self._returned:
+            found: set[str | None] = set()
+            for path, data in self._candidates(name):
+                pf = self._parse(path, data)
+                for fn in pf.functions if pf is not None else ():
+                    if _function_short_name(fn) == name:
+                        t = fn.child_by_field_name("type")
+                        found.add(fields.type_name(text(t)) if t is not None else None)
+            self._returned[name] = found.pop() if len(found) == 1 else None
+        return self._returned[name]
+
     def declared(self, pending: str) -> AbstractValue | None:
         """The unit the comment on field ``.Class.name|alias``'s declaration gives (a
         device library's ``double pitch; // degrees``): the same in every declaration
@@ -2282,6 +2302,9 @@ class RepositoryResolver:
 
     def _declared_now(self, pending: str) -> AbstractValue | None:
         _, cls, names_text = pending.split(".", 2)
+        if cls.endswith("()"):
+            real = self.returned_class(cls[:-2])
+            return self.declared(f".{real}.{names_text}") if real else None
         names = b"|".join(re.escape(n.encode()) for n in names_text.split("|") if n)
         if not names:
             return None
