@@ -572,6 +572,14 @@ PROGRAMS: dict[str, dict] = {
         "window, and it reads no mission file "
         "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uIndexedPlayBack/uPlayBackMain.cpp:45-54)",
     },
+    "iMatlab": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "core MOOS's MATLAB mex file, started from MATLAB with the mission file, "
+        "`iMatlab('init','CONFIG_FILE',file)`, never by Antler: it reads the block named by "
+        "its MOOSNAME parameter, iMatlab by default "
+        "(MOOS_Jul2724/MOOSMatlab/iMatlab/iMatlab.cpp:352-385)",
+    },
     "uPoke": {
         "needs_process_config": False,
         "launched_manually": True,

@@ -47,9 +47,10 @@ it names the existing block.
   tools that read no mission file (the uPlayback and uIndexedPlayback GUIs, uPoke); an app
   linted in the same run needs its block unless its C++ declares it optional,
   or it is a plain CMOOSApp whose start-up compares keys with the `foo` and
-  `bar` placeholders of MOOS-IvP's GenMOOSApp template and nothing else (core
-  MOOS says nothing when its block is missing, so it runs the same without
-  one);
+  `bar` placeholders of MOOS-IvP's GenMOOSApp template and nothing else, or
+  never reads its configuration at all (no mission-reader call outside a
+  comment: core MOOS says nothing when its block is missing, so it runs the
+  same without one);
   a user catalogue says `needs_process_config = false`. A program the
   catalogue does not know is expected to have a block. In MOOS-IvP's own
   missions none of the 109 MOOSDB Run lines and 45 of the 49 pRealm Run lines

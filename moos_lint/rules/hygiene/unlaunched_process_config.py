@@ -52,9 +52,9 @@ suppress the finding on the header line.
   these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
 - `commented-runs` (boolean, default false): also report a block whose Run
   line is commented out in the ANTLER block (`//Run = uTimerScript ...`; also
-  `#Run = ...` and `/Run = ...`, which MOOS does not take for comments but
-  which launch nothing all the same: not-a-comment, R007, reports their
-  spelling).
+  `#Run = ...`, `/Run = ...` and `/* Run = ... */`, which MOOS does not take
+  for comments but which launch nothing all the same: not-a-comment, R007,
+  reports their spelling).
   Commenting a Run line out while keeping its block is how MOOS users switch a
   process off for a while (a simulator for field runs, a logger, a timer
   script; 4 of the 8 such blocks in MOOS-IvP's own missions), so by default
@@ -112,9 +112,10 @@ from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
 
-#: `//Run = X`, and `#Run = X` or `/Run = X`: not comments to MOOS (not-a-comment, R007,
-#: reports them), but a Run line its author meant to switch off all the same
-_COMMENTED_RUN = re.compile(r"^\s*(?:/+|#+)\s*run\s*=\s*\S", re.I)
+#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS
+#: (not-a-comment, R007, reports them), but a Run line its author meant to switch off
+#: all the same
+_COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*\S", re.I)
 
 
 @rule(
@@ -286,7 +287,9 @@ def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, 
                 continue
             here = where(line)
             eq = line.text.index("=")  # the one of `// Run =`: the key holds none
-            value = line.text[eq + 1 :]
+            value = line.text[eq + 1 :].rstrip()
+            if value.endswith("*/"):  # `/* Run = X @ NewConsole = false */`
+                value = value[:-2]
             run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)
             # its name or alias, a script's stem (`// Run = ./iPydyna.py` would read
             # `ProcessConfig = iPydyna`), and the name its app's main hard-codes

@@ -525,14 +525,33 @@ def _needs_block(app: AppModel, text: str) -> bool:
 
     Not when its start-up declares the block optional (AppCasting's
     ``must_have_moosblock=false``), nor when it is a plain CMOOSApp whose start-up
-    compares keys with the template's placeholders only: core MOOS says nothing of a
-    missing block (CMOOSApp reads AppTick and CommsTick with defaults, MOOSApp.cpp), so
-    such an app runs the same without one. An app whose keys cannot be seen (none
+    compares keys with the template's placeholders only, or never reads its
+    configuration at all: core MOOS says nothing of a missing block (CMOOSApp reads
+    AppTick and CommsTick with defaults, MOOSApp.cpp), so such an app runs the same
+    without one. An app whose keys cannot be seen (none
     found: it may parse its lines its own way, as pShare does) needs its block.
     """
     if OPTIONAL_BLOCK.search(text):
         return False
+    if app.base_chain[1:] == ["CMOOSApp"] and not READS_CONFIG.search(_code_only(text)):
+        return False  # a plain CMOOSApp that never reads its configuration (``OnStartUp(){
+        # return true; }``): its block, if any, is for AppTick and CommsTick alone
     return not _template_only(app)
+
+
+#: how an app reads its mission file's configuration: the mission reader (``m_MissionReader.
+#: GetConfiguration``, ``GetConfigurationParam``, ``GetValue``), or a reader of its own
+READS_CONFIG = re.compile(
+    r"\b(?:m_MissionReader|GetConfiguration\w*|GetValue|GetNextValidLine|GoTo|"
+    r"CProcessConfigReader|CMOOSFileReader|ReadConfig\w*|MissionFile|m_sMissionFile)\b"
+)
+#: the strings and comments of C++ text (comments are blanked, strings kept)
+_STRING_OR_COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|//[^\n]*|/\*.*?\*/', re.S)
+
+
+def _code_only(text: str) -> str:
+    """``text`` with its comments blanked, so that a commented-out call counts for nothing."""
+    return _STRING_OR_COMMENT.sub(lambda m: m.group(0) if m.group(0)[0] == '"' else " ", text)
 
 
 def _template_only(app: AppModel) -> bool:
