@@ -25,6 +25,11 @@ pasted into a file without its `//`), are decoration: MOOS drops them, and
 nothing was meant to be set there, so they are not reported. A line between
 two rulers further down is reported: it may be a key that lost its `=`.
 
+A markup tag alone on its line, such as `<tdma>` and `</tdma>` around the
+lines of a section, is not reported: MOOS drops it, and it is there for an app
+that reads its block's lines itself (with the mission reader's `GoTo` and
+`GetNextValidLine`), not a key that lost its `=`.
+
 A `.moos` file that is a developer's notes rather than configuration (no
 ProcessConfig block, no key MOOS knows at the top of the file, included by no
 linted file, and more unreadable lines than `key = value` ones) is read by no
@@ -53,6 +58,8 @@ write `name: value` or `name { ... }`.
 None.
 """
 
+import re
+
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.moos import block_comments, looks_commented, strip_comment
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS, conflict_marker
@@ -75,6 +82,8 @@ def check(ctx):
             continue
         if looks_commented(text):
             continue  # not-a-comment's (when MOOS keeps the line) or the nsplug rules'
+        if _MARKUP.fullmatch(strip_comment(text).strip()):
+            continue  # a section marker for an app that reads its block's lines itself
         if id(line) in closes:
             if closes[id(line)]:
                 msg = "MOOS has no `/* */` comments: this `*/` closes nothing, and the lines "
@@ -93,6 +102,9 @@ def check(ctx):
                 line=line,
             )
 
+
+#: a markup tag alone on its line (``<tdma>``, ``</tdma>``): no typo of a ``key = value``
+_MARKUP = re.compile(r"</?[A-Za-z_][\w.:-]*>")
 
 #: what a ruler line is made of (``=====``, ``-----``, ``*****``)
 _RULER = frozenset("=-*_~+. \t")
