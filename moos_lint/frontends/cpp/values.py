@@ -2230,8 +2230,8 @@ class RepositoryResolver:
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
         if cls.endswith("()"):  # a field of what a function returns: of its class
-            real = self.returned_class(cls[:-2])
-            return self(f".{real}.{names_text}") if real else None
+            real = self._through_getter(pending)
+            return self(real) if real else None
         names = set(names_text.split("|"))
         wrote = field_write_pattern(names)
         out: AbstractValue | None = None
@@ -2277,6 +2277,13 @@ class RepositoryResolver:
             self._find_naming({cls} | (self._owners - set(self._naming)))
         return self._naming[cls]
 
+    def _through_getter(self, pending: str) -> str | None:
+        """``.getX().field`` (a field of what ``getX`` returns) as ``.Class.field``, of the
+        class ``getX`` returns; None when that class is not known."""
+        _, getter, names_text = pending.split(".", 2)
+        real = self.returned_class(getter.removesuffix("()"))
+        return f".{real}.{names_text}" if real else None
+
     def returned_class(self, name: str) -> str | None:
         """The class that every definition of function ``name`` in the repository returns
         (``UniHeadingAData`` for ``const UniHeadingAData& getUniHeadingA() const``); None
@@ -2303,8 +2310,8 @@ class RepositoryResolver:
     def _declared_now(self, pending: str) -> AbstractValue | None:
         _, cls, names_text = pending.split(".", 2)
         if cls.endswith("()"):
-            real = self.returned_class(cls[:-2])
-            return self.declared(f".{real}.{names_text}") if real else None
+            real = self._through_getter(pending)
+            return self.declared(real) if real else None
         names = b"|".join(re.escape(n.encode()) for n in names_text.split("|") if n)
         if not names:
             return None
