@@ -235,9 +235,10 @@ CORRECTIONS: dict[str, dict] = {
         "177-187): uMAC reads no key of its own",
     },
     "pHelmIvP": {
-        "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH", "MODE"],
-        "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE from "
-        "the behavior file's set blocks",
+        "publishes": ["DESIRED_HEADING", "DESIRED_SPEED", "DESIRED_DEPTH"],
+        "why": "DESIRED_<DOMAIN> are named from the domain (HelmIvP.cpp:541-543); MODE and "
+        "any other mode variable only as the behavior files' set blocks name them "
+        "(ModeSet.cpp:53-91): the mission model reads those from the files",
     },
 }
 
@@ -684,6 +685,9 @@ def _linked_libs(folder: str) -> list[str]:
 #: ``m_var_index = "WPT_INDEX";``: a variable a behavior posts under a default name
 _VAR_DEFAULT = re.compile(r"\b(m_\w*var\w*)\s*=\s*\"([A-Z][A-Z0-9_]*)\"\s*;")
 _INFO_VARS = re.compile(r"addInfoVars\(\s*\"([^\"]+)\"")
+#: a behavior's constructor setting its duration to a number other than IvPBehavior's -1
+#: (``m_duration = 0;``: BHV_ConstantSpeed times out at once unless given a duration)
+_DURATION_DEFAULT = re.compile(r"^\s*m_duration\s*=\s*(-?[\d.]+)\s*;", re.MULTILINE)
 _DELEGATE_MEMBER = re.compile(r"\b(m_\w+)\s*(?:\.|->)\s*setParam\s*\(\s*param\b")
 _TAIL = re.compile(r"\+\s*\"([A-Z0-9_]+)\"\s*\)?$")
 
@@ -866,6 +870,11 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             "params_from_members": delegated,
             "param_forms": dict(sorted(forms.items())),
         }
+        dur = _DURATION_DEFAULT.search(text)
+        if dur is not None and float(dur.group(1)) != -1:
+            line = text.count("\n", 0, dur.start(1)) + 1
+            at = f"{_rel(path, src)}:{line}"
+            entry["defaults"] = {"duration": {"value": dur.group(1), "at": at}}
         bhv_corr = BEHAVIOR_CORRECTIONS.get(cls)
         if bhv_corr:
             entry["param_forms"] = dict(sorted({**forms, **bhv_corr["param_forms"]}.items()))

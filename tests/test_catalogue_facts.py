@@ -165,3 +165,19 @@ def test_mail_facts_are_what_the_moos_sources_say():
     assert {"FOO", "FOOBAR"} == TEMPLATE_MAIL_KEYS
     command = read(f"{core}/App/MOOSApp.cpp")
     assert 'GetAppName()+"_CMD"' in command and COMMAND_KEY_SUFFIX == "_CMD"
+
+
+def test_a_behaviors_own_duration_default_comes_from_its_constructor():
+    cat = stock()
+    for kind in ("BHV_ConstantSpeed", "BHV_ConstantHeading", "BHV_ConstantDepth"):
+        value, at = cat.behavior(kind).defaults["duration"]
+        assert value == "0" and _EVIDENCE.search(at) and kind + ".cpp" in at
+    # IvPBehavior's -1 (no time limit) is not recorded as a default of its own
+    assert "duration" not in cat.behavior("BHV_Waypoint").defaults
+    assert "duration" not in cat.behavior("BHV_Timer").defaults
+
+
+def test_the_helm_posts_mode_only_as_its_set_blocks_name_it():
+    # ModeSet::evaluate posts the variables its set blocks name: the mission model reads
+    # them from the behavior files, and the catalogue does not list MODE for every helm
+    assert "MODE" not in stock().app("pHelmIvP").publishes

@@ -145,6 +145,10 @@ class BehaviorInfo:
     post_suffix: str = ""
     provenance: str = ""
     forms: dict[str, tuple[str, str]] = field(default_factory=dict)
+    #: parameters whose value the behavior's constructor sets other than IvPBehavior does
+    #: (lower case) -> (value, the MOOS-IvP line that sets it): BHV_ConstantSpeed's
+    #: ``duration`` is 0, not "no time limit"
+    defaults: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 class CatalogueError(Exception):
@@ -315,6 +319,16 @@ def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
     return out
 
 
+def _defaults(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
+    """A stock behavior's own parameter defaults, each with the MOOS-IvP line that sets it."""
+    out = {}
+    for key, f in (d.get("defaults") or {}).items():
+        if isinstance(f, dict) and "value" in f:
+            at = str(f.get("at", ""))
+            out[key.lower()] = (str(f["value"]), f"moos-ivp {commit[:8]} {at}" if at else "")
+    return out
+
+
 @lru_cache(maxsize=1)
 def stock() -> Catalogue:
     """The catalogue shipped with moos-lint."""
@@ -351,6 +365,7 @@ def stock() -> Catalogue:
                 post_suffix=d.get("post_suffix", "").lower(),
                 provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}",
                 forms=_forms(d, commit),
+                defaults=_defaults(d, commit),
             )
         )
     for name in data.get("editor_behaviors", {}):
