@@ -134,6 +134,17 @@ BEHAVIOR_EXTRA_PARAMS = {
     "max_spawnings": "ivp/src/lib_helmivp/BehaviorSpec.cpp:60-85",
 }
 
+#: IvPBehavior's parameters that set one member: a later line replaces an earlier one (the
+#: helm hands a behavior's lines to setParam in order), with the lines that set them.
+BEHAVIOR_SINGLE_PARAMS = {
+    "pwt": "ivp/src/lib_behaviors/IvPBehavior.cpp:192-199",
+    "priwt": "ivp/src/lib_behaviors/IvPBehavior.cpp:192-199",
+    "priority": "ivp/src/lib_behaviors/IvPBehavior.cpp:192-199",
+    "perpetual": "ivp/src/lib_behaviors/IvPBehavior.cpp:278-281",
+    "duration": "ivp/src/lib_behaviors/IvPBehavior.cpp:285-295",
+    "updates": "ivp/src/lib_behaviors/IvPBehavior.cpp:311-316",
+}
+
 #: Hand corrections: app -> fields to add, and why.
 CORRECTIONS: dict[str, dict] = {
     "pEchoVar": {
@@ -893,6 +904,7 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
         },
         "base_classes": base_params(src, moos),
         "behavior_extra_params": BEHAVIOR_EXTRA_PARAMS,
+        "behavior_single_params": BEHAVIOR_SINGLE_PARAMS,
         "apps": dict(sorted(apps.items(), key=lambda kv: kv[0].lower())),
         "programs": PROGRAMS,
         "behaviors": behaviors,

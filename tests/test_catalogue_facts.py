@@ -181,3 +181,14 @@ def test_the_helm_posts_mode_only_as_its_set_blocks_name_it():
     # ModeSet::evaluate posts the variables its set blocks name: the mission model reads
     # them from the behavior files, and the catalogue does not list MODE for every helm
     assert "MODE" not in stock().app("pHelmIvP").publishes
+
+
+def test_which_of_two_lines_holds_follows_the_parser():
+    from moos_lint.semantics.catalogue import single_valued
+
+    cat = stock()
+    assert single_valued(cat.app("pHelmIvP").forms["apptick"][0]) == "first"
+    assert single_valued(cat.app("uTimerScript").forms["reset_max"][0]) == "last"
+    assert single_valued(cat.app("uFldNodeBroker").forms["bridge"][0]) is None
+    assert single_valued(cat.behavior("BHV_Waypoint").forms["points"][0]) is None
+    assert _EVIDENCE.search(cat.single_behavior_params["updates"])

@@ -181,6 +181,9 @@ class Catalogue:
         #: not (``executables`` in ``stock.json``: MOOS-IvP's and its core MOOS's CMake)
         self.executables: dict[str, str] = {}
         self.generic_behavior_params: set[str] = set()
+        #: IvPBehavior's keys that set one member (lower case) -> the MOOS-IvP lines that
+        #: set it (``updates``: a second line replaces the first)
+        self.single_behavior_params: dict[str, str] = {}
         #: "apps" / "behaviors" -> name (lower case) -> key (lower case) -> the older
         #: MOOS-IvP (``retired.json``'s label: ``August 2019``) that last read it
         self.retired: dict[str, dict[str, dict[str, str]]] = {}
@@ -259,6 +262,7 @@ class Catalogue:
         c.outside_behaviors = dict(self.outside_behaviors)
         c.executables = dict(self.executables)
         c.generic_behavior_params = set(self.generic_behavior_params)
+        c.single_behavior_params = dict(self.single_behavior_params)
         c.retired = self.retired
         c.source = dict(self.source)
         return c
@@ -319,6 +323,23 @@ def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
     return out
 
 
+#: value forms read as a list or a shape, which a repeated line may add to
+#: (uFldNodeBroker's ``bridge`` routes, pObstacleMgr's ``given_obstacle`` polygons)
+_LISTED_FORMS = ("fields:", "convex_polygon", "waypoints", "point")
+
+
+def single_valued(form: str) -> str | None:
+    """For a parameter's value form: which of two lines giving it holds, ``"first"``
+    (read with ``GetConfigurationParam``, which returns the first line that names the key:
+    ProcessConfigReader.cpp:312-326) or ``"last"`` (a parser that applies the block's
+    lines in turn, each setting the member); None for a form a repeated line may add to."""
+    if form.startswith("moos_"):
+        return "first"
+    if form.startswith(_LISTED_FORMS):
+        return None
+    return "last"
+
+
 def _defaults(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
     """A stock behavior's own parameter defaults, each with the MOOS-IvP line that sets it."""
     out = {}
@@ -353,6 +374,10 @@ def stock() -> Catalogue:
         )
     extra = {k.lower() for k in data.get("behavior_extra_params", {})}
     cat.generic_behavior_params = set(extra)
+    cat.single_behavior_params = {
+        k.lower(): f"moos-ivp {commit[:8]} {at}"
+        for k, at in data.get("behavior_single_params", {}).items()
+    }
     for name, d in data.get("behaviors", {}).items():
         cat.add_behavior(
             BehaviorInfo(

@@ -1,0 +1,123 @@
+"""A parameter that holds one value given twice in a block with different values (`AppTick`).
+
+## What it does
+Reports a second line for a parameter that the app or behavior keeps one
+value of, when the two lines differ:
+
+- in a ProcessConfig block, a key whose value form the catalogue records
+  (a boolean, a number, one of a set of words: uTimerScript's `reset_max`,
+  pContactMgrV20's `contact_max_age`), and every app's `AppTick`,
+  `CommsTick` and `MaxAppTick`;
+- in a behavior, such a key of its kind, and IvPBehavior's own `updates`,
+  `duration`, `perpetual` and `pwt`.
+
+Keys that may repeat are left alone: lists and shapes (uFldNodeBroker's
+`bridge`, a polygon), and every key the catalogue has no form for
+(`behaviors`, `event`, `condition`, `endflag`).
+
+The message says which line holds:
+- `AppTick`, `CommsTick` and `MaxAppTick` are read with
+  `GetConfigurationParam`, which returns the first line naming the key
+  (ProcessConfigReader.cpp): the second line is ignored;
+- an app's own parser and a behavior's `setParam` take the block's lines
+  in turn, each setting the same member: the last line wins, and the first
+  does nothing.
+
+## Why is this bad?
+Only one of the two values is used, without a word, and it is often not the
+one the author looks at: `AppTick = 10` then `AppTick = 4` runs the helm at
+10 Hz. A second `updates = RETURN_UPDATES` replaces the first variable, so
+the updates posted to the first are never applied.
+
+## Example
+```moos
+ProcessConfig = pHelmIvP
+{
+  AppTick = 10
+  AppTick = 4        // ignored: CMOOSApp reads the first
+}
+```
+
+## How to fix
+Keep one line, with the value meant.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported: lines in different branches of
+an nsplug `#ifdef`, a value holding a macro, a boolean `toggle`, and two
+lines with the same value.
+"""
+
+from __future__ import annotations
+
+import os
+
+from moos_lint.files.diagnostics import Severity, Subject
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission.unknown_parameter import block_apps
+from moos_lint.semantics.catalogue import catalogue_for, single_valued
+
+#: where GetConfigurationParam returns the first line naming its key
+_FIRST_AT = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:312-326"
+
+
+@rule(
+    code="M010",
+    name="duplicate-parameter",
+    severity=Severity.WARNING,
+    scope=Scope.FILE,
+    kinds=(Kind.MOOS, Kind.BHV),
+)
+def check(ctx):
+    if ctx.moos is not None:
+        commit = catalogue_for(ctx.run).source.get("commit", "")[:8]
+        first_at = f"moos-ivp {commit} {_FIRST_AT}".replace("  ", " ")
+        for block, app in block_apps(ctx):
+            yield from _repeats(ctx, block.params, app.name, app.forms, {}, first_at)
+    if ctx.bhv is not None:
+        single = catalogue_for(ctx.run).single_behavior_params
+        for bhv in ctx.bhv.behaviors:
+            info, _known = lookup(ctx, bhv.kind.strip())
+            if info is not None:
+                yield from _repeats(ctx, bhv.params, info.name, info.forms, single, "")
+
+
+def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str):
+    """A finding for each later line of a one-value key that differs from the first."""
+    first: dict[str, object] = {}
+    for p in params:
+        key = p.lkey
+        form = forms.get(key)
+        holds = single_valued(form[0]) if form is not None else ("last" if key in single else None)
+        value = p.value.strip()
+        if holds is None or has_macro(value) or has_macro(p.key) or value.lower() == "toggle":
+            continue
+        earlier = first.get(key)
+        if earlier is None:
+            first[key] = p
+            continue
+        before = earlier.value.strip()
+        if before == value or (form and form[0] == "bool" and before.lower() == value.lower()):
+            continue
+        if earlier.line.excludes(p.line):
+            continue  # two branches of one #ifdef
+        where = f"line {earlier.line.lineno}"
+        if earlier.line.path != p.line.path:
+            where += f" of {os.path.basename(earlier.line.path)}"
+        said = f"`{earlier.key.strip()} = {before}` ({where})"
+        if holds == "first":
+            msg = (
+                f"`{p.key.strip()} = {value}`: {owner} already has {said}, and CMOOSApp reads "
+                f"the first line naming a key ({first_at}): this line is ignored"
+            )
+        else:
+            at = form[1] if form is not None else single[key]
+            msg = (
+                f"`{p.key.strip()} = {value}`: {owner} already has {said}, and it keeps one "
+                f"value, set by each line in turn ({at}): this line wins, and {where} does "
+                "nothing"
+            )
+        yield ctx.report(p.value_span, msg, line=p.line, subject=Subject(app=owner, key=key))
