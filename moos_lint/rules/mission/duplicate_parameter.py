@@ -52,6 +52,7 @@ lines with the same value.
 from __future__ import annotations
 
 import os
+from typing import Any
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.frontends.parsers.nodes import has_macro
@@ -87,7 +88,7 @@ def check(ctx):
 
 def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str):
     """A finding for each later line of a one-value key that differs from the first."""
-    first: dict[str, object] = {}
+    first: dict[str, Any] = {}
     for p in params:
         key = p.lkey
         form = forms.get(key)
