@@ -36,6 +36,10 @@ from an upper-case prefix and a vehicle's name as given (`ACK_MESSAGE_abe`:
 uFldNodeComms posts `"ACK_MESSAGE_" + dest_name`; `RANGE_AVD_henry`:
 BHV_AvoidCollision posts `"RANGE_AVD_" + m_contact`; prefixes the catalogue
 lists) is not reported: the vehicle's name decides its case, not the writer.
+Nor is a name whose upper-case prefix the same file also ends with a macro
+(`GOTO_UPDATES_nostromo` where a line names `GOTO_UPDATES_$(VNAME3)`, and a
+launch script sets `VNAME3="nostromo"`): the name is the one that macro
+builds for one vehicle.
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
 more than 5000 variable names they configure. Two kinds of exceptions
@@ -127,7 +131,7 @@ def check(ctx):
             continue  # a condition written as a flag: invalid-parameter-value says so
         if any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
             continue
-        if _built_by_app(ctx, bare):
+        if _built_by_app(ctx, bare) or _built_by_macro(ctx, bare):
             continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
         where = f"{ref.app} `{ref.param}`"
         if not ref.wildcard and _UPPER_WILD.fullmatch(bare):
@@ -171,6 +175,24 @@ def _built_by_app(ctx, name: str) -> bool:
         if ch == "_" and name[: i + 1] in prefixes and _UPPER.fullmatch(name[:i]):
             return True
     return False
+
+
+#: an upper-case prefix ended by an nsplug macro or a run-time placeholder, as written
+_MACRO_SUFFIX = re.compile(r"\b([A-Z][A-Z0-9_]*_)[$%][({\[]")
+
+
+def _built_by_macro(ctx, name: str) -> bool:
+    """Whether ``name`` is an upper-case prefix that a line of the same file ends with a
+    macro (``GOTO_UPDATES_$(VNAME3)``), followed by a rest in another case: the name that
+    macro gives for one vehicle (``GOTO_UPDATES_nostromo``)."""
+    unit = ctx.moos if ctx.moos is not None else ctx.bhv
+    if unit is None:
+        return False
+    prefixes = {m.group(1) for line in unit.lines for m in _MACRO_SUFFIX.finditer(line.raw)}
+    return any(
+        ch == "_" and name[: i + 1] in prefixes and not _UPPER.fullmatch(name[i + 1 :])
+        for i, ch in enumerate(name)
+    )
 
 
 def _posted_in_upper_case(ctx, name: str) -> str:
