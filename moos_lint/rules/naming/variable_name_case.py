@@ -97,6 +97,7 @@ import fnmatch
 import re
 
 from moos_lint.files.diagnostics import Severity, Subject
+from moos_lint.frontends.nsplug import derived
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.variables import bare_name, unit_variables
@@ -188,11 +189,16 @@ def _built_by_macro(ctx, name: str) -> bool:
     unit = ctx.moos if ctx.moos is not None else ctx.bhv
     if unit is None:
         return False
-    prefixes = {m.group(1) for line in unit.lines for m in _MACRO_SUFFIX.finditer(line.raw)}
+    prefixes = derived(unit.expansion, "macro-ended-prefixes", lambda: _macro_ended(unit.lines))
     return any(
         ch == "_" and name[: i + 1] in prefixes and not _UPPER.fullmatch(name[i + 1 :])
         for i, ch in enumerate(name)
     )
+
+
+def _macro_ended(lines) -> frozenset[str]:
+    """The upper-case prefixes the lines end with a macro, as written."""
+    return frozenset(m.group(1) for line in lines for m in _MACRO_SUFFIX.finditer(line.raw))
 
 
 def _posted_in_upper_case(ctx, name: str) -> str:
