@@ -447,6 +447,14 @@ CORRECTIONS["pObstacleMgr"] = {
     "why": "given_obstacle is rejected (unhandled) unless string2Poly gives a convex polygon",
 }
 
+CORRECTIONS["uTimerScript"] = {
+    "param_forms": {
+        "event": {"form": "timer_event", "at": "ivp/src/uTimerScript/TS_MOOSApp.cpp:496-573"},
+    },
+    "why": "addNewEvent drops an event without var= or val= and warns about any field but "
+    "var, val, time, amt and quit, skipping it (a misspelt time= posts the event at 0)",
+}
+
 
 def _fact(app: str, key: str, why: str) -> None:
     """One more hand fact (a boolean set true, unless ``key`` says otherwise) for ``app``."""

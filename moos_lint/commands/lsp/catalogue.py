@@ -82,6 +82,8 @@ FORM_TEXT = {
     "waypoints": "a point list (`x,y : x,y`), a polygon, `empty` or `start`",
     "point": "a point: `x,y`, `x:y` or `x=..,y=..`",
     "point|start|empty": "a point (`x,y`), `start` or `empty`",
+    "timer_event": "`var=`, `val=` and optional `time=` (seconds or `min:max`) and `amt=`, "
+    "or `quit`",
 }
 
 

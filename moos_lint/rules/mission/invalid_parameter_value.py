@@ -59,6 +59,10 @@ as recorded in the catalogue with the source line that enforces it:
 - a route such as uFldNodeBroker's and uFldShoreBroker's
   `bridge = src=VAR, alias=VAR2` must have its `src=` field: `scr=VAR` is
   rejected and nothing is bridged;
+- a uTimerScript `event` must have its `var=` and `val=` fields (or be
+  `quit`), or it is dropped; any field but `var`, `val`, `time`, `amt` and
+  `quit` is warned about and skipped, so `t(ime=35` or `tme=35` posts the
+  event at time 0, before the events written above it;
 - a behavior's flag (`endflag`, `runflag`, any `*flag`) written as a
   condition, `endflag = MODE==SURVEYING`: the helm splits a flag at its first
   `=` (`setVarDataPairOnString`), so it posts `MODE` = `=SURVEYING`, a value
@@ -121,6 +125,7 @@ MOOS-IvP caveats, deliberately not reported:
 import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
+from moos_lint.frontends.parsers.bhv import split_commas
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup, own_source_keys
@@ -169,6 +174,8 @@ def problem(form: str, value: str) -> str | None:
             return None
         what = _GEOMETRY_WHAT.get(form.split("|", 1)[0], "is not read")
         return f"{what} ({verdict.reason})" if verdict.reason else what
+    if form == "timer_event":
+        return _timer_event(value)
     if form.startswith("fields:"):
         # `key=value` pairs separated by commas; the listed fields must be there
         pairs = {}
@@ -350,6 +357,40 @@ def _text_enums(ctx):
                 )
 
 
+#: the fields of a uTimerScript event (TS_MOOSApp::addNewEvent)
+_EVENT_FIELDS = ("var", "val", "time", "amt")
+#: how a problem about a field the parser warns about and skips begins
+_UNKNOWN_FIELD = "has a field"
+
+
+def _timer_event(value: str) -> str | None:
+    """Why uTimerScript drops or misreads an ``event``: its pieces, split at commas outside
+    quotes (``parseStringQ``), are ``quit`` or ``var=``, ``val=``, ``time=``, ``amt=``; an
+    event without a variable or a value is dropped, and any other field is warned about
+    and skipped, so a misspelt ``time=`` posts the event at 0."""
+    fields: dict[str, str] = {}
+    unknown: list[str] = []
+    quit = False
+    for piece, _offset in split_commas(value):
+        if piece.strip().lower() == "quit":
+            quit = True
+            continue
+        left, _eq, right = piece.partition("=")
+        key = left.strip().lower()
+        if key in _EVENT_FIELDS:
+            fields[key] = right.strip()
+        elif key:
+            unknown.append(left.strip())
+    missing = [f for f in ("var", "val") if not fields.get(f)]
+    if missing and not quit:
+        return "has no " + " or ".join(f"`{f}=` field" for f in missing)
+    if unknown:
+        listed = ", ".join(f"`{f}`" for f in (*_EVENT_FIELDS, "quit"))
+        later = " (the event is posted at time 0)" if "time" not in fields else ""
+        return f"{_UNKNOWN_FIELD} `{unknown[0]}`, none of {listed}{later}"
+    return None
+
+
 def _judge(ctx, p, value, got, owner):
     form, at = got
     if not value or has_macro(value) or has_macro(p.key):
@@ -359,6 +400,8 @@ def _judge(ctx, p, value, got, owner):
         return
     where = f" ({at})" if at else ""
     effect = "ignores it and keeps its default" if form == "moos_double" else "rejects it"
+    if why.startswith(_UNKNOWN_FIELD):
+        effect = "warns about that field and skips it"
     got = clipped(form, value) if form.startswith("clip:") and is_number(value) else None
     if got is not None:
         effect = f"takes it as {got[1]:g}, silently"

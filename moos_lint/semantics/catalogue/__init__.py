@@ -325,7 +325,7 @@ def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
 
 #: value forms read as a list or a shape, which a repeated line may add to
 #: (uFldNodeBroker's ``bridge`` routes, pObstacleMgr's ``given_obstacle`` polygons)
-_LISTED_FORMS = ("fields:", "convex_polygon", "waypoints", "point")
+_LISTED_FORMS = ("fields:", "convex_polygon", "waypoints", "point", "timer_event")
 
 
 def single_valued(form: str) -> str | None:
