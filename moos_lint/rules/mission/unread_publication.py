@@ -97,7 +97,7 @@ def readers(model: MissionModel) -> tuple[set[str], bool]:
     return names, open_ended
 
 
-def _is_read(name: str, names: set[str]) -> bool:
+def is_read(name: str, names: set[str]) -> bool:
     return name in names or any("*" in n and fnmatch.fnmatchcase(name, n) for n in names)
 
 
@@ -122,7 +122,7 @@ def check(ctx):
         if not name or name != ref.name or "*" in name or name in seen:
             continue
         seen.add(name)
-        if _is_read(name, names):
+        if is_read(name, names):
             continue
         yield ctx.report(
             ref.span,

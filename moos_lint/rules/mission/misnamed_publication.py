@@ -1,0 +1,106 @@
+"""A posted variable nothing reads, named with the words of one that is read (`UPDATES_RETURN`).
+
+## What it does
+In a mission (after nsplug expansion, with its behavior files), takes each
+variable the mission's configuration posts (a behavior flag, a uTimerScript
+event, a pMarineViewer button or action, ...) that nothing in the mission
+reads, as unread-publication finds them. It reports one whose name has the
+same `_`-separated words as a variable that is read, in another order or
+with a plural `S` more or less: `UPDATES_RETURN` where the return behavior
+reads `updates = RETURN_UPDATE`, `RETURN_UPDATES` for `RETURN_UPDATE`.
+
+Unlike unread-publication, which reports every unread posting and is off by
+default, this reports only postings that the name of a read variable says
+are meant for it: it is on by default.
+
+## Why is this bad?
+MOOS names are exact. The posting goes to a variable no one subscribes to,
+and the reader waits for its own name: the button or flag does nothing, and
+nothing says so. MOOS-IvP's minicourse missions (`s2_alpha` ... `s8_alpha`)
+post `UPDATES_RETURN=speed=1.4` from a viewer action while the return
+behavior reads `RETURN_UPDATE`, and many course missions copy it.
+
+## Example
+```moos
+ProcessConfig = pMarineViewer
+{
+  action = UPDATES_RETURN=speed=1.4    // the behavior reads RETURN_UPDATE
+}
+```
+
+## How to fix
+Post the name the reader uses.
+
+## Options
+None.
+
+MOOS-IvP caveats, deliberately not reported: as unread-publication, a
+mission that launches an app the catalogue does not know (it may read
+anything), or that shares variables with the other missions of its folder;
+names with run-time placeholders or nsplug macros.
+"""
+
+from __future__ import annotations
+
+import re
+
+from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.mission.unread_publication import is_read, readers
+from moos_lint.semantics.mission_model import mission_model
+from moos_lint.semantics.variables import PUBLISH, bare_name
+
+_NAME = re.compile(r"[A-Z][A-Z0-9_]*")
+
+
+def words(name: str) -> tuple[str, ...]:
+    """The name's `_`-separated words, a plural `S` dropped, in sorted order."""
+    return tuple(sorted(w[:-1] if len(w) > 2 and w.endswith("S") else w for w in name.split("_")))
+
+
+@rule(
+    code="M011",
+    name="misnamed-publication",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    kinds=(Kind.MOOS,),
+    fixable=True,
+)
+def check(ctx):
+    model = mission_model(ctx)
+    names, open_ended = readers(model)
+    if open_ended or model.sibling_missions:
+        return
+    by_words: dict[tuple[str, ...], set[str]] = {}
+    for read in names:
+        if _NAME.fullmatch(read) and not read.endswith("_"):
+            by_words.setdefault(words(read), set()).add(read)
+    seen: set[str] = set()
+    for ref in model.refs:
+        if ref.role != PUBLISH:
+            continue
+        name = bare_name(ref.name)
+        if not name or name != ref.name or not _NAME.fullmatch(name) or name in seen:
+            continue
+        seen.add(name)
+        if is_read(name, names):
+            continue
+        meant = sorted(by_words.get(words(name), set()) - {name})
+        if not meant:
+            continue
+        shown = " or ".join(f"`{m}`" for m in meant)
+        msg = (
+            f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads it; "
+            f"{shown}, with the same words, is read: did you mean it?"
+        )
+        fix = None
+        if len(meant) == 1 and ref.line.text == ref.line.raw:
+            span = ref.line.span(ref.start, ref.start + len(name))
+            fix = Fix(f"post `{meant[0]}`", (Edit(span, meant[0]),))
+        yield ctx.report(
+            ref.span,
+            msg,
+            line=ref.line,
+            fix=fix,
+            subject=Subject(variable=name, app=ref.app, key=ref.param),
+        )
