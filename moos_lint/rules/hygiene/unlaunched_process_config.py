@@ -106,6 +106,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
+from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import exclusive, names_match, where
 from moos_lint.rules.kit.declare import Scope, rule
@@ -287,7 +288,8 @@ def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, 
                 continue
             here = where(line)
             eq = line.text.index("=")  # the one of `// Run =`: the key holds none
-            value = line.text[eq + 1 :].rstrip()
+            # a trailing comment, as on a live line (`//Run = X @ NewConsole = false //~Y`)
+            value = strip_comment(line.text[eq + 1 :]).rstrip()
             if value.endswith("*/"):  # `/* Run = X @ NewConsole = false */`
                 value = value[:-2]
             run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)

@@ -16,6 +16,11 @@ STATION-KEEPING`, a set block's own `MODE = ACTIVE`) whose word holds a
 misspelled or never declared (or an empty name, `ACTIVE::SURVEYING`). A name
 the values hold in another case is left to condition-value-case.
 
+When the helm loads one behavior file of several (`behaviors =
+targ_$(VNAME).bhv`, made from each vehicle's `meta_*.bhv`), a condition is
+judged against the set blocks of its own file: another vehicle's modes do
+not count.
+
 It judges a variable only when every publisher of it in the mission is the
 helm's set blocks or a line whose value is written out: a variable an app
 posts, a person pokes or a launched app the catalogue does not know might
@@ -77,14 +82,15 @@ def check(ctx):
     model = mission_model(ctx)
     if model.unknown_apps or model.unresolved_behaviors:
         return  # a process or behavior the model cannot see may post any value
-    entries = _mode_entries(model)
+    entries = _mode_entries(model.behavior_files)
     if not entries:
         return
+    own = _own_entries(model)
     others = posted_values(model, with_sets=False)
     seen: set[tuple[str, int, int]] = set()
     for ref in model.waits:
         var = ref.name
-        pairs = entries.get(var)
+        pairs = own.get((ref.line.path, ref.line.lineno), {}).get(var) or entries.get(var)
         if pairs is None:
             continue
         extra = others.get(var, [])
@@ -134,13 +140,35 @@ def check(ctx):
         yield ctx.report(span, msg, line=ref.line, subject=subject)
 
 
-def _mode_entries(model) -> dict[str, list[tuple[str, str]]]:
+def _own_entries(model) -> dict[tuple[str, int], dict[str, list[tuple[str, str]]]]:
+    """(path, line) -> the set blocks of the one behavior file that holds the line, when
+    the helm loads one file of several (``behaviors = targ_$(VNAME).bhv`` names each
+    vehicle's): its conditions can only mean its own modes. Empty when the helm loads its
+    files together (several ``behaviors`` lines), or a line sits in several files (an
+    included plug): their modes are pooled."""
+    helm_lines = [
+        p
+        for proc in model.processes
+        if proc.binary.lower() == "phelmivp" and proc.block is not None
+        for p in proc.block.get("behaviors")
+    ]
+    if len(helm_lines) != 1 or len(model.behavior_files) < 2:
+        return {}
+    owners: dict[tuple[str, int], list[int]] = {}
+    for i, (_path, bf) in enumerate(model.behavior_files):
+        for line in bf.lines:
+            owners.setdefault((line.path, line.lineno), []).append(i)
+    per_file = [_mode_entries([pair]) for pair in model.behavior_files]
+    return {at: per_file[found[0]] for at, found in owners.items() if len(set(found)) == 1}
+
+
+def _mode_entries(files) -> dict[str, list[tuple[str, str]]]:
     """Mode variable -> the (prefix, value) of each value its set blocks post
     (``ACTIVE``, ``SURVEYING``: ``ModeSet::evaluate`` posts ``ACTIVE:SURVEYING``). A
     variable whose blocks hold a placeholder or a macro is left out."""
     entries: dict[str, list[tuple[str, str]]] = {}
     broken: set[str] = set()
-    for _path, bf in model.behavior_files:
+    for _path, bf in files:
         for sb in bf.sets:
             var = sb.mode_var
             prefix = ""

@@ -23,6 +23,11 @@ alone, and so is a file written for the C preprocessor (one that uses
 behavior templates of MOOS-IvP's early years were expanded with `cpp`, which
 also strips their `/* ... */` comments, and only its output reaches the helm.
 
+A line that is nothing but a template placeholder (`###Path_1###`,
+`@POINTS@`, `{{points}}`, `%%RETURN%%`: one word, no spaces) is not reported
+either: the file is the template of a generator that writes the behavior file
+the helm loads.
+
 ## Why is this bad?
 The helm reports `Problem with line N in the BehaviorSet file` and the *whole*
 behavior set fails to load: the vehicle has no behaviors at all.
@@ -54,6 +59,10 @@ from moos_lint.rules.kit.declare import Kind, Scope, rule
 #: a line shaped like one of a behavior file: a brace, a `Behavior`/`Behaviour` header,
 #: `initialize`, `set`, or `key = value`
 _SHAPED = re.compile(r"\s*(?:[{}]|behav|initiali|set\s|[\w.]+\s*=)", re.IGNORECASE)
+#: a line that is one placeholder of a template generator: `###Path_1###`, `@X@`, `{{x}}`
+_PLACEHOLDER = re.compile(
+    r"\s*(?:#{3}[A-Za-z_][\w.-]*#{3}|@[A-Za-z_][\w.-]*@|\{\{[\w.-]+\}\}|%%[A-Za-z_][\w.-]*%%)\s*"
+)
 
 
 @rule(
@@ -79,6 +88,8 @@ def check(ctx):
             continue  # an nsplug problem on this line is reported already
         if guards and any(b in guards for b in line.branches):
             continue  # a guard that breaks the file on purpose when no branch applies
+        if _PLACEHOLDER.fullmatch(line.text):
+            continue  # a generator fills it in: the helm loads the generator's output
         last = runs[-1][-1] if runs else None
         if (
             last
