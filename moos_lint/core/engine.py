@@ -398,7 +398,7 @@ def lint_files(
         result.internal_errors += errors
         for d in diags:
             found.setdefault(d.identity, d)
-    kept = run.suppress(found.values())
+    kept = run.suppress(_one_claim_per_place(found.values()))
     for r in rules:
         if r.scope is Scope.PROJECT:
             ctx = Context(r, _empty_unit(), settings, run, settings.options_for(r.name))
@@ -488,6 +488,34 @@ def lint_paths(
     ]
     result.missing = found.missing
     return result
+
+
+_RANK = {Severity.ERROR: 0, Severity.WARNING: 1, Severity.INFO: 2}
+
+
+def _one_claim_per_place(found: Iterable[Diagnostic]) -> list[Diagnostic]:
+    """The findings, one per claim: a mission rule sees a shared file once per mission,
+    and a mission whose check is incomplete says the same with a note added
+    (``...; the check is incomplete: ...``, at info). Of two findings of one rule at one
+    span where one message extends the other, the more severe is kept."""
+    out: list[Diagnostic] = []
+    by_place: dict[tuple[str, str, int, int, int, int], list[int]] = {}
+    for d in found:
+        s = d.span
+        place = (d.code, s.path, s.line, s.col, s.end_line, s.end_col)
+        merged = False
+        for i in by_place.get(place, ()):
+            other = out[i]
+            if d.message.startswith(other.message) or other.message.startswith(d.message):
+                mine = (_RANK[d.severity], len(d.message))
+                if mine < (_RANK[other.severity], len(other.message)):
+                    out[i] = d
+                merged = True
+                break
+        if not merged:
+            by_place.setdefault(place, []).append(len(out))
+            out.append(d)
+    return out
 
 
 __all__ = [
