@@ -70,7 +70,8 @@ def mission(n: int) -> str:
             out.append(f"ProcessConfig = uSimMarine_{i}\n{{\n  start_heading = 7\n")
             out.append("  start_x = 0\n  start_y = 0\n  thrust_map = 0:0, 20:1\n}\n")
         else:
-            out.append(f"Stray_{i} = 1\nProcessConfig = pBad{i}\n{{\n  x = 1\n  }}\n}}\n")
+            # a misspelt global: still reported in a mission that launches unknown apps
+            out.append(f"MOOSTimeWrap = {i}\nProcessConfig = pBad{i}\n{{\n  x = 1\n  }}\n}}\n")
     out += ["ProcessConfig = pDuplicate\n{\n}\n"] * n  # one name, many blocks
     return "".join(out)
 

@@ -18,6 +18,7 @@ from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
 from moos_lint.semantics.process_names import PREFIXED, placeholder, prefix_problem
+from moos_lint.semantics.variables import STANDARD_ACTUATORS
 
 Finding = tuple[Span, str]
 UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
@@ -629,8 +630,18 @@ def published_names(app: AppModel) -> Iterator[tuple[str, Span]]:
         yield name, p.name_span
 
 
+#: the commands a driver of a standard actuator listens for
+_STANDARD_COMMANDS = tuple("DESIRED_" + a for a in STANDARD_ACTUATORS)
+
+
 def actuator_name(app: AppModel, word_of: Callable[[str], str | None]) -> Iterator[Finding]:
-    """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR."""
+    """Published command variables naming an actuator outside THRUST / RUDDER / ELEVATOR.
+
+    An app that subscribes to a standard command (``DESIRED_THRUST``) is the actuator's
+    driver: what it publishes under an actuator word (``ZBOAT_PWM``, the sentence it sends
+    to the motors) is its own output, downstream of the convention, and is not judged."""
+    if any((s.name.text or "").startswith(_STANDARD_COMMANDS) for s in app.subscriptions):
+        return
     for p in app.publications:
         name = p.name.text
         if name is None:

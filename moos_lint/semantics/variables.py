@@ -35,6 +35,9 @@ from moos_lint.frontends.parsers.nodes import BehaviorFile, Block, MoosFile, has
 
 PUBLISH = "publish"
 SUBSCRIBE = "subscribe"
+#: the actuators of the MOOS Conventions (section 4.3): a command to one is
+#: ``DESIRED_<ACTUATOR>`` (pMarinePID posts them, uSimMarine and the drivers read them)
+STANDARD_ACTUATORS = ("THRUST", "RUDDER", "ELEVATOR")
 
 #: A piece of a line: its text and the index of its first character in ``line.text``.
 Piece = tuple[str, int]

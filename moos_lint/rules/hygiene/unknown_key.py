@@ -79,7 +79,9 @@ A top-of-file key that an app of the linted repository reads with
 end an app builds the name from (`GetValue(s + "_Longitude", lon)` reads
 `BeaconA_Longitude`). When an app asks its mission reader for a name it is
 handed (`m_MissionReader.GetValue(key, value)`), any key may be read: only a
-close misspelling of a known key is reported then.
+close misspelling of a known key is reported then. The same holds in a mission
+that launches a program neither the catalogue nor the linted C++ knows (an app
+of another repository may read `VEHICLE_CONFIG_FILE_PATH` with `GetValue`).
 
 In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
 top-of-file keys those apps read into their configuration (`log`, `log_path`,
@@ -102,7 +104,7 @@ from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.file_wide import BuiltKeys, built_keys, repo_globals
-from moos_lint.semantics.catalogue import text_format_app, text_format_schema
+from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
 ANTLER_KEYS = [
     "Run",
@@ -253,6 +255,8 @@ def _judge(
     who = "no MOOS app reads it" if where == "top-of-file" else "pAntler does not read it"
     if not names and built is not None and built.any_key:
         return  # one of the repository's apps reads a name it is handed: maybe this one
+    if not names and where == "top-of-file" and _unknown_program(ctx):
+        return  # a program moos-lint cannot see may read it with GetValue
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
         return
@@ -271,4 +275,13 @@ def _judge(
         f"unknown {where} key `{key}`: {who}; did you mean {hint}?",
         line=p.line,
         fix=fix,
+    )
+
+
+def _unknown_program(ctx) -> bool:
+    """Whether the mission launches a program that neither the catalogue nor the linted
+    C++ describes (its code, which may read any top-of-file key, is not seen)."""
+    cat = catalogue_for(ctx.run)
+    return any(
+        not has_macro(r.program) and cat.program_name(r.program) is None for r in ctx.moos.runs
     )

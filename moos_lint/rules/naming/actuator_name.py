@@ -28,7 +28,10 @@ a default that a configuration key may change). There a published name with
 an actuator word is also a command when another word picks one actuator or
 a command value (`MOTOR_LEFT`, `SERVO_2_PWM`, `PROP_PORT`, `FIN_SETPOINT`),
 unless a word says it is a report (`MOTOR_TEMPERATURE`, `SERVO_CURRENT`,
-`REPORTED_MOTOR_LEFT`, `CONSO_PROP`).
+`REPORTED_MOTOR_LEFT`, `CONSO_PROP`). An app that subscribes to
+`DESIRED_THRUST`, `DESIRED_RUDDER` or `DESIRED_ELEVATOR` is the actuators'
+driver: what it publishes (`ZBOAT_PWM`, the sentence it sends the motors) is
+its own output, downstream of the convention, and is not judged.
 
 ## Why is this bad?
 The MOOS Conventions (section 4.3) know three actuators: THRUST, RUDDER and
@@ -64,9 +67,9 @@ import fnmatch
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.semantics.variables import bare_name, unit_variables
+from moos_lint.semantics.variables import STANDARD_ACTUATORS, bare_name, unit_variables
 
-STANDARD = ("THRUST", "RUDDER", "ELEVATOR")
+STANDARD = STANDARD_ACTUATORS
 _COMMAND_WORDS = {"CMD", "COMMAND"}
 #: words that make a name a report of an actuator, not a command to it
 REPORT_WORDS = {
