@@ -81,7 +81,8 @@ end an app builds the name from (`GetValue(s + "_Longitude", lon)` reads
 handed (`m_MissionReader.GetValue(key, value)`), any key may be read: only a
 close misspelling of a known key is reported then. The same holds in a mission
 that launches a program neither the catalogue nor the linted C++ knows (an app
-of another repository may read `VEHICLE_CONFIG_FILE_PATH` with `GetValue`).
+of another repository may read `VEHICLE_CONFIG_FILE_PATH` with `GetValue`),
+for a key shaped like a name an app could ask for.
 
 In a mission that runs one of goby's apps (pAcommsHandler, iFrontSeat, ...), the
 top-of-file keys those apps read into their configuration (`log`, `log_path`,
@@ -96,6 +97,7 @@ misspellings this rule is for.
 """
 
 import difflib
+import re
 from collections.abc import Sequence
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
@@ -255,7 +257,7 @@ def _judge(
     who = "no MOOS app reads it" if where == "top-of-file" else "pAntler does not read it"
     if not names and built is not None and built.any_key:
         return  # one of the repository's apps reads a name it is handed: maybe this one
-    if not names and where == "top-of-file" and _unknown_program(ctx):
+    if not names and where == "top-of-file" and _IDENT.fullmatch(key) and _unknown_program(ctx):
         return  # a program moos-lint cannot see may read it with GetValue
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
@@ -276,6 +278,11 @@ def _judge(
         line=p.line,
         fix=fix,
     )
+
+
+#: a key an app may ask for by name (``GetValue("VEHICLE_CONFIG_FILE_PATH", ...)``); not
+#: ``10    paused``, a line pasted with its number
+_IDENT = re.compile(r"[A-Za-z_][\w.:-]*")
 
 
 def _unknown_program(ctx) -> bool:
