@@ -246,6 +246,38 @@ def link_apps(apps: list[AppModel], strays: bool = False) -> None:
             _process_name(app)
 
 
+def sibling_apps(app: AppModel) -> list[AppModel]:
+    """The other programs of a folder that builds several (``add_executable(pCommand
+    command.cpp)`` and ``add_executable(pStatus status.cpp)`` side by side): one model per
+    other file with a ``main``, holding that file and the folder's files without one.
+    The folder's own model names one app; these name the rest."""
+    mains = [f for f in app.files if f.has_main]
+    if len(mains) < 2 or not app.is_app:
+        return []
+    shared = [f for f in app.files if not f.has_main]
+    bases: dict[str, list[str]] = {}
+    for f in app.files:
+        for c in f.classes:
+            bases.setdefault(c.name, []).extend(c.bases)
+    for name in app.base_chain[1:]:  # (the chain may cross folders: keep what was found)
+        bases.setdefault(name, [])
+    found: list[AppModel] = []
+    names = {app.process_name}
+    for main in mains:
+        if any(c is app.app_class for c in main.classes):
+            continue
+        sub = AppModel(folder=app.folder, files=[main, *shared], backend=app.backend)
+        _find_app_class(sub, bases)
+        if not sub.is_app or sub.app_class is app.app_class:
+            continue
+        _process_name(sub)
+        named = sub.process_name_source in ("run", "cmake")
+        if sub.process_name and named and sub.process_name not in names:
+            names.add(sub.process_name)
+            found.append(sub)
+    return found
+
+
 def base_chain(name: str, bases: dict[str, list[str]], seen: frozenset = frozenset()) -> list[str]:
     """``[name, ..., MOOS base]`` when ``name`` derives from a MOOS app base, else []."""
     if name in APP_BASES:

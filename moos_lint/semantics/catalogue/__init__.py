@@ -732,9 +732,13 @@ def catalogue_for(run: RunView) -> Catalogue:
         # the config loader validated the file; a file broken since is skipped
         with contextlib.suppress(CatalogueError):
             load_user_catalogue(path, cat)
-    for unit in run.units:
-        app = unit.cpp
-        if app is not None and app.is_app and app.process_name:
+    apps = [u.cpp for u in run.units if u.cpp is not None]
+    if apps:  # (only a run with C++ loads the C++ front end)
+        from moos_lint.frontends.cpp.app import sibling_apps
+
+        apps += [sub for app in apps for sub in sibling_apps(app)]  # a folder of programs
+    for app in apps:
+        if app.is_app and app.process_name:
             named = _fixed_name(app)
             if named is None:
                 _add_own(cat, _repo_app(app, app.process_name, run.sources))
