@@ -14,6 +14,7 @@ from typing import Any
 from moos_lint.files.diagnostics import Edit, Fix, Span
 from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp import values
+from moos_lint.frontends.cpp.app import sibling_apps
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
 from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
@@ -37,6 +38,12 @@ def _app_label(app: AppModel) -> str:
 
 
 def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator[Finding]:
+    """The process name of each program the folder builds (see :func:`sibling_apps`)."""
+    for one in (app, *sibling_apps(app)):
+        yield from _process_name_prefix(one, exempt)
+
+
+def _process_name_prefix(app: AppModel, exempt: tuple[str, ...]) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_app or not name or app.process_name_span is None:
         return
@@ -59,6 +66,12 @@ def process_name_prefix(app: AppModel, exempt: tuple[str, ...] = ()) -> Iterator
 
 
 def instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
+    """Each program of the folder whose app class derives from CMOOSInstrument."""
+    for one in (app, *sibling_apps(app)):
+        yield from _instrument_app_prefix(one)
+
+
+def _instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_instrument or not name or app.app_class is None:
         return

@@ -38,7 +38,9 @@ CMake `add_executable(pName ...)` of the folder (read as text; of a folder
 that builds several programs, the one whose source list holds the app class's
 files), else the folder name (never for a folder that builds several programs
 and none clearly this app). It reports on the `Run` literal, or on the app class when the
-name comes from CMake or the folder. A program the linted C++ builds is reported
+name comes from CMake or the folder. A folder that builds several programs
+(`add_executable(source_node source_node.cpp)`, `add_executable(sink_node
+sink_node.cpp)`) has each of them judged. A program the linted C++ builds is reported
 there once, not again on each Run line that launches it. Only folders with a class derived from
 CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps. A name in capitals
 with an underscore (`add_executable(MOOSAPPFACTORY_NAME ...)`) is the
