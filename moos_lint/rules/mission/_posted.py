@@ -13,7 +13,13 @@ _RELATION = re.compile(r'\s*(==|!=|=)\s*("[^"]*"|[^\s()"]+)')
 _VALUE_END = re.compile(r"#|\[if\]|\{|//")
 _EVENT_VAL = re.compile(r"\bval\s*=\s*([^,]*)", re.IGNORECASE)
 #: publishers whose value is written in the mission (the others may post anything)
-WRITTEN = ("config", "behavior")
+_WRITTEN = ("config", "behavior")
+
+
+def all_written(publishers) -> bool:
+    """Whether every publisher is a line of the mission whose value is written out (not
+    an app, a poke or another community, which may post anything)."""
+    return all(p.how in _WRITTEN and p.line is not None for p in publishers)
 
 
 def compared(ref) -> tuple[str, str, int] | None:
@@ -29,6 +35,19 @@ def compared(ref) -> tuple[str, str, int] | None:
     if not word or "$" in word or is_number(word):  # lib_logic's test (ParseNode.cpp)
         return None
     return m.group(1), word, start
+
+
+def compared_once(ref, seen: set[tuple[str, int, int]]) -> tuple[str, str, int] | None:
+    """:func:`compared`, once per place: a behavior file that several missions load (or a
+    line reached twice) is judged once within a check; ``seen`` holds the places so far."""
+    found = compared(ref)
+    if found is None:
+        return None
+    key = (ref.line.path, ref.line.lineno, found[2])
+    if key in seen:
+        return None
+    seen.add(key)
+    return found
 
 
 def posted_values(model, with_sets: bool = True) -> dict[str, list[str | None]]:

@@ -45,7 +45,7 @@ from __future__ import annotations
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission._posted import WRITTEN, compared, posted_values
+from moos_lint.rules.mission._posted import all_written, compared_once, posted_values
 from moos_lint.semantics.mission_model import mission_model
 
 
@@ -71,16 +71,12 @@ def check(ctx):
         if not values or None in values:
             continue
         pubs = model.published_by(var)
-        if not pubs or any(p.how not in WRITTEN or p.line is None for p in pubs):
+        if not pubs or not all_written(pubs):
             continue
-        found = compared(ref)
+        found = compared_once(ref, seen)
         if found is None:
             continue
         op, word, start = found
-        key = (ref.line.path, ref.line.lineno, start)
-        if key in seen:
-            continue
-        seen.add(key)
         known = {v for v in values if v is not None}
         fields = known | {f.strip() for v in known for f in v.split(":")} if op == "==" else known
         if word in fields:

@@ -59,10 +59,7 @@ from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup
 from moos_lint.rules.mission.unknown_parameter import block_apps
-from moos_lint.semantics.catalogue import catalogue_for, single_valued
-
-#: where GetConfigurationParam returns the first line naming its key
-_FIRST_AT = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:312-326"
+from moos_lint.semantics.catalogue import FIRST_LINE_AT, catalogue_for, single_valued
 
 
 @rule(
@@ -75,7 +72,7 @@ _FIRST_AT = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:31
 def check(ctx):
     if ctx.moos is not None:
         commit = catalogue_for(ctx.run).source.get("commit", "")[:8]
-        first_at = f"moos-ivp {commit} {_FIRST_AT}".replace("  ", " ")
+        first_at = f"moos-ivp {commit} {FIRST_LINE_AT}"
         for block, app in block_apps(ctx):
             yield from _repeats(ctx, block.params, app.name, app.forms, {}, first_at)
     if ctx.bhv is not None:

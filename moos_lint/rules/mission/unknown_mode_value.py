@@ -64,7 +64,7 @@ import difflib
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission._posted import WRITTEN, compared, posted_values
+from moos_lint.rules.mission._posted import all_written, compared_once, posted_values
 from moos_lint.semantics.mission_model import mission_model
 
 #: how many of a variable's values a message lists
@@ -96,17 +96,12 @@ def check(ctx):
         extra = others.get(var, [])
         if None in extra:
             continue
-        pubs = model.published_by(var)
-        if any(p.how not in WRITTEN or p.line is None for p in pubs):
+        if not all_written(model.published_by(var)):
             continue
-        found = compared(ref)
+        found = compared_once(ref, seen)
         if found is None:
             continue
         op, word, start = found
-        key = (ref.line.path, ref.line.lineno, start)
-        if key in seen:
-            continue
-        seen.add(key)
         every = _reached(pairs, {v for v in extra if v is not None})
         if not every:
             continue

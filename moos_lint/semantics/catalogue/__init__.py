@@ -328,11 +328,15 @@ def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
 _LISTED_FORMS = ("fields:", "convex_polygon", "waypoints", "point", "timer_event")
 
 
+#: where ``GetConfigurationParam`` returns the first line of a block that names its key
+FIRST_LINE_AT = "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:312-326"
+
+
 def single_valued(form: str) -> str | None:
     """For a parameter's value form: which of two lines giving it holds, ``"first"``
-    (read with ``GetConfigurationParam``, which returns the first line that names the key:
-    ProcessConfigReader.cpp:312-326) or ``"last"`` (a parser that applies the block's
-    lines in turn, each setting the member); None for a form a repeated line may add to."""
+    (read with ``GetConfigurationParam``: :data:`FIRST_LINE_AT`) or ``"last"`` (a parser
+    that applies the block's lines in turn, each setting the member); None for a form a
+    repeated line may add to."""
     if form.startswith("moos_"):
         return "first"
     if form.startswith(_LISTED_FORMS):
