@@ -61,8 +61,8 @@ class RunMemos:
     #: behavior kind (lower case) -> the variables the project's own C++ of it posts, and
     #: whether those are all it may post
     repo_behavior_posts: dict[str, tuple[frozenset[str], bool]] = field(default_factory=dict)
-    #: ``KIND@folder`` -> the keys the project's own copy of behavior KIND, beside a helm
-    #: it builds itself above that folder, compares with
+    #: ``KIND@helm source folders`` -> the keys the project's own copy of behavior KIND,
+    #: beside those helms it builds itself, compares with
     repo_behavior_keys: dict[str, frozenset[str]] = field(default_factory=dict)
     #: folder -> the source folders holding a helm of the project's own at or above it
     helm_sources: dict[str, list[str]] = field(default_factory=dict)

@@ -130,15 +130,19 @@ def own_source_keys(ctx: Context, kind: str, bhv_path: str) -> frozenset[str]:
     in a ``src`` (or ``ivp/src``) folder at or above the behavior file's, and the copy
     beside it (``src/*/BHV_X.cpp``): a few look-ups, not a walk of the project (the
     language server asks at every edit). Empty when there is no such helm or copy."""
-    memo = ctx.run.memos.repo_behavior_keys
-    key = f"{kind}@{os.path.dirname(os.path.abspath(bhv_path))}"
-    if key in memo:
-        return memo[key]
-    keys: set[str] = set()
     folder = os.path.dirname(os.path.abspath(bhv_path))
     sources = ctx.run.memos.helm_sources.get(folder)
     if sources is None:
         sources = ctx.run.memos.helm_sources[folder] = _helm_sources(folder)
+    if not sources:
+        return frozenset()
+    # by the helms found, not by the mission's folder: the missions of a tree share them
+    memo = ctx.run.memos.repo_behavior_keys
+    key = f"{kind}@{os.pathsep.join(sources)}"
+    found = memo.get(key)
+    if found is not None:
+        return found
+    keys: set[str] = set()
     for src in sources:
         copies = ctx.run.memos.helm_copies.get(src)
         if copies is None:
