@@ -356,6 +356,83 @@ def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
     assert two == one
 
 
+_RULE_BATCHES_DONE: list[int] = []
+
+
+def _die_after_one(b, batch):
+    """In a rule worker: check one folder, then die part way through the next."""
+    if _RULE_BATCHES_DONE:
+        os._exit(3)
+    _RULE_BATCHES_DONE.append(b)
+    return _REAL_UNIT_RULES(b, batch)
+
+
+_REAL_UNIT_RULES = parallel._unit_rules
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+def test_a_rule_worker_that_dies_part_way_keeps_what_it_wrote(monkeypatch):
+    """The folders a dying rule worker finished count; the one it died in is checked again
+    by the main process, and the output is that of one process."""
+    settings = resolve_settings([FIXTURES], None)
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    monkeypatch.setattr(parallel, "_unit_rules", _die_after_one)
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
+    assert two == one
+    assert not _RULE_BATCHES_DONE  # the worker's count stayed in the worker
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+def test_each_rule_folder_is_taken_once_from_the_queue():
+    n = 1000
+    queue = parallel._task_queue(n)
+    r, w = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # a second process takes from the same queue
+        status = 1
+        try:
+            got = b"".join(b.to_bytes(4, "little") for b in parallel._take(queue))
+            os.write(w, got)
+            status = 0
+        finally:
+            os._exit(status)
+    os.close(w)
+    here = list(parallel._take(queue))
+    os.waitpid(pid, 0)
+    there_bytes = b""
+    while chunk := os.read(r, 65536):
+        there_bytes += chunk
+    os.close(r)
+    os.close(queue)
+    there = [
+        int.from_bytes(there_bytes[i : i + 4], "little") for i in range(0, len(there_bytes), 4)
+    ]
+    assert sorted(here + there) == list(range(n))
+
+
+@pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
+def test_a_system_without_a_task_pipe_checks_every_unit_here(monkeypatch):
+    settings = resolve_settings([FIXTURES], None)
+    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+
+    def full(n):
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(parallel, "_task_queue", full)
+    two = render(
+        "json",
+        engine.lint_paths(
+            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
+        ),
+    )
+    assert two == one
+
+
 def _no_locks(*args, **kwargs):
     raise OSError(38, "Function not implemented")  # sem_open without /dev/shm
 
