@@ -54,6 +54,7 @@ MOOS-IvP caveats, deliberately not reported:
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.spelling import cased_like
 from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission.unknown_parameter import suggestions
 from moos_lint.semantics.catalogue import catalogue_for
@@ -79,7 +80,7 @@ def check(ctx):
             if key in own_source_keys(ctx, bhv.kind.strip(), ctx.path):
                 continue  # the project's own copy of the behavior reads it
             old = catalogue_for(ctx.run).retired_key("behaviors", info.name, key)
-            close = suggestions(key, info.params)
+            close = [cased_like(p.key.strip(), c) for c in suggestions(key, info.params)]
             msg = f"`{p.key.strip()}`: {info.name} has no such parameter"
             if old is not None:
                 msg = (

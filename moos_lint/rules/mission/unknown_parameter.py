@@ -109,6 +109,7 @@ from moos_lint.files.launch import scripts_beside
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.file_wide import built_keys, file_wide
+from moos_lint.rules.kit.spelling import cased_like
 from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
 _WORD = re.compile(r"[a-z_][a-z0-9_]*")
@@ -216,7 +217,8 @@ def check(ctx):
                     continue
                 span = Span(span.path, span.line, span.col, span.line, span.col + len(word))
             old = catalogue_for(ctx.run).retired_key("apps", app.name, word)
-            close = suggestions(word, app.params)
+            written = p.key.strip().split("[", 1)[0].strip()
+            close = [cased_like(written, c) for c in suggestions(word, app.params)]
             msg = f"`{p.key.strip()}`: {app.name} does not read this parameter"
             if old is not None:
                 msg = (
