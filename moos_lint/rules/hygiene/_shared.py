@@ -6,6 +6,9 @@
   later ``#ifdef ROLE MIDDLE``).
 - :func:`names_match`: a process or block name compared the way MOOS compares
   it (without regard to case), where an unexpanded ``$(X)`` matches anything.
+- :func:`near_name`: the one name of a list a process or block name was probably
+  meant as (a typo or two, or a word or number added), for the hint that ties an
+  unread block (H001) to a launched process without one (H002).
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ import re
 
 from moos_lint.frontends.nsplug import Expansion, Line
 from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.spelling import typos
 
 _MACRO = re.compile(r"[$%]\([^()]*\)")
 
@@ -83,3 +87,29 @@ def names_match(a: str, b: str) -> bool:
 
 def where(line: Line) -> str:
     return f"{os.path.basename(line.path)}:{line.lineno}"
+
+
+#: the most names :func:`near_name` compares a name with
+NEAR_NAMES_COMPARED = 40
+
+
+def near_name(name: str, others) -> str | None:
+    """The one of ``others`` that ``name`` is probably meant as: at most two typos apart
+    (``pMarinePIDD``), or one of them is the other with a word or number added
+    (``uFldHazardMgrX`` for ``uFldHazardMgr``, ``pShare2``); None when no name, or more
+    than one, is that near. Names with a macro and short names (under 5 letters) are
+    never compared, and neither are more than :data:`NEAR_NAMES_COMPARED` others (a
+    hint, not worth a time that grows with the square of a generated mission's size)."""
+    if has_macro(name) or len(name) < 5 or len(others) > NEAR_NAMES_COMPARED:
+        return None
+    low = name.lower()
+    found: list[str] = []
+    for other in others:
+        lo = other.lower()
+        if lo == low or has_macro(other) or len(other) < 5:
+            continue
+        longer, shorter = (lo, low) if len(lo) > len(low) else (low, lo)
+        added = longer.startswith(shorter) and len(longer) - len(shorter) <= 8
+        if (added or typos(lo, low) <= 2) and other not in found:
+            found.append(other)
+    return found[0] if len(found) == 1 else None

@@ -18,7 +18,10 @@ found for NAME"; core MOOS apps such as pShare say nothing and silently share
 nothing. (pLogger is the exception: without a block it logs every variable.)
 The usual causes are a forgotten `#include plug_X.moos`, an
 `#include plugs.moos <tag>` naming a section the plug file lacks, or an alias
-(`~ pShare_B`) whose block was never written.
+(`~ pShare_B`) whose block was never written. When exactly one block that no
+Run line starts has a name near the process's (a typo or two apart, or one
+name the other with a word or number added), the finding names it: it is
+probably the block meant (unlaunched-process-config, H001, reports it).
 
 ## Example
 ```moos
@@ -73,7 +76,7 @@ a match: in the branch that launches the process, the block is missing.
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import exclusive, names_match
+from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.semantics.catalogue import catalogue_for
 
@@ -104,6 +107,7 @@ def check(ctx):
                 any_name.append(b)
             else:
                 by_name.setdefault(b.name.lower(), []).append(b)
+    unread: dict | None = None  # the blocks no Run line names, by name
     for run in moos.runs:
         name = run.name
         if not name or has_macro(name) or has_macro(run.binary):
@@ -141,8 +145,31 @@ def check(ctx):
             )
         else:
             then = ": it runs on its defaults"
+        if unread is None:
+            unread = _unread_blocks(moos, cat)
+        near = near_name(reads[0], unread)
+        if near is not None:
+            then += (
+                f"; block `{near}` ({where(unread[near].header)}), which no Run line starts, "
+                "may be meant for it"
+            )
         yield ctx.report(
             run.name_span,
             f"`{name}` is launched but {why}{then}",
             line=run.param.line,
         )
+
+
+def _unread_blocks(moos, cat) -> dict:
+    """The blocks whose name no Run line of the mission gives (the ANTLER block and names
+    with a macro aside), by name as written: the first of each name."""
+    launched = {n.lower() for run in moos.runs for n in cat.block_names(run)}
+    if any(has_macro(n) for n in launched):
+        return {}  # a Run name with a macro may read any block
+    found: dict = {}
+    for b in moos.blocks:
+        if b.header is None or not b.name or has_macro(b.name) or b.lname == "antler":
+            continue
+        if b.lname not in launched:
+            found.setdefault(b.name, b)
+    return found

@@ -19,7 +19,10 @@ the mission believe the process runs. Often the block's name and the Run
 line's name differ (a block written for `iGPS` while `iGPS_KF` is launched,
 a Run line naming the plug file `uProcessWatch_fld` instead of the program):
 then the launched process runs without its configuration too, and
-missing-process-config (H002) reports its Run line.
+missing-process-config (H002) reports its Run line. When exactly one launched
+process without a block of its own has a name near the block's (a typo or two
+apart, or the block's name with a word or number added: `uFldHazardMgrX`),
+the finding names it, and H002's finding names the block.
 
 ## Example
 ```moos
@@ -108,7 +111,7 @@ from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
-from moos_lint.rules.hygiene._shared import exclusive, names_match, where
+from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
@@ -155,6 +158,7 @@ def check(ctx):
     commented: tuple[dict[str, str], dict[str, str]] | None = None
     scripts: tuple[frozenset[str], dict[str, str]] | None = None  # what launched scripts quote
     patched: frozenset[str] | None = None  # what the nspatch patches beside it launch
+    blockless: list[str] | None = None  # what launched processes read that has no block
     for block in moos.blocks:
         if block.header is None or not block.name or block.lname == "antler":
             continue
@@ -182,6 +186,7 @@ def check(ctx):
             continue  # an nspatch patch or a shell script beside the mission launches it
         why = elsewhere.get(block.lname)
         advice = "rename the block"
+        near = None
         if why is None:
             if commented is None:
                 commented = _commented_runs(moos, cat, ctx.path)
@@ -191,11 +196,27 @@ def check(ctx):
                 continue  # switched off on purpose
             why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
             advice = "launch it or delete the block"
-        yield ctx.report(
-            block.name_span,
-            f"no process reads block `{block.name}`: {why} ({advice})",
-            line=block.header,
-        )
+            if not hint:
+                if blockless is None:
+                    blockless = _blockless(moos, reads)
+                near = near_name(block.name, blockless)
+        msg = f"no process reads block `{block.name}`: {why} ({advice})"
+        if near is not None:  # (an extension of the plain message: see _one_claim_per_place)
+            msg += f"; `{near}` is launched with no block of its own: is the block meant for it?"
+        yield ctx.report(block.name_span, msg, line=block.header)
+
+
+def _blockless(moos, reads) -> list[str]:
+    """The names launched processes read whose block the mission lacks."""
+    blocks = {b.lname for b in moos.blocks if b.header is not None and b.name}
+    return [
+        reads[id(run)][0]
+        for run in moos.runs
+        if reads[id(run)]
+        and run.script_block is None  # a script reads its configuration its own way
+        and not has_macro(run.name)
+        and not any(n.lower() in blocks for n in reads[id(run)])
+    ]
 
 
 def _reads_other(runs, reads) -> dict[str, str]:
