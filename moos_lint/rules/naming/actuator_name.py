@@ -194,7 +194,7 @@ def check(ctx):
         bare = bare_name(ref.name)
         if not bare:
             continue
-        seen.add((ref.span.line, bare))
+        seen.add((ref.line.lineno, bare))  # (the line of ref.span, without making it)
         word = actuator_word(bare, words)
         if word is None or any(fnmatch.fnmatchcase(ref.name, a) for a in allow):
             continue

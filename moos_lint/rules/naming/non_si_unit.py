@@ -112,7 +112,7 @@ def check(ctx):
         bare = bare_name(ref.name)
         if not bare:
             continue
-        seen.add((ref.span.line, bare))
+        seen.add((ref.line.lineno, bare))  # (the line of ref.span, without making it)
         word = unit_word(bare, units, degree_units, degree_words)
         if word is None:
             continue
