@@ -599,7 +599,7 @@ class _Builder:
         pre = self.run.preprocessor
         me = _norm(self.m.path)
         generated = os.path.basename(me).startswith("targ_")
-        for cand in _missions_beside(self.run, folder, generated):
+        for cand in missions_beside(self.run, folder, generated):
             if cand == me:
                 continue
             exp = pre.expand(cand)
@@ -633,7 +633,7 @@ def _configured_posts(bhv: Behavior, info: BehaviorInfo) -> list[tuple[str, Line
     return found
 
 
-def _missions_beside(run: RunView, folder: str, generated: bool = False) -> list[str]:
+def missions_beside(run: RunView, folder: str, generated: bool = False) -> list[str]:
     """The ``.moos`` files of ``folder`` that may be missions (normalised, sorted), once
     per run: the missions of a folder all look at the same ones. nsplug's outputs
     (``targ_*.moos``) are left out, being copies of the templates beside them, unless
@@ -799,5 +799,6 @@ __all__ = [
     "Publisher",
     "behavior_paths",
     "mission_model",
+    "missions_beside",
     "model_of",
 ]

@@ -15,9 +15,9 @@ import re
 
 from moos_lint.files.source import read_bytes
 from moos_lint.files.walk import project_walk
-from moos_lint.frontends.nsplug import parsed
+from moos_lint.frontends.nsplug import derived, parsed
 from moos_lint.frontends.parsers.moos import parse_moos
-from moos_lint.frontends.parsers.nodes import Block, has_macro
+from moos_lint.frontends.parsers.nodes import Block, MoosFile, has_macro
 from moos_lint.semantics.run_state import RunView
 from moos_lint.semantics.variables import app_of
 
@@ -131,4 +131,62 @@ def received(run: RunView, routes: set[str], var: str) -> bool:
     return any(var in sent.get(r, ()) for r in routes)
 
 
-__all__ = ["input_routes", "output_shares", "received", "shared_out"]
+def pshare_routes(moos: MoosFile) -> tuple[set[str], set[str]]:
+    """The routes the pShare processes a mission launches listen on, and those they send
+    on (worked out once per expansion: every mission of a folder asks about each other
+    one). The block of a pShare no Run line starts shares nothing."""
+    return derived(moos.expansion, "pshare-routes", lambda: _pshare_routes(moos))
+
+
+def _pshare_routes(moos: MoosFile) -> tuple[set[str], set[str]]:
+    aliases = {r.name.lower(): r.binary for r in moos.runs if r.name}
+    ins: set[str] = set()
+    outs: set[str] = set()
+    for block in moos.blocks:
+        if block.lname not in aliases or app_of(block.name, aliases) != "pshare":
+            continue
+        ins |= input_routes(block)
+        for param in block.get("output"):
+            for _var, routes in output_shares(param.value):
+                outs.update(routes)
+    return ins, outs
+
+
+def share_partners(run: RunView, path: str, moos: MoosFile) -> list[tuple[str, MoosFile, str]]:
+    """The missions of ``path``'s folder that pShare ties to it: ``(path, mission, route)``
+    for each whose pShare listens on a route this one sends on, or sends on one this one
+    listens on. Missions in other folders are not looked at: a route such as
+    ``localhost:9200`` names a port of one machine, which unrelated missions of a
+    project reuse. nsplug's outputs (``targ_*.moos``) pair only with each other."""
+    from moos_lint.semantics.mission_model import missions_beside
+
+    ins, outs = pshare_routes(moos)
+    if not ins and not outs:
+        return []
+    me = os.path.normpath(os.path.abspath(path))
+    generated = os.path.basename(me).startswith("targ_")
+    found: list[tuple[str, MoosFile, str]] = []
+    for cand in missions_beside(run, os.path.dirname(me), generated):
+        if cand == me:
+            continue
+        exp = run.preprocessor.expand(cand)
+        if exp.read_problem is not None:
+            continue
+        other = parsed(exp, parse_moos)
+        if not other.is_mission:
+            continue
+        their_ins, their_outs = pshare_routes(other)
+        common = sorted((outs & their_ins) | (ins & their_outs))
+        if common:
+            found.append((cand, other, common[0]))
+    return found
+
+
+__all__ = [
+    "input_routes",
+    "output_shares",
+    "pshare_routes",
+    "received",
+    "share_partners",
+    "shared_out",
+]

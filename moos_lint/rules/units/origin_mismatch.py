@@ -1,0 +1,151 @@
+"""Two missions tied by pShare, each with its own local-grid origin.
+
+## What it does
+Reports a mission's `LatOrigin` when a mission of the same folder that pShare
+ties to it (the pShare one launches sends on a route the other's listens on:
+`output = ..., route=localhost:9200` in a vehicle, `input = route=localhost:9200`
+in the shoreside) sets an origin more than `min-distance` metres (10 by
+default) away. Both origins are literal numbers after nsplug expansion, each the one
+line MOOS reads.
+
+## Why is this bad?
+Local x and y are metres east and north of the origin (the MOOS
+conventions: a local MOOSGrid about `LatOrigin`/`LongOrigin`). A vehicle that
+shares `NODE_REPORT` (its `X`, `Y`), `VIEW_POINT`, `VIEW_SEGLIST` or a
+waypoint update with a shoreside that has another origin puts every one of
+them that far off in the shoreside's grid: pMarineViewer draws the vehicle in
+the wrong place, and shoreside apps that compare positions (uFldNodeComms'
+ranges, uFldCollisionDetect, contact managers fed by the shoreside) work on
+shifted coordinates. Nothing warns: each community is consistent on its own.
+This happens when one file of a pair keeps a lab's template origin
+(Forest Lake, `43.8253, -70.3304`) while the other was moved to the field.
+
+Deliberately not reported:
+- an origin holding a macro (`$(LAT)`), missing, not a number, or set in
+  `#ifdef` branches: unknown here (latlong-origin, U004, judges the lines
+  themselves);
+- `LatOrigin = 0, LongOrigin = 0`, the "no geodesy" choice of simulations;
+- a pShare block no Run line starts (`//Run = pShare`): it shares nothing;
+- ties made at run time by uFldNodeBroker and uFldShoreBroker, whose routes
+  the brokers exchange while the missions run;
+- missions in other folders, even when a route matches: a route such as
+  `localhost:9200` names a port of one machine, which unrelated missions of a
+  repository reuse. nsplug's outputs (`targ_*.moos`) are compared only with
+  each other.
+
+## Example
+```moos
+// alpha.moos
+LatOrigin  = 43.825300
+LongOrigin = -70.330400
+ProcessConfig = pShare
+{
+  output = src_name=NODE_REPORT_LOCAL, dest_name=NODE_REPORT, route=localhost:9200
+}
+
+// shoreside.moos, in the same folder
+LatOrigin  = 42.358456
+LongOrigin = -71.087589
+ProcessConfig = pShare
+{
+  input = route = localhost:9200
+}
+```
+
+## How to fix
+Give the missions one origin, best from one plug that both include
+(MOOS-IvP's missions include `plug_origin_warp.moos`).
+
+## Options
+- `min-distance` (number, default 10): how many metres apart two origins must
+  be to be reported.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+
+from moos_lint.files.diagnostics import Severity
+from moos_lint.frontends.nsplug import derived
+from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.units.latlong_origin import _effective, _number
+from moos_lint.semantics.shares import share_partners
+
+#: the mean radius of the Earth, metres (enough for a distance told in metres or km)
+_EARTH = 6_371_000.0
+
+
+def origin(moos):
+    """``(lat, lon, the LatOrigin line's parameter, the origin as written)`` of a mission
+    whose origin is known: one line of each that MOOS reads, literal numbers in range,
+    not both 0. Once per expansion (each mission of a folder asks about the others)."""
+    return derived(moos.expansion, "literal-origin", lambda: (_origin(moos),))[0]
+
+
+def _origin(moos):
+    order = {id(line): i for i, line in enumerate(moos.lines)}
+    params = sorted(moos.all_params, key=lambda p: order.get(id(p.line), len(order)))
+    lats = _effective([p for p in params if p.lkey == "latorigin"])
+    lons = _effective([p for p in params if p.lkey == "longorigin"])
+    if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
+        return None
+    lat, lon = _number(lats[0]), _number(lons[0])
+    if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 180 or lat == lon == 0:
+        return None
+    return lat, lon, lats[0], f"{lats[0].value.strip()}, {lons[0].value.strip()}"
+
+
+def apart(a: tuple[float, float], b: tuple[float, float]) -> float:
+    """Metres between two points (lat, lon) in degrees, a few kilometres apart or more."""
+    la1, lo1, la2, lo2 = (math.radians(v) for v in (*a, *b))
+    h = (
+        math.sin((la2 - la1) / 2) ** 2
+        + math.cos(la1) * math.cos(la2) * math.sin((lo2 - lo1) / 2) ** 2
+    )
+    return 2 * _EARTH * math.asin(min(1.0, math.sqrt(h)))
+
+
+def _told(metres: float) -> str:
+    return f"{metres / 1000:.0f} km" if metres >= 10_000 else f"{metres:.0f} m"
+
+
+@rule(
+    code="U006",
+    name="origin-mismatch",
+    severity=Severity.WARNING,
+    scope=Scope.MISSION,
+    kinds=(Kind.MOOS,),
+    options={"min-distance": 10},
+)
+def check(ctx):
+    mine = origin(ctx.moos)
+    if mine is None:
+        return
+    try:
+        least = float(ctx.options.get("min-distance", 10))
+    except (TypeError, ValueError):
+        least = 10.0
+    far: list[tuple[str, tuple, float, str]] = []
+    for path, other, route in share_partners(ctx.run, ctx.path, ctx.moos):
+        theirs = origin(other)
+        if theirs is None:
+            continue
+        metres = apart(mine[:2], theirs[:2])
+        if metres > least:
+            far.append((os.path.basename(path), theirs, metres, route))
+    if not far:
+        return
+    others = "; ".join(
+        f"`{name}` ({theirs[3]}), {_told(metres)} away (route `{route}`)"
+        for name, theirs, metres, route in far[:3]
+    )
+    more = f"; and {len(far) - 3} more" if len(far) > 3 else ""
+    whose = "those of the missions" if len(far) > 1 else "that of the mission"
+    yield ctx.report(
+        mine[2].key_span,
+        f"this mission's origin ({mine[3]}) differs from {whose} pShare ties it to: "
+        f"{others}{more}; the local x/y they share (NODE_REPORT, VIEW_*) land that far off",
+        line=mine[2].line,
+    )
