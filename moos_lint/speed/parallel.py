@@ -240,17 +240,15 @@ _REPORTED: set[str] = set()
 
 def _unit_rules(
     b: int, indices: list[int]
-) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]] | None:
-    """In a worker: the findings of some units (task ``b``), the files and folders newly
-    read, and the reads noted meanwhile (see :func:`moos_lint.files.source.keep_journal`).
-    None when the main process took the task."""
+) -> tuple[list[tuple[int, list[Diagnostic], int]], set[str], set[str], list[Any]]:
+    """In a worker: the findings of some units (the folder it took from the queue, task
+    ``b``), the files and folders newly read, and the reads noted meanwhile (see
+    :func:`moos_lint.files.source.keep_journal`)."""
     from moos_lint.files import source
 
     run = _RUN
     if run is None:
         raise RuntimeError("a rule worker started without a run")
-    if not _claimed(b):
-        return None
     size = source.journal_size()
     out = []
     for i in indices:
@@ -367,25 +365,21 @@ def _fork_rule_worker(run: LintRun, batches: list[list[int]], queue: int) -> tup
         out = os.memfd_create("moos-lint-rules", getattr(os, "MFD_CLOEXEC", 0))
     except (AttributeError, OSError):
         return None
-    _RUN = run
-    _REPORTED.clear()
-    _REPORTED.update(run.cache.paths())
     try:
         pid = os.fork()
     except OSError:
         os.close(out)
         return None
-    finally:
-        _RUN = None
     if pid == 0:  # the worker: never returns
         status = 1
         try:
             import pickle
 
             _RUN = run
+            _REPORTED.clear()  # what it reads beyond what the run had read counts
+            _REPORTED.update(run.cache.paths())
             for b in _take(queue):
-                got = _unit_rules(b, batches[b])
-                record = pickle.dumps(got, pickle.HIGHEST_PROTOCOL)
+                record = pickle.dumps(_unit_rules(b, batches[b]), pickle.HIGHEST_PROTOCOL)
                 os.write(out, len(record).to_bytes(8, "little"))
                 view = memoryview(record)
                 while view:
@@ -428,8 +422,6 @@ def _collect(
         except Exception:
             break
         at += 8 + size
-        if got is None:
-            continue
         batch, read, probed, reads = got
         merge_journal(reads)
         for i, diags, errors in batch:

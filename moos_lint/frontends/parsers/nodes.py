@@ -273,6 +273,18 @@ class MoosFile:
             out.extend(b.params)
         return out
 
+    def read_values(self, key: str) -> list[Param]:
+        """The ``key = value`` lines (any case, blocks included) CMOOSFileReader's
+        ``GetValue`` may read: the first in the file, and each later one in an ``#ifdef``
+        branch that excludes every earlier one (``LatOrigin``, ``MOOSTimeWarp``)."""
+        k = key.lower()
+        order = {id(line): i for i, line in enumerate(self.lines)}
+        found = sorted(
+            (p for p in self.all_params if p.lkey == k),
+            key=lambda p: order.get(id(p.line), len(order)),
+        )
+        return [p for i, p in enumerate(found) if all(q.line.excludes(p.line) for q in found[:i])]
+
 
 # ------------------------------------------------------------------ Antler
 # How pAntler reads its Run lines: the parsed file derives them on first use.

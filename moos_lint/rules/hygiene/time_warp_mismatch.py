@@ -74,12 +74,8 @@ def time_warp(moos):
 
 
 def _time_warp(moos):
-    order = {id(line): i for i, line in enumerate(moos.lines)}
-    params = sorted(
-        (p for p in moos.all_params if p.lkey == "moostimewarp"),
-        key=lambda p: order.get(id(p.line), len(order)),
-    )
-    if not params or any(q.line.excludes(params[0].line) for q in params[1:]):
+    params = moos.read_values("MOOSTimeWarp")
+    if len(params) != 1:
         return None
     first = params[0]
     text = "".join(first.value.split())

@@ -46,9 +46,8 @@ import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission.unread_publication import is_read, readers
+from moos_lint.rules.mission.unread_publication import readers, unread
 from moos_lint.semantics.mission_model import mission_model
-from moos_lint.semantics.variables import PUBLISH, bare_name
 
 _NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 
@@ -75,15 +74,8 @@ def check(ctx):
     for read in names:
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
-    seen: set[str] = set()
-    for ref in model.refs:
-        if ref.role != PUBLISH:
-            continue
-        name = bare_name(ref.name)
-        if not name or name != ref.name or not _NAME.fullmatch(name) or name in seen:
-            continue
-        seen.add(name)
-        if is_read(name, names):
+    for ref, name in unread(model, names):
+        if not _NAME.fullmatch(name):
             continue
         meant = sorted(by_words.get(words(name), set()) - {name})
         if not meant:

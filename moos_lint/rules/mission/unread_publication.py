@@ -52,11 +52,12 @@ MOOS-IvP caveats, deliberately not reported:
 """
 
 import fnmatch
+from collections.abc import Iterator
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.mission_model import MissionModel, mission_model
-from moos_lint.semantics.variables import PUBLISH, SUBSCRIBE, bare_name
+from moos_lint.semantics.variables import PUBLISH, SUBSCRIBE, VarRef, bare_name
 
 
 def readers(model: MissionModel) -> tuple[set[str], bool]:
@@ -101,6 +102,21 @@ def is_read(name: str, names: set[str]) -> bool:
     return name in names or any("*" in n and fnmatch.fnmatchcase(name, n) for n in names)
 
 
+def unread(model: MissionModel, names: set[str]) -> Iterator[tuple[VarRef, str]]:
+    """``(ref, name)`` of the first posting of each plain name (no macro, no wildcard)
+    that none of ``names`` (:func:`readers`) reads."""
+    seen: set[str] = set()
+    for ref in model.refs:
+        if ref.role != PUBLISH:
+            continue
+        name = bare_name(ref.name)
+        if not name or name != ref.name or "*" in name or name in seen:
+            continue
+        seen.add(name)
+        if not is_read(name, names):
+            yield ref, name
+
+
 @rule(
     code="M006",
     name="unread-publication",
@@ -114,16 +130,7 @@ def check(ctx):
     names, open_ended = readers(model)
     if open_ended or model.sibling_missions:
         return
-    seen: set[str] = set()
-    for ref in model.refs:
-        if ref.role != PUBLISH:
-            continue
-        name = bare_name(ref.name)
-        if not name or name != ref.name or "*" in name or name in seen:
-            continue
-        seen.add(name)
-        if is_read(name, names):
-            continue
+    for ref, name in unread(model, names):
         yield ctx.report(
             ref.span,
             f"`{name}` is published ({ref.app}: {ref.param}) but nothing in the mission reads it",

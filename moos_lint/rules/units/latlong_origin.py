@@ -83,15 +83,6 @@ from moos_lint.semantics.catalogue import catalogue_for
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
 
 
-def _effective(params):
-    """The lines MOOS may read: the first one, and any in an exclusive branch of all earlier."""
-    out = []
-    for i, p in enumerate(params):
-        if all(q.line.excludes(p.line) for q in params[:i]):
-            out.append(p)
-    return out
-
-
 def _number(param) -> float | None:
     text = "".join(param.value.split())
     if not _NUMBER.match(text):
@@ -117,11 +108,8 @@ def _nmea_hint(value: float, limit: float) -> str:
     options={"needs-origin": None},
 )
 def check(ctx):
-    mf = ctx.moos
-    order = {id(line): i for i, line in enumerate(mf.lines)}
-    params = sorted(mf.all_params, key=lambda p: order.get(id(p.line), len(order)))
-    lats = _effective([p for p in params if p.lkey == "latorigin"])
-    lons = _effective([p for p in params if p.lkey == "longorigin"])
+    lats = ctx.moos.read_values("LatOrigin")
+    lons = ctx.moos.read_values("LongOrigin")
     yield from _missing(ctx, lats, lons)
     for key, found, limit in (("LatOrigin", lats, 90.0), ("LongOrigin", lons, 180.0)):
         for p in found:

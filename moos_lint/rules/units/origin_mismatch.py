@@ -70,7 +70,7 @@ from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.units.latlong_origin import _effective, _number
+from moos_lint.rules.units.latlong_origin import _number
 from moos_lint.semantics.shares import share_partners
 
 #: the mean radius of the Earth, metres (enough for a distance told in metres or km)
@@ -85,10 +85,8 @@ def origin(moos):
 
 
 def _origin(moos):
-    order = {id(line): i for i, line in enumerate(moos.lines)}
-    params = sorted(moos.all_params, key=lambda p: order.get(id(p.line), len(order)))
-    lats = _effective([p for p in params if p.lkey == "latorigin"])
-    lons = _effective([p for p in params if p.lkey == "longorigin"])
+    lats = moos.read_values("LatOrigin")
+    lons = moos.read_values("LongOrigin")
     if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
         return None
     lat, lon = _number(lats[0]), _number(lons[0])
