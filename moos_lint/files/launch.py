@@ -215,6 +215,8 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     out: set[str] = set()
     for _path, text in scripts:
         for line in text.splitlines():
+            if ">" not in line and "nsplug" not in line and "rm" not in line:
+                continue  # most lines: none of the three patterns can match
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
             m = _NSPLUG_RUN.search(code)
@@ -248,6 +250,13 @@ def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, 
     out = []
     for path, text in scripts:
         for lineno, line in enumerate(text.splitlines(), 1):
+            if (
+                "nsplug" not in line
+                and "cd" not in line
+                and "pushd" not in line
+                and "popd" not in line
+            ):
+                continue  # most lines: neither pattern can match
             code = line.split("#", 1)[0]
             if _CHANGES_FOLDER.search(code):
                 break

@@ -7,7 +7,7 @@ typed accessor:
 - ``catalogue``: :func:`moos_lint.semantics.catalogue.catalogue_for`;
 - ``mission_models``, ``mission_cores``, ``pokes``, ``app_publishers``, ``external_publishers``,
   ``mission_files``: :func:`moos_lint.semantics.mission_model.mission_model` and its helpers;
-- ``shared_out``: :func:`moos_lint.semantics.shares.shared_out`;
+- ``shared_out``, ``share_partners``: :mod:`moos_lint.semantics.shares`;
 - ``repo_cpp_stems``, ``repo_behavior_files``:
   :func:`moos_lint.rules.mission._behaviors.repo_classes`;
 - ``repo_behavior_posts``: :func:`moos_lint.rules.mission._behaviors.repo_behavior_posts`;
@@ -54,6 +54,9 @@ class RunMemos:
     mission_files: dict[str, list[str]] = field(default_factory=dict)
     #: route -> the variables the project's missions send on it with pShare
     shared_out: dict[str, frozenset[str]] | None = None
+    #: normalised mission path -> the missions beside it that pShare ties it to (read by
+    #: the rules of that mission only)
+    share_partners: dict[str, list[Any]] = field(default_factory=dict)
     #: the names of the C++ files and classes of the project: lower case -> as written
     repo_cpp_stems: dict[str, str] | None = None
     #: the project's ``BHV_*.cpp`` files: lower-case class name -> paths (walked with the stems)
@@ -89,9 +92,9 @@ class RunMemos:
     def checked(self, path: str) -> None:
         """The rules are done with the unit at ``path``: drop what only its rules read.
 
-        A mission's whole model is read only by the rules of that mission; its
-        core stays while the missions beside it are checked (their models are
-        made from it). Once every unit of a folder the run said it would check
+        A mission's whole model (and its pShare partners) is read only by the rules
+        of that mission; its core stays while the missions beside it are checked
+        (their models are made from it). Once every unit of a folder the run said it would check
         (:meth:`expect`) is checked, the cores of its missions, what they publish
         for one another and the pokes beside them are dropped too: the models of
         the missions of one folder are made from one another only. (A rule that
@@ -99,6 +102,7 @@ class RunMemos:
         """
         norm = os.path.normpath(os.path.abspath(path))
         self.mission_models.pop(norm, None)
+        self.share_partners.pop(norm, None)
         folder = os.path.dirname(norm)
         left = self.unchecked.get(folder)
         if left is None:

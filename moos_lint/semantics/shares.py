@@ -157,13 +157,18 @@ def share_partners(run: RunView, path: str, moos: MoosFile) -> list[tuple[str, M
     for each whose pShare listens on a route this one sends on, or sends on one this one
     listens on. Missions in other folders are not looked at: a route such as
     ``localhost:9200`` names a port of one machine, which unrelated missions of a
-    project reuse. nsplug's outputs (``targ_*.moos``) pair only with each other."""
+    project reuse. nsplug's outputs (``targ_*.moos``) pair only with each other. Worked
+    out once per mission and run: each rule that compares missions asks."""
     from moos_lint.semantics.mission_model import missions_beside
 
     ins, outs = pshare_routes(moos)
     if not ins and not outs:
         return []
     me = os.path.normpath(os.path.abspath(path))
+    memo = run.memos.share_partners
+    known = memo.get(me)
+    if known is not None:
+        return known
     generated = os.path.basename(me).startswith("targ_")
     found: list[tuple[str, MoosFile, str]] = []
     for cand in missions_beside(run, os.path.dirname(me), generated):
@@ -179,6 +184,7 @@ def share_partners(run: RunView, path: str, moos: MoosFile) -> list[tuple[str, M
         common = sorted((outs & their_ins) | (ins & their_outs))
         if common:
             found.append((cand, other, common[0]))
+    memo[me] = found
     return found
 
 
