@@ -53,9 +53,65 @@ def test_generator_reads_messages_enums_and_extensions(tmp_path):
     assert data["source"]["commit"] == "abc"
 
 
+def _release(root: str, fields: dict, commit: str, repository: str) -> dict:
+    driver = {"fields": {"modem_id": "int32"}, "extensions": {}, "source": "driver.proto"}
+    if "driver_type" not in fields:  # the newer release moved it into driver_cfg
+        driver["fields"]["driver_type"] = "DriverType"
+    return {
+        "source": {"commit": commit, "repository": repository},
+        "apps": {"pAcommsHandler": {"message": root, "source": "src/apps", "proto": "a.proto"}},
+        "messages": {
+            root: {"fields": fields, "extensions": {}, "source": "a.proto"},
+            "DriverConfig": driver,
+        },
+        "enums": {"DriverType": {"values": ["DRIVER_NONE", "DRIVER_UDP"], "source": "d.proto"}},
+        "moos_globals": {},
+    }
+
+
+def test_merge_keeps_each_release_of_an_app_and_unites_shared_messages():
+    old = _release(
+        "pAcommsHandlerConfig",
+        {"driver_type": "DriverType", "driver_cfg": "DriverConfig"},
+        "aaa",
+        "https://github.com/GobySoft/goby",
+    )
+    new = _release(
+        "goby.apps.pAcommsHandlerConfig",
+        {"driver_cfg": "DriverConfig"},
+        "bbb",
+        "https://github.com/GobySoft/goby3",
+    )
+    new["enums"]["DriverType"]["values"] = ["DRIVER_NONE", "DRIVER_POPOTO"]
+    data = goby.merge([old, new])
+    assert [s["commit"] for s in data["sources"]] == ["aaa", "bbb"]
+    assert [(a["message"], a["from"]) for a in data["apps"]["pAcommsHandler"]] == [
+        ("pAcommsHandlerConfig", 0),
+        ("goby.apps.pAcommsHandlerConfig", 1),
+    ]
+    # one message of one name in both releases: the fields of either
+    assert data["messages"]["DriverConfig"]["fields"] == {
+        "modem_id": "int32",
+        "driver_type": "DriverType",
+    }
+    assert data["messages"]["DriverConfig"]["from"] == 0
+    assert data["enums"]["DriverType"]["values"] == ["DRIVER_NONE", "DRIVER_UDP", "DRIVER_POPOTO"]
+
+
 def test_stock_goby_catalogue_knows_the_apps():
     app = text_format_app("pAcommsHandler")
     assert app is not None and app.message == "pAcommsHandlerConfig"
+    # goby 3 builds the same app with its own message: the stock catalogue has both
+    assert [r.message for r in app.all_releases] == [
+        "pAcommsHandlerConfig",
+        "goby.apps.moos.protobuf.pAcommsHandlerConfig",
+    ]
+    assert app.releases[0].provenance.startswith("goby3 ")
+    assert app.provenance.startswith("goby ")
+    assert (
+        "frontseat_cfg"
+        in text_format_schema().messages[text_format_app("iFrontSeat").releases[0].message]
+    )
     assert text_format_app("iFrontSeat_bluefin").name == "iFrontSeat"
     assert text_format_app("pHelmIvP") is None
     assert "common" in text_format_schema().messages["pAcommsHandlerConfig"]

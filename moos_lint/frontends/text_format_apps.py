@@ -7,14 +7,17 @@ which apps those are to read a file as the apps do, so this fact sits at the
 front end, below the catalogue, which re-exports it. The data,
 ``goby.json`` beside this module, is generated from goby's ``.proto`` files
 by :mod:`moos_lint.semantics.catalogue.goby`, with the goby commit and each
-message's file as provenance.
+message's file as provenance. goby 2 and goby 3 ship the same apps with different
+schemas (goby 3's ``driver_cfg`` holds the ``driver_type`` that goby 2 reads at the
+top of the block), so an app has one configuration message per release: a project
+may build either, and a field is unknown only when no release declares it.
 """
 
 from __future__ import annotations
 
 import json
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 GOBY = os.path.join(os.path.dirname(__file__), "goby.json")
@@ -27,6 +30,13 @@ class TextFormatApp:
     name: str
     message: str  # the full name of its configuration message
     provenance: str
+    #: the same app in the other goby releases (each with its own message), newest last
+    releases: tuple[TextFormatApp, ...] = ()
+
+    @property
+    def all_releases(self) -> tuple[TextFormatApp, ...]:
+        """This release's app, then the others'."""
+        return (self, *self.releases)
 
 
 @dataclass(frozen=True)
@@ -48,11 +58,15 @@ def _goby() -> tuple[dict[str, TextFormatApp], TextFormatSchema]:
             data = json.load(fh)
     except (OSError, ValueError):
         return {}, TextFormatSchema({}, {}, {}, {})
-    commit = str(data.get("source", {}).get("commit", ""))[:8]
+    labels = [_label(source) for source in data.get("sources", [])]
     apps = {}
-    for name, d in data.get("apps", {}).items():
-        prov = f"goby {commit} {d.get('source', '')}".strip()
-        apps[name.lower()] = TextFormatApp(name, d["message"], prov)
+    for name, versions in data.get("apps", {}).items():
+        each = []
+        for d in versions:
+            label = labels[d["from"]] if d.get("from", 0) < len(labels) else "goby"
+            each.append(TextFormatApp(name, d["message"], f"{label} {d.get('source', '')}".strip()))
+        if each:
+            apps[name.lower()] = replace(each[0], releases=tuple(each[1:]))
     msgs = data.get("messages", {})
     schema = TextFormatSchema(
         messages={k: dict(v.get("fields", {})) for k, v in msgs.items()},
@@ -62,6 +76,12 @@ def _goby() -> tuple[dict[str, TextFormatApp], TextFormatSchema]:
         moos_globals={str(k): str(v) for k, v in data.get("moos_globals", {}).items()},
     )
     return apps, schema
+
+
+def _label(source: dict) -> str:
+    """``goby3 2603ff12``: the repository's name and the commit the data was read at."""
+    repository = str(source.get("repository", "")).rstrip("/").rsplit("/", 1)[-1] or "goby"
+    return f"{repository} {str(source.get('commit', ''))[:8]}".strip()
 
 
 def text_format_app(name: str) -> TextFormatApp | None:

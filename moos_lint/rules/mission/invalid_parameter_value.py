@@ -323,38 +323,53 @@ def _parenthesised(ctx, p, var: str, val: str):
 
 
 def _text_enums(ctx):
-    """Enum fields of protobuf-text blocks (goby's apps) whose value the enum lacks."""
-
+    """Enum fields of protobuf-text blocks (goby's apps) whose value the enum lacks, in
+    every goby release of the app that reads the field as an enum (a project builds one
+    of them; the first such release words the finding)."""
     schema = text_format_schema()
-    for _block, app in text_blocks(ctx):
-        todo = [(_block.text_fields, app.message)]
-        while todo:
-            fields, message = todo.pop()
-            known = schema.messages.get(message, {})
-            for f in fields:
-                kind = None if f.extension else known.get(f.name)
-                if kind is None:
-                    continue
-                if f.children is not None:
-                    if kind in schema.messages:
-                        todo.append((f.children, kind))
-                    continue
-                values = schema.enums.get(kind)
-                value = f.value or ""
-                if not values or not value or has_macro(value) or value in values:
-                    continue
-                if not value.replace("_", "").isalnum() or value[0].isdigit():
-                    continue  # a number: protobuf also reads an enum by its number
-                shown = ", ".join(f"`{v}`" for v in values[:8]) + (
-                    ", ..." if len(values) > 8 else ""
-                )
-                yield ctx.report(
-                    f.line.span(f.end - len(value), f.end),
-                    f"`{f.name}: {value}` is not a value of `{kind}` ({shown}): {app.name} stops "
-                    f"at start-up with a configuration error ({app.provenance}; "
-                    f"{schema.sources.get(message, '')})",
-                    line=f.line,
-                )
+    for block, tapp in text_blocks(ctx):
+        judged: dict[int, list] = {}  # id(field) -> [(app, message, kind, values), ...]
+        for app in tapp.all_releases:
+            for f, message, kind, values in _enum_fields(block.text_fields, app.message, schema):
+                judged.setdefault(id(f), [f]).append((app, message, kind, values))
+        for f, *verdicts in judged.values():
+            value = f.value or ""
+            if any(value in values for _app, _message, _kind, values in verdicts):
+                continue
+            app, message, kind, values = verdicts[0]
+            shown = ", ".join(f"`{v}`" for v in values[:8]) + (", ..." if len(values) > 8 else "")
+            yield ctx.report(
+                f.line.span(f.end - len(value), f.end),
+                f"`{f.name}: {value}` is not a value of `{kind}` ({shown}): {app.name} stops "
+                f"at start-up with a configuration error ({app.provenance}; "
+                f"{schema.sources.get(message, '')})",
+                line=f.line,
+            )
+
+
+def _enum_fields(fields, root: str, schema):
+    """(field, message, enum, its values) for each enum field under message ``root`` whose
+    value is a name that may be judged (not a number, which protobuf also reads, nor a
+    macro)."""
+    todo = [(fields, root)]
+    while todo:
+        fields, message = todo.pop()
+        known = schema.messages.get(message, {})
+        for f in fields:
+            kind = None if f.extension else known.get(f.name)
+            if kind is None:
+                continue
+            if f.children is not None:
+                if kind in schema.messages:
+                    todo.append((f.children, kind))
+                continue
+            values = schema.enums.get(kind)
+            value = f.value or ""
+            if not values or not value or has_macro(value):
+                continue
+            if not value.replace("_", "").isalnum() or value[0].isdigit():
+                continue  # a number: protobuf also reads an enum by its number
+            yield f, message, kind, values
 
 
 #: the fields of a uTimerScript event (TS_MOOSApp::addNewEvent)

@@ -55,8 +55,12 @@ Blocks an app reads with protobuf's text format (goby's MOOS apps:
 pAcommsHandler, iFrontSeat, pTranslator) are checked against the app's
 configuration message, nested messages included (`common { verbosity: ... }`),
 as generated from goby's `.proto` files (`moos_lint/frontends/goby.json`).
-Extension fields (`[micromodem.protobuf.Config.reset_nvram]`) the catalogue
-does not know are not judged.
+goby 2 and goby 3 ship these apps under the same names with different
+schemas (goby 3 reads `driver_type` inside `driver_cfg`, goby 2 at the top of
+the block), so a field is reported only when neither release declares it
+there, and the message names the release the block fits best. Extension
+fields (`[micromodem.protobuf.Config.reset_nvram]`) the catalogue does not
+know are not judged.
 
 MOOS-IvP caveats, deliberately not reported:
 - apps the catalogue does not know, and apps whose parser does not reject
@@ -173,6 +177,36 @@ def _text_unknown(fields, message: str, schema, app):
             yield from _text_unknown(f.children, kind, schema, app)
 
 
+def _text_unknown_in_every_release(fields, tapp, schema):
+    """(app, field, message, suggestions) for each field that no goby release of the app
+    reads where the block puts it (each release rejects it, or a field around it), as
+    the release the block fits best words it: the one that rejects or never reaches the
+    fewest of its fields (the first release on a tie). A project builds one release."""
+    found = []
+    for app in tapp.all_releases:
+        if app.message not in schema.messages:
+            continue
+        unknown = list(_text_unknown(fields, app.message, schema, app))
+        unread: set[int] = set()  # the fields this release rejects or never reaches
+        for f, _message, _close in unknown:
+            unread |= _within(f)
+        found.append((app, unknown, unread))
+    if not found:
+        return
+    app, unknown, _unread = min(found, key=lambda each: len(each[2]))
+    for f, message, close in unknown:
+        if all(id(f) in unread for _app, _unknown, unread in found):
+            yield app, f, message, close
+
+
+def _within(f) -> set[int]:
+    """The ids of a protobuf-text field and of every field nested in it."""
+    out = {id(f)}
+    for child in f.children or ():
+        out |= _within(child)
+    return out
+
+
 def suggestions(key: str, known) -> list[str]:
     # a plug included by many missions asks the same question many times
     return list(_close_matches(key, tuple(sorted(known))))
@@ -233,8 +267,10 @@ def check(ctx):
             yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
     schema = text_format_schema()
     for block, tapp in text_blocks(ctx):
-        for f, message, close in _text_unknown(block.text_fields, tapp.message, schema, tapp):
-            msg = f"`{f.name}`: {tapp.name} reads this block as protobuf text, and `{message}`"
+        for app, f, message, close in _text_unknown_in_every_release(
+            block.text_fields, tapp, schema
+        ):
+            msg = f"`{f.name}`: {app.name} reads this block as protobuf text, and `{message}`"
             msg += " has no such field"
             fix = None
             if close:
@@ -242,6 +278,4 @@ def check(ctx):
             if len(close) == 1:
                 fix = Fix(f"respell as `{close[0]}`", (Edit(f.name_span, close[0]),))
             src = schema.sources.get(message, "")
-            yield ctx.report(
-                f.name_span, msg + f" ({tapp.provenance}; {src})", line=f.line, fix=fix
-            )
+            yield ctx.report(f.name_span, msg + f" ({app.provenance}; {src})", line=f.line, fix=fix)

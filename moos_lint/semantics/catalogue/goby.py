@@ -2,11 +2,17 @@
 
 Usage::
 
-    python -m moos_lint.semantics.catalogue.goby GOBY_SRC [-o
+    python -m moos_lint.semantics.catalogue.goby GOBY_SRC [GOBY3_SRC] [-o
     moos_lint/frontends/goby.json]
-        [--commit SHA] [--repository URL]
+        [--commit SHA ...] [--repository URL ...]
 
-``GOBY_SRC`` is a work tree of https://github.com/GobySoft/goby. goby's MOOS
+Each ``SRC`` is a work tree of a goby release: https://github.com/GobySoft/goby
+(goby 2) and https://github.com/GobySoft/goby3, whose apps keep their names but
+not their schemas (goby 3 moved ``driver_type`` into ``driver_cfg`` and its
+messages into ``goby.apps.moos.protobuf``). ``--commit`` and ``--repository``
+are given once per tree, in order (the commit is read from the tree's ``.git``
+when it has one). An app's block is judged against every release's message, and a
+field is unknown only when none declares it. goby's MOOS
 apps (``GobyMOOSApp``) read their ``ProcessConfig`` block with protobuf's text
 format into one configuration message (``pAcommsHandlerConfig``,
 ``iFrontSeatConfig``, ...). This step reads every ``.proto`` file of the tree
@@ -314,14 +320,52 @@ def generate(src: str, commit: str = "", repository: str = "") -> dict:
     }
 
 
+def merge(releases: list[dict]) -> dict:
+    """One catalogue of several releases' :func:`generate` output, the first first.
+
+    ``sources`` lists the releases; each app lists its message in each release that
+    has it (``from``: the release's index). A message of one full name in several
+    releases has the fields and extensions of all of them (the first release's type
+    where they differ), and an enum every value of all of them."""
+    apps: dict[str, list[dict]] = {}
+    messages: dict[str, dict] = {}
+    enums: dict[str, dict] = {}
+    moos_globals: dict[str, str] = {}
+    for i, data in enumerate(releases):
+        for name, app in data["apps"].items():
+            apps.setdefault(name, []).append({**app, "from": i})
+        for name, msg in data["messages"].items():
+            kept = messages.setdefault(name, {"fields": {}, "extensions": {}, **msg, "from": i})
+            for part in ("fields", "extensions"):
+                for field_name, kind in msg[part].items():
+                    kept[part].setdefault(field_name, kind)
+        for name, enum in data["enums"].items():
+            kept_enum = enums.setdefault(name, {**enum, "values": list(enum["values"])})
+            kept_enum["values"] += [v for v in enum["values"] if v not in kept_enum["values"]]
+        for key, where in data["moos_globals"].items():
+            moos_globals.setdefault(key, where)
+    return {
+        "moos_globals": dict(sorted(moos_globals.items())),
+        "sources": [data["source"] for data in releases],
+        "apps": apps,
+        "messages": dict(sorted(messages.items())),
+        "enums": dict(sorted(enums.items())),
+    }
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m moos_lint.semantics.catalogue.goby")
-    ap.add_argument("src", help="a work tree of GobySoft/goby")
+    ap.add_argument("src", nargs="+", help="work trees of GobySoft/goby, then GobySoft/goby3")
     ap.add_argument("-o", "--output", default=GOBY)
-    ap.add_argument("--commit", default="")
-    ap.add_argument("--repository", default="")
+    ap.add_argument("--commit", action="append", default=[])
+    ap.add_argument("--repository", action="append", default=[])
     args = ap.parse_args(argv)
-    data = generate(args.src, args.commit, args.repository)
+    releases = []
+    for i, src in enumerate(args.src):
+        commit = args.commit[i] if i < len(args.commit) else ""
+        repository = args.repository[i] if i < len(args.repository) else ""
+        releases.append(generate(src, commit, repository))
+    data = merge(releases)
     with open(args.output, "w", encoding="utf-8") as fh:
         json.dump(data, fh, indent=1, sort_keys=True)
         fh.write("\n")
