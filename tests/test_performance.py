@@ -314,18 +314,21 @@ def test_cache_dir_in_the_config_stays_in_the_project(tree, tmp_path, monkeypatc
 
 
 # ------------------------------------------------------------------ --jobs
+def _fixture_report(jobs: int) -> str:
+    """The JSON report of the fixtures, linted with ``jobs`` processes (fresh settings;
+    one job: no worker module at all)."""
+    settings = resolve_settings([FIXTURES], None)
+    workers = parallel if jobs > 1 else None
+    return render("json", engine.lint_paths([FIXTURES], settings, jobs=jobs, parallel=workers))
+
+
 @pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
 def test_jobs_2_gives_the_output_of_jobs_1():
     settings = resolve_settings([FIXTURES], None)
     files = engine.discover([FIXTURES], settings.exclude, settings.root).files
     assert parallel.effective_jobs(2, len(files)) == 2  # the pool really runs
-    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
-    two = render(
-        "json",
-        engine.lint_paths(
-            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
-        ),
-    )
+    one = _fixture_report(jobs=1)
+    two = _fixture_report(jobs=2)
     assert json.loads(two) == json.loads(one)
     assert two == one
 
@@ -344,15 +347,9 @@ def _die(*args):
 @pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
 @pytest.mark.parametrize("phase", ["_cpp_folder", "_unit_rules"])
 def test_a_dying_worker_never_hangs_the_run(monkeypatch, phase):
-    settings = resolve_settings([FIXTURES], None)
-    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    one = _fixture_report(jobs=1)
     monkeypatch.setattr(parallel, phase, _die)
-    two = render(
-        "json",
-        engine.lint_paths(
-            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
-        ),
-    )
+    two = _fixture_report(jobs=2)
     assert two == one
 
 
@@ -374,15 +371,9 @@ _REAL_UNIT_RULES = parallel._unit_rules
 def test_a_rule_worker_that_dies_part_way_keeps_what_it_wrote(monkeypatch):
     """The folders a dying rule worker finished count; the one it died in is checked again
     by the main process, and the output is that of one process."""
-    settings = resolve_settings([FIXTURES], None)
-    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    one = _fixture_report(jobs=1)
     monkeypatch.setattr(parallel, "_unit_rules", _die_after_one)
-    two = render(
-        "json",
-        engine.lint_paths(
-            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
-        ),
-    )
+    two = _fixture_report(jobs=2)
     assert two == one
     assert not _RULE_BATCHES_DONE  # the worker's count stayed in the worker
 
@@ -417,19 +408,13 @@ def test_each_rule_folder_is_taken_once_from_the_queue():
 
 @pytest.mark.skipif(not parallel.can_fork(), reason="worker processes need fork")
 def test_a_system_without_a_task_pipe_checks_every_unit_here(monkeypatch):
-    settings = resolve_settings([FIXTURES], None)
-    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    one = _fixture_report(jobs=1)
 
     def full(n):
         raise BlockingIOError(11, "Resource temporarily unavailable")
 
     monkeypatch.setattr(parallel, "_task_queue", full)
-    two = render(
-        "json",
-        engine.lint_paths(
-            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
-        ),
-    )
+    two = _fixture_report(jobs=2)
     assert two == one
 
 
@@ -442,18 +427,12 @@ def _no_locks(*args, **kwargs):
 def test_a_system_without_process_locks_runs_in_one_process(monkeypatch, missing):
     """Where a pool or its shared claims cannot be made (no ``/dev/shm`` in a container),
     ``--jobs 2`` gives the output of one process, with no traceback."""
-    settings = resolve_settings([FIXTURES], None)
-    one = render("json", engine.lint_paths([FIXTURES], settings, jobs=1))
+    one = _fixture_report(jobs=1)
     if missing == "pool":
         monkeypatch.setattr("concurrent.futures.ProcessPoolExecutor", _no_locks)
     else:
         monkeypatch.setattr(parallel, "Claims", _no_locks)
-    two = render(
-        "json",
-        engine.lint_paths(
-            [FIXTURES], resolve_settings([FIXTURES], None), jobs=2, parallel=parallel
-        ),
-    )
+    two = _fixture_report(jobs=2)
     assert two == one
 
 

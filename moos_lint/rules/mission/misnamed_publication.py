@@ -46,8 +46,7 @@ import re
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.mission.unread_publication import readers, unread
-from moos_lint.semantics.mission_model import mission_model
+from moos_lint.rules.mission.unread_publication import judged_postings
 
 _NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 
@@ -66,15 +65,15 @@ def words(name: str) -> tuple[str, ...]:
     fixable=True,
 )
 def check(ctx):
-    model = mission_model(ctx)
-    names, open_ended = readers(model)
-    if open_ended or model.sibling_missions:
+    judged = judged_postings(ctx)
+    if judged is None:
         return
+    names, postings = judged
     by_words: dict[tuple[str, ...], set[str]] = {}
     for read in names:
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
-    for ref, name in unread(model, names):
+    for ref, name in postings:
         if not _NAME.fullmatch(name):
             continue
         meant = sorted(by_words.get(words(name), set()) - {name})

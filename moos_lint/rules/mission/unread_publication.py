@@ -117,6 +117,17 @@ def unread(model: MissionModel, names: set[str]) -> Iterator[tuple[VarRef, str]]
             yield ref, name
 
 
+def judged_postings(ctx) -> tuple[set[str], Iterator[tuple[VarRef, str]]] | None:
+    """The names the mission reads (:func:`readers`) and its unread postings
+    (:func:`unread`); None when the mission cannot be judged: some process may read any
+    name, or missions beside it publish to it."""
+    model = mission_model(ctx)
+    names, open_ended = readers(model)
+    if open_ended or model.sibling_missions:
+        return None
+    return names, unread(model, names)
+
+
 @rule(
     code="M006",
     name="unread-publication",
@@ -126,11 +137,10 @@ def unread(model: MissionModel, names: set[str]) -> Iterator[tuple[VarRef, str]]
     default_enabled=False,
 )
 def check(ctx):
-    model = mission_model(ctx)
-    names, open_ended = readers(model)
-    if open_ended or model.sibling_missions:
+    judged = judged_postings(ctx)
+    if judged is None:
         return
-    for ref, name in unread(model, names):
+    for ref, name in judged[1]:
         yield ctx.report(
             ref.span,
             f"`{name}` is published ({ref.app}: {ref.param}) but nothing in the mission reads it",
