@@ -530,3 +530,73 @@ def test_class_body_of_a_struct_and_of_a_typedef():
     start, end = class_body(data, "B")
     assert data[start:end] == b" double s; "
     assert class_body(data, "C") is None
+
+
+SIM_ENGINE = """
+void SimEngine::propagatePitch(NodeRecord& record, double dt, double rate)
+{
+  double new_pitch = angle180(record.getPitch() + rate * dt);
+  record.setPitch(new_pitch);
+}
+"""
+
+
+def test_a_getter_of_a_record_defined_elsewhere_is_what_its_setter_is_given(tmp_path):
+    v = published('bool A::Iterate() { Notify("NAV_PITCH", m_record.getPitch()); return true; }')
+    assert v["NAV_PITCH"].pending == "getPitch"
+    out = _resolve_in(tmp_path, {"sim/SimEngine.cpp": SIM_ENGINE}, v["NAV_PITCH"])
+    assert out.unit == "deg"
+    assert out.why[-1].startswith("record.setPitch(...) at ") and "SimEngine.cpp:5" in out.why[-1]
+
+
+def test_a_setter_given_a_value_we_cannot_read_leaves_its_getter_unknown(tmp_path):
+    v = published('bool A::Iterate() { Notify("NAV_PITCH", m_record.getPitch()); return true; }')
+    parse = "void load(NodeRecord& r, string s) { r.setPitch(atof(s.c_str())); r.setPitch(0); }"
+    files = {"sim/SimEngine.cpp": SIM_ENGINE, "lib/parse.cpp": parse}
+    assert not _resolve_in(tmp_path, files, v["NAV_PITCH"]).known
+
+
+def test_setters_of_several_ranges_give_no_range(tmp_path):
+    v = published('bool A::Iterate() { Notify("NAV_YAW", m_record.getYaw()); return true; }')
+    code = """
+    void turn(NodeRecord& record, double new_heading) {
+      record.setYaw(-degToRadians(angle180(new_heading)));
+    }
+    void reverse(NodeRecord& record) {
+      double new_yaw = MOOSDeg2Rad(record.getHeading()) + M_PI;
+      record.setYaw(new_yaw);
+    }
+    """
+    out = _resolve_in(tmp_path, {"sim/SimEngine.cpp": code}, v["NAV_YAW"])
+    assert out.unit == "rad" and out.range is None
+
+
+def test_each_branch_declares_its_own_message_of_its_own_type():
+    code = """
+    #include <IMC/Base/Message.hpp>
+    void Bridge::on(IMC::Message* m) {
+      if (m->getId() == 1) {
+        GpsFix* msg = dynamic_cast<IMC::GpsFix*>(m);
+        Notify("A_LAT", msg->lat);
+      }
+      if (m->getId() == 2) {
+        EstimatedState* msg = dynamic_cast<IMC::EstimatedState*>(m);
+        Notify("NAV_LAT", msg->lat);
+      }
+    }
+    """
+    v = published(code)
+    assert v["NAV_LAT"].unit == "rad" and "EstimatedState" in v["NAV_LAT"].why[0]
+    assert v["A_LAT"].pending == ".GpsFix.lat"
+
+
+def test_a_library_class_by_its_namespace_only_where_the_file_names_it():
+    own = (
+        "struct EstimatedState { double lat; };\n"
+        'void A::f(EstimatedState* s) { Notify("NAV_LAT", s->lat); }'
+    )
+    assert not published(own)["NAV_LAT"].known
+    imc = own.replace(
+        "struct EstimatedState { double lat; };", "using namespace IMC::Spec; // IMC::"
+    )
+    assert published(imc)["NAV_LAT"].unit == "rad"

@@ -33,6 +33,10 @@ HELPERS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str
     "headingToRadians": ("deg", "rad", (-math.pi, math.pi), "math"),
     "radToHeading": ("rad", "deg", (0.0, 360.0), "heading"),
     "relAng": (None, "deg", (0.0, 360.0), "heading"),
+    # DUNE's Angles::degrees(rad) and Angles::radians(deg) (src/DUNE/Math/Angles.hpp:
+    # ``return rad * 180.0 / c_pi``), as GLM's glm::degrees / glm::radians
+    "degrees": ("rad", "deg", None, None),
+    "radians": ("deg", "rad", None, None),
 }
 
 #: Inverse trigonometric functions of <cmath>: radians, in these ranges.
@@ -123,9 +127,35 @@ LIBRARY_ANGLES: dict[str, tuple[str, str, tuple[float, float], str]] = {
 #: (``mavlink_msg_attitude_decode(&msg, &att); att.yaw``) whose fields are the getters'
 #: values (``mavlink_attitude_t``'s yaw in rad, -pi..+pi, about Z-down;
 #: ``mavlink_vfr_hud_t``'s heading in degrees, 0..360).
-LIBRARY_FIELDS: dict[tuple[str, str], tuple[str, str, tuple[float, float], str]] = {
+#:
+#: A key's class may carry its namespace (``IMC::EstimatedState``): it is then a field of
+#: the class declared by its own name (``EstimatedState* msg``) only in a file that names
+#: the namespace (``IMC::``), so a project's own class of that name is never taken for it.
+#: LSTS's IMC (the messages DUNE and its MOOS bridges exchange) gives a vehicle's
+#: ``EstimatedState`` as "lat: WGS-84 Latitude, rad", "lon: WGS-84 Longitude, rad" and
+#: "psi: Rotation over z axis, rad" about z-down (NED): clockwise from north, as a heading
+#: (imc IMC.xml, message EstimatedState).
+LIBRARY_FIELDS: dict[tuple[str, str], tuple[str | None, str | None, tuple[float, float], str]] = {
     ("mavlink_attitude_t", "yaw"): LIBRARY_ANGLES["mavlink_msg_attitude_get_yaw"],
     ("mavlink_vfr_hud_t", "heading"): LIBRARY_ANGLES["mavlink_msg_vfr_hud_get_heading"],
+    ("IMC::EstimatedState", "lat"): (
+        "rad",
+        None,
+        (-math.pi / 2, math.pi / 2),
+        "IMC's EstimatedState latitude, in radians",
+    ),
+    ("IMC::EstimatedState", "lon"): (
+        "rad",
+        None,
+        (-math.pi, math.pi),
+        "IMC's EstimatedState longitude, in radians",
+    ),
+    ("IMC::EstimatedState", "psi"): (
+        "rad",
+        "heading",
+        (-math.pi, math.pi),
+        "IMC's EstimatedState psi, radians about z-down: clockwise from north",
+    ),
 }
 
 #: CMOOSGeodesy's conversions between latitude/longitude and the local grid: name -> what

@@ -74,6 +74,12 @@ def _declarator_name(d: Any) -> str:
 
 def declarations(root: Any) -> Iterator[tuple[str, str]]:
     """(name, type text) of every variable, parameter and field ``root`` declares."""
+    for name, type_text, _node in _declaring(root):
+        yield name, type_text
+
+
+def _declaring(root: Any) -> Iterator[tuple[str, str, Any]]:
+    """(name, type text, declaration node) of every variable, parameter and field."""
     stack = [root]
     while stack:
         x = stack.pop()
@@ -83,18 +89,36 @@ def declarations(root: Any) -> Iterator[tuple[str, str]]:
                 for d in x.children_by_field_name("declarator"):
                     name = _declarator_name(d)
                     if name:
-                        yield name, text(t)
+                        yield name, text(t), x
         stack.extend(x.named_children)
 
 
-def declared_type(fn: Any, name: str) -> str | None:
-    """The class of ``name`` as a parameter or local of function ``fn``."""
+def declared_type(fn: Any, name: str, use: Any = None) -> str | None:
+    """The class of ``name`` as a parameter or local of function ``fn``; with ``use``, of
+    the declaration in scope there: the last before it in a block that holds it (each
+    ``if`` branch of a message handler may declare its own ``msg`` of another type). None
+    when no declaration of ``name`` is in scope at ``use`` (a member of that name)."""
     if fn is None:
         return None
-    for n, t in declarations(fn):
-        if n == name:
-            return type_name(t)
-    return None
+    if use is None:
+        for n, t in declarations(fn):
+            if n == name:
+                return type_name(t)
+        return None
+    best: tuple[int, str] | None = None
+    for n, t, node in _declaring(fn):
+        if n != name or node.start_byte > use.start_byte:
+            continue
+        scope = node.parent
+        if node.type == "parameter_declaration":
+            scope = fn
+        elif scope is not None and scope.type == "condition_clause":
+            scope = scope.parent  # ``if (Foo* m = ...)``: the whole if statement
+        if scope is None or not (scope.start_byte <= use.start_byte < scope.end_byte):
+            continue
+        if best is None or node.start_byte > best[0]:
+            best = (node.start_byte, t)
+    return type_name(best[1]) if best is not None else None
 
 
 def auto_getter(fn: Any, name: str) -> str | None:
@@ -184,7 +208,7 @@ def field_writes(pf: Any, cls: str, names: set[str]) -> Iterator[tuple[Any, Any]
             if text(obj) == "this":
                 owner = enclosing_class(a.node)
             elif obj.type == "identifier":
-                owner = declared_type(a.fn, text(obj))
+                owner = declared_type(a.fn, text(obj), obj)
             else:
                 continue
         elif left.type == "identifier" and text(left) in names:

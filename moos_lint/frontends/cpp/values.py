@@ -1093,8 +1093,8 @@ class Evaluator:
                 v = settle(arg) if unit_in is not None else AbstractValue()
                 if v.pending is None:
                     v = replace(v, unit=unit_out, const=None, hint=False).because(why)
-            if rng is not None:
-                v = wrapped(v, rng, unit_out, "")
+            if rng is not None:  # (a value still to be resolved keeps why it is wrapped)
+                v = wrapped(v, rng, unit_out, why if v.pending is not None else "")
             if sense is not None and v.pending is None:
                 v = replace(v, sense=sense if sense != "math" else "math")
             return v
@@ -1251,7 +1251,7 @@ class Evaluator:
         if obj is None or obj.type != "identifier" or field.lower() not in ("z", "down", "d"):
             return False
         fnode = pf.function_of(left)
-        cls = fields.declared_type(fnode, text(obj)) or self.folder.member_type(text(obj))
+        cls = fields.declared_type(fnode, text(obj), left) or self.folder.member_type(text(obj))
         return bool(cls and _NED_WORD.search(cls))
 
     def _field_pending(self, pf: Any, fnode: Any, n: Any, key: str) -> AbstractValue | None:
@@ -1262,7 +1262,7 @@ class Evaluator:
             obj = strip(n.child_by_field_name("argument"))
             if obj is None or obj.type != "identifier":
                 return None
-            cls = fields.declared_type(fnode, text(obj)) or self.folder.member_type(text(obj))
+            cls = fields.declared_type(fnode, text(obj), n) or self.folder.member_type(text(obj))
             if cls is None:  # ``auto x = p->getX(); x.yaw``: of the class getX returns
                 getter = fields.auto_getter(fnode, text(obj))
                 cls = f"{getter}()" if getter else None
@@ -1273,7 +1273,7 @@ class Evaluator:
             return None
         if not field:
             return None
-        known = facts.LIBRARY_FIELDS.get((cls or "", field))
+        known = library_field(pf, cls, field)
         if known is not None:  # a library struct's field (MAVLink's decoded messages)
             return AbstractValue(
                 unit=known[0],
@@ -2012,15 +2012,24 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
         # an argument the function does not set (or one we cannot see): as before the call
         before = v.fallback if v.fallback is not None else UNKNOWN
         return apply_ops(resolve_pending(before, resolver), v.ops)
+    if (base is None or not base.known) and isinstance(resolver, RepositoryResolver):
+        base = resolver.set_by(v.pending) or base  # a getter read through its setter
     if base is None or not base.known:
         base = name_hint(v.pending)  # a getter defined nowhere in the repository
     out = apply_ops(base, v.ops)
     if not out.known:
         return UNKNOWN
-    steps = v.why[1:] if base.known else tuple(s for _op, s in v.ops if isinstance(s, str) and s)
-    return replace(out, why=(*base.why, *steps))
+    if not base.known:  # known by what was done to it (a conversion, a wrap): their reasons
+        return (
+            out
+            if out.why
+            else replace(out, why=tuple(s for _op, s in v.ops if isinstance(s, str) and s))
+        )
+    return replace(out, why=(*base.why, *v.why[1:]))
 
 
+#: a getter's name (``getPitch``, ``GetDepth``): its setter is ``setPitch`` / ``SetDepth``
+_GETTER_NAME = re.compile(r"^(get|Get)([A-Z]\w*)$")
 _DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{"
 #: the tail of :data:`_DEF_TEMPLATE`: a definition's parameter list and opening brace
 _DEF_TAIL = re.compile(rb"\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{")
@@ -2150,6 +2159,11 @@ class RepositoryResolver:
                         self._expected.add(cls)
                 elif v.pending:
                     self._wanted.add(v.pending.partition("#")[0].encode())
+                    getter = _GETTER_NAME.match(v.pending)
+                    if getter is not None:  # (see :meth:`set_by`)
+                        self._expected.add(
+                            getter.expand(r"set\2" if v.pending[0] == "g" else r"Set\2")
+                        )
                 v = v.fallback if isinstance(v.fallback, AbstractValue) else None
 
     def _read_all(self) -> None:
@@ -2277,6 +2291,54 @@ class RepositoryResolver:
             self._find_naming({cls} | (self._owners - set(self._naming)))
         return self._naming[cls]
 
+    def set_by(self, getter: str) -> AbstractValue | None:
+        """What getter ``getX`` returns, read from what the repository gives its setter
+        ``setX``: the join of the argument of every call of ``setX`` (``record.setPitch(
+        angle180(p))``), each known or a constant. A record class defined outside the
+        repository (MOOS-IvP's ``NodeRecord``) or one whose setter stores its parameter is
+        read so. None when ``getter`` is not named ``getX`` / ``GetX``, the repository never
+        calls the setter, a call passes it another number of arguments, or one passes a
+        value we cannot read (a write we cannot read leaves the value unknown)."""
+        m = _GETTER_NAME.match(getter)
+        if m is None:
+            return None
+        setter = ("set" if m.group(1) == "get" else "Set") + m.group(2)
+        key = "=" + setter
+        if key in self.cache:
+            return self.cache[key]
+        self.cache[key] = None  # recursion guard
+        out: AbstractValue | None = None
+        ranges: set[Range | None] = set()
+        for path in self._files_naming(setter):
+            pf = self._parse(path, None)
+            if pf is None:
+                continue
+            folder = Folder([pf])
+            for cpf, call in folder.calls(setter):
+                args = [
+                    a
+                    for a in call.child_by_field_name("arguments").named_children
+                    if a.type != "comment"
+                ]
+                if len(args) != 1:
+                    return None
+                ev = Evaluator(folder, library=True, compiled=self.compiled)
+                v = settle(ev._eval(cpf, args[0], 0))
+                if v.pending is not None:
+                    v = resolve_pending(v, self)
+                if not v.known and v.const is None:
+                    return None
+                if v.known:
+                    v = v.because(f"{brief(text(call))} at {_at(cpf, call)}")
+                ranges.add(v.range)
+                out = v if out is None else join(out, v)
+        if out is None or not out.known:
+            return None
+        if len(ranges) > 1:  # calls of several ranges: the reasons name one, so claim none
+            out = replace(out, range=None)
+        self.cache[key] = out
+        return out
+
     def _through_getter(self, pending: str) -> str | None:
         """``.getX().field`` (a field of what ``getX`` returns) as ``.Class.field``, of the
         class ``getX`` returns; None when that class is not known."""
@@ -2356,6 +2418,22 @@ class RepositoryResolver:
         while len(self.parsed) > KEEP_PARSED:
             self.parsed.popitem(last=False)
         return pf
+
+
+def library_field(pf: Any, cls: str | None, field: str) -> tuple | None:
+    """What :data:`facts.LIBRARY_FIELDS` says of field ``field`` of class ``cls`` in file
+    ``pf``: by the class's own name, or by its namespace's when the file names that
+    namespace (``IMC::``)."""
+    if not cls:
+        return None
+    known = facts.LIBRARY_FIELDS.get((cls, field))
+    if known is not None:
+        return known
+    for (qualified, name), fact in facts.LIBRARY_FIELDS.items():
+        ns, sep, short = qualified.rpartition("::")
+        if sep and name == field and short == cls and (ns + "::").encode() in pf.data:
+            return fact
+    return None
 
 
 def field_write_pattern(names: Iterable[str]) -> re.Pattern[bytes]:

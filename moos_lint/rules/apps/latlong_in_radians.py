@@ -3,8 +3,10 @@
 ## What it does
 Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
 `LATITUDE` or `LONGITUDE` with a value in radians: converted to radians
-(`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, or a variable
-named `*_rad`, with no conversion back to degrees.
+(`MOOSDeg2Rad`, `*M_PI/180`), an inverse trigonometric result, a variable
+named `*_rad`, or a field a protocol gives in radians (the `lat` and `lon` of
+LSTS IMC's `EstimatedState`, which DUNE bridges receive), with no conversion
+back to degrees (DUNE's `Angles::degrees` is one).
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
