@@ -600,3 +600,13 @@ def test_a_library_class_by_its_namespace_only_where_the_file_names_it():
         "struct EstimatedState { double lat; };", "using namespace IMC::Spec; // IMC::"
     )
     assert published(imc)["NAV_LAT"].unit == "rad"
+
+
+def test_a_chained_assignment_gives_each_member_its_right_side():
+    code = """
+    A::A() { m_yaw = m_pitch = 0.; }
+    void A::f(double h, double p) { m_yaw = MOOSDeg2Rad(h); m_pitch = MOOSDeg2Rad(p); }
+    bool A::Iterate() { Notify("NAV_YAW", m_yaw); Notify("NAV_PITCH", m_pitch); return true; }
+    """
+    v = published(code)
+    assert v["NAV_YAW"].unit == "rad" and v["NAV_PITCH"].unit == "rad"

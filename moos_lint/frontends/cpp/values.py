@@ -981,6 +981,9 @@ class Evaluator:
             return arg if op == "+" else UNKNOWN
         if t == "binary_expression":
             return self._binary(pf, n, depth)
+        if t == "assignment_expression" and text(n.child_by_field_name("operator")) == "=":
+            # ``m_yaw = m_pitch = 0.``: a chained assignment's value is its right side's
+            return self._eval(pf, n.child_by_field_name("right"), depth + 1)
         if t == "conditional_expression":
             return join(
                 settle(self._eval(pf, n.child_by_field_name("consequence"), depth + 1)),
@@ -1001,9 +1004,39 @@ class Evaluator:
                 and all(c.type == "number_literal" for c in idx.named_children)
             ):
                 fnode = pf.function_of(n)
+                if not v.known and fnode is not None and _is_param(fnode, key):
+                    v = self._callback_reading(pf, fnode, n, key, idx.named_children) or v
                 v = replace(v, origin=f"{pf.path}#{fnode.id if fnode else 0}#{key}")
             return v
         return UNKNOWN
+
+    def _callback_reading(
+        self, pf: Any, fnode: Any, n: Any, key: str, indices: list[Any]
+    ) -> AbstractValue | None:
+        """``data[1]`` of a parameter of a function that a device library is constructed
+        with as its data callback (:data:`facts.LIBRARY_CALLBACKS`): the reading the
+        library hands it there, as a hint."""
+        if len(indices) != 1:
+            return None
+        try:
+            index = int(text(indices[0]), 0)
+        except ValueError:
+            return None
+        fn = _function_short_name(fnode)
+        if not fn:
+            return None
+        for lib, (arg, elements) in facts.LIBRARY_CALLBACKS.items():
+            if index not in elements:
+                continue
+            for f in self.folder.files:
+                at = _callback_given(f.data, lib, arg, fn)
+                if at is not None:
+                    unit, what = elements[index]
+                    line = f.data.count(b"\n", 0, at) + 1
+                    where = place(f.path, line)
+                    why = f"`{brief(text(n), 30)}`, a reading {lib} hands {fn}() ({where}): {what}"
+                    return AbstractValue(unit=unit, hint=True, why=(why,))
+        return None
 
     def _binary(self, pf: Any, n: Any, depth: int) -> AbstractValue:
         v = self._arith(pf, n, depth)
@@ -2418,6 +2451,34 @@ class RepositoryResolver:
         while len(self.parsed) > KEEP_PARSED:
             self.parsed.popitem(last=False)
         return pf
+
+
+def _callback_given(data: bytes, lib: str, arg: int, fn: str) -> int | None:
+    """Where ``data`` constructs ``lib`` with function ``fn`` (``&App::fn`` or ``fn``,
+    bound or not) as its argument ``arg``: the offset of the construction, or None."""
+    name = lib.encode()
+    if name not in data or fn.encode() not in data:
+        return None
+    for m in re.finditer(rb"\b%s\s*\(" % re.escape(name), data):
+        depth, start, args, i = 1, m.end(), [], m.end()
+        while i < len(data) and depth:
+            c = data[i : i + 1]
+            if c in b"([{":
+                depth += 1
+            elif c in b")]}":
+                depth -= 1
+            elif c == b"," and depth == 1:
+                args.append(data[start:i])
+                start = i + 1
+            elif c == b";":
+                break
+            i += 1
+        if depth:
+            continue
+        args.append(data[start : i - 1])
+        if arg < len(args) and re.search(rb"(?:::|\b)%s\b" % re.escape(fn.encode()), args[arg]):
+            return m.start()
+    return None
 
 
 def library_field(pf: Any, cls: str | None, field: str) -> tuple | None:
