@@ -2342,7 +2342,10 @@ class RepositoryResolver:
         self.cache[key] = None  # recursion guard
         out: AbstractValue | None = None
         ranges: set[Range | None] = set()
-        for path in self._files_naming(setter):
+        files = self._files_naming(setter)
+        if len(files) > KEEP_PARSED:  # a setter called all over a tree (MOOS-IvP's own
+            return None  # NodeRecord) is one some caller sets from what it cannot read
+        for path in files:
             pf = self._parse(path, None)
             if pf is None:
                 continue
