@@ -159,23 +159,21 @@ LIBRARY_FIELDS: dict[tuple[str, str], tuple[str | None, str | None, tuple[float,
 }
 
 #: Device libraries that hand a callback of the app's the readings they receive: the
-#: class constructed -> (which of its arguments is the data callback, {element of the
-#: callback's array argument: (unit, what it is)}). Peter Bartz's Razor AHRS interface
-#: (razor-9dof-ahrs C++/RazorAHRS.h: ``RazorAHRS(port, DataCallbackFunc data_func,
+#: class constructed -> (which of its arguments is the data callback, the elements of the
+#: callback's array argument whose unit is known, that unit, why). Peter Bartz's Razor
+#: AHRS interface (razor-9dof-ahrs C++/RazorAHRS.h: ``RazorAHRS(port, DataCallbackFunc data_func,
 #: ErrorCallbackFunc error_func, Mode mode)``, RazorAHRS.cpp hands ``data_func`` the
 #: floats the board sends, unchanged) reads a board whose firmware sends yaw, pitch and
 #: roll first, in degrees, in every mode that outputs angles (Arduino/Razor_AHRS/
 #: Output.ino, ``output_angles``: ``ypr[0] = TO_DEG(yaw); ypr[1] = TO_DEG(pitch);
 #: ypr[2] = TO_DEG(roll)``). In its raw sensor modes the same elements are accelerations,
 #: so the degrees are a hint (as a name's), never trusted where a name says otherwise.
-LIBRARY_CALLBACKS: dict[str, tuple[int, dict[int, tuple[str, str]]]] = {
+LIBRARY_CALLBACKS: dict[str, tuple[int, frozenset[int], str, str]] = {
     "RazorAHRS": (
         1,
-        {
-            0: ("deg", "the Razor AHRS board sends yaw, pitch and roll in degrees"),
-            1: ("deg", "the Razor AHRS board sends yaw, pitch and roll in degrees"),
-            2: ("deg", "the Razor AHRS board sends yaw, pitch and roll in degrees"),
-        },
+        frozenset({0, 1, 2}),
+        "deg",
+        "the Razor AHRS board sends yaw, pitch and roll in degrees",
     ),
 }
 

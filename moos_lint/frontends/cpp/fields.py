@@ -93,17 +93,12 @@ def _declaring(root: Any) -> Iterator[tuple[str, str, Any]]:
         stack.extend(x.named_children)
 
 
-def declared_type(fn: Any, name: str, use: Any = None) -> str | None:
-    """The class of ``name`` as a parameter or local of function ``fn``; with ``use``, of
-    the declaration in scope there: the last before it in a block that holds it (each
-    ``if`` branch of a message handler may declare its own ``msg`` of another type). None
-    when no declaration of ``name`` is in scope at ``use`` (a member of that name)."""
+def declared_type(fn: Any, name: str, use: Any) -> str | None:
+    """The class of ``name`` as a parameter or local of function ``fn``, of the declaration
+    in scope at node ``use``: the last before it in a block that holds it (each ``if``
+    branch of a message handler may declare its own ``msg`` of another type). None when no
+    declaration of ``name`` is in scope there (a member of that name)."""
     if fn is None:
-        return None
-    if use is None:
-        for n, t in declarations(fn):
-            if n == name:
-                return type_name(t)
         return None
     best: tuple[int, str] | None = None
     for n, t, node in _declaring(fn):

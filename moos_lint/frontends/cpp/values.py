@@ -1023,19 +1023,24 @@ class Evaluator:
         except ValueError:
             return None
         fn = _function_short_name(fnode)
-        if not fn:
+        given = self._once(("callback", fn), lambda: self._callback_of(fn), None) if fn else None
+        if given is None:
             return None
-        for lib, (arg, elements) in facts.LIBRARY_CALLBACKS.items():
-            if index not in elements:
-                continue
+        lib, where = given
+        _arg, elements, unit, what = facts.LIBRARY_CALLBACKS[lib]
+        if index not in elements:
+            return None
+        why = f"`{brief(text(n), 30)}`, a reading {lib} hands {fn}() ({where}): {what}"
+        return AbstractValue(unit=unit, hint=True, why=(why,))
+
+    def _callback_of(self, fn: str) -> tuple[str, str] | None:
+        """The device library (of :data:`facts.LIBRARY_CALLBACKS`) that the folder constructs
+        with function ``fn`` as its data callback, and where; None when none is."""
+        for lib, (arg, _elements, _unit, _what) in facts.LIBRARY_CALLBACKS.items():
             for f in self.folder.files:
                 at = _callback_given(f.data, lib, arg, fn)
                 if at is not None:
-                    unit, what = elements[index]
-                    line = f.data.count(b"\n", 0, at) + 1
-                    where = place(f.path, line)
-                    why = f"`{brief(text(n), 30)}`, a reading {lib} hands {fn}() ({where}): {what}"
-                    return AbstractValue(unit=unit, hint=True, why=(why,))
+                    return lib, place(f.path, f.data.count(b"\n", 0, at) + 1)
         return None
 
     def _binary(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -1102,7 +1107,7 @@ class Evaluator:
 
     def _call(self, pf: Any, n: Any, depth: int) -> AbstractValue:
         fn = n.child_by_field_name("function")
-        args = [a for a in n.child_by_field_name("arguments").named_children if a.type != "comment"]
+        args = _arguments(n)
         name = callee_name(fn)
         bare = re.sub(r"^std::", "", name)
         at = place(pf.path, n.start_point[0] + 1)
@@ -1515,11 +1520,7 @@ class Evaluator:
         out: AbstractValue | None = None
         try:
             for cpf, call in self.folder.calls(name):
-                args = [
-                    a
-                    for a in call.child_by_field_name("arguments").named_children
-                    if a.type != "comment"
-                ]
+                args = _arguments(call)
                 if index < len(args):
                     v = settle(self._eval(cpf, args[index], depth + 1))
                     if not v.known:
@@ -2139,7 +2140,8 @@ class RepositoryResolver:
         #: class many files name would otherwise keep all their bytes)
         self._naming: dict[str, list[str]] = {}
         self._all: list[str] | None = None
-        #: classes whose fields are waited for (see :meth:`expect`)
+        #: classes whose fields are waited for, and setters of awaited getters (see
+        #: :meth:`expect`): the words whose files the one read of every file finds
         self._expected: set[str] = set()
         #: the functions the values wait for (see :meth:`expect`), and the classes whose
         #: methods they are (``NodeRecord`` for ``NodeRecord::getHeading``): a value such
@@ -2350,15 +2352,11 @@ class RepositoryResolver:
             if pf is None:
                 continue
             folder = Folder([pf])
+            ev = Evaluator(folder, library=True, compiled=self.compiled)
             for cpf, call in folder.calls(setter):
-                args = [
-                    a
-                    for a in call.child_by_field_name("arguments").named_children
-                    if a.type != "comment"
-                ]
+                args = _arguments(call)
                 if len(args) != 1:
                     return None
-                ev = Evaluator(folder, library=True, compiled=self.compiled)
                 v = settle(ev._eval(cpf, args[0], 0))
                 if v.pending is not None:
                     v = resolve_pending(v, self)
@@ -2454,6 +2452,11 @@ class RepositoryResolver:
         while len(self.parsed) > KEEP_PARSED:
             self.parsed.popitem(last=False)
         return pf
+
+
+def _arguments(call: Any) -> list[Any]:
+    """A call's arguments (its comments left out)."""
+    return [a for a in call.child_by_field_name("arguments").named_children if a.type != "comment"]
 
 
 def _callback_given(data: bytes, lib: str, arg: int, fn: str) -> int | None:
