@@ -9,12 +9,11 @@ from pathlib import Path
 import pytest
 
 from moos_lint.files.source import SourceFile
-from moos_lint.frontends.cpp.app import parse_folder
+from moos_lint.frontends.cpp.app import parse_folder, read_relevant
+from moos_lint.frontends.cpp.file_names import DEF_TEMPLATE, defined_names, setter_names
 from moos_lint.frontends.cpp.values import (
-    _DEF_TEMPLATE,
     AbstractValue,
     RepositoryResolver,
-    defined_names,
     neg,
     range_text,
     resolve_pending,
@@ -173,7 +172,7 @@ def test_the_definition_index_names_exactly_what_the_per_name_search_finds():
     )
     words = set(re.findall(rb"\w+", data))
     for w in sorted(words):
-        expected = re.search(_DEF_TEMPLATE % re.escape(w), data) is not None
+        expected = re.search(DEF_TEMPLATE % re.escape(w), data) is not None
         assert (w in defined_names(data)) == expected, w
     assert {b"pitch", b"roll", b"yaw2", b"heading", b"depth", b"if"} <= defined_names(data)
     assert not {b"speed", b"alt", b"b", b"g"} & defined_names(data)
@@ -554,6 +553,49 @@ def test_a_setter_given_a_value_we_cannot_read_leaves_its_getter_unknown(tmp_pat
     parse = "void load(NodeRecord& r, string s) { r.setPitch(atof(s.c_str())); r.setPitch(0); }"
     files = {"sim/SimEngine.cpp": SIM_ENGINE, "lib/parse.cpp": parse}
     assert not _resolve_in(tmp_path, files, v["NAV_PITCH"]).known
+
+
+def test_the_index_of_the_first_read_spares_the_resolver_its_own(tmp_path):
+    """The files' index, made where they were first read (``read_relevant``), is the
+    resolver's: a setter is found in it without a read of every file, to the same value."""
+    v = published('bool A::Iterate() { Notify("NAV_PITCH", m_record.getPitch()); return true; }')
+    files = {
+        "sim/SimEngine.cpp": SIM_ENGINE,
+        "sim/Other.cpp": "void f(NodeRecord& r) { r.setPitchRate(1); }\n",
+        "app/Main.cpp": "int main() { return 0; }\n",
+    }
+    paths = []
+    for name, code in files.items():
+        p = tmp_path / name
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_text(code)
+        paths.append(str(p))
+    names: dict = {}
+    read_relevant(paths, names=names)
+    assert set(names) == set(paths)
+    reads = []
+
+    def reader(path):
+        reads.append(path)
+        with open(path, "rb") as f:
+            return f.read()
+
+    resolver = RepositoryResolver(sorted(paths), reader, None, names)
+    resolver.expect([v["NAV_PITCH"]])
+    out = resolve_pending(v["NAV_PITCH"], resolver)
+    assert out.unit == "deg"
+    assert reads == [str(tmp_path / "sim/SimEngine.cpp")]  # read once, to be parsed
+    assert out == _resolve_in(tmp_path, files, v["NAV_PITCH"])
+
+
+def test_a_file_names_a_setter_by_its_whole_name():
+    data = b"r.setPitch(p); q.SetDepth(d); resetYaw(); m_setHeadingRate = 1; setup();"
+    assert setter_names(data) == {
+        b"setPitch",
+        b"SetDepth",
+        b"setYaw",
+        b"setHeadingRate",
+    }
 
 
 def test_setters_of_several_ranges_give_no_range(tmp_path):

@@ -267,11 +267,11 @@ def _build_cpp_units(
 
     if parsed is not None:
         by_folder: dict[str, ParsedFolder] = {}
-        for paths, sources, cpp_files, _error in parsed:
+        for paths, sources, cpp_files, _error, names in parsed:
             if cpp_files is None:  # redo every folder here, where errors are reported
                 by_folder = {}
                 break
-            by_folder[os.path.dirname(paths[0])] = (sources, cpp_files)
+            by_folder[os.path.dirname(paths[0])] = (sources, cpp_files, names)
         if by_folder:
             try:
                 return build_cpp_units(run, files, by_folder), []

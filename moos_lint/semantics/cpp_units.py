@@ -13,13 +13,15 @@ from moos_lint.files.source import SourceFile
 from moos_lint.files.suffixes import Kind
 from moos_lint.frontends.cpp.app import build_apps, helper_io, link_apps, read_relevant
 from moos_lint.frontends.cpp.cmake import unbuilt
+from moos_lint.frontends.cpp.file_names import FileNames
 from moos_lint.frontends.cpp.model import AppModel, CppFile
 from moos_lint.frontends.nsplug import Expansion
 from moos_lint.frontends.unit import Unit
 from moos_lint.semantics.run_state import RunView
 
-#: what a worker process read and parsed of one folder: its relevant sources, its files
-ParsedFolder = tuple[dict[str, SourceFile], list[CppFile]]
+#: what a worker process read and parsed of one folder: its relevant sources, its files,
+#: the value analysis's index of each file it read
+ParsedFolder = tuple[dict[str, SourceFile], list[CppFile], dict[str, FileNames]]
 
 
 def build_cpp_units(
@@ -27,21 +29,24 @@ def build_cpp_units(
 ) -> list[Unit]:
     """Units for the C++ files in ``paths``: one per folder, in folder order.
 
-    ``parsed`` (folder -> (relevant sources, extracted files)) is what worker
-    processes already read and parsed (:mod:`moos_lint.speed.parallel`).
+    ``parsed`` (folder -> (relevant sources, extracted files, index of the files read))
+    is what worker processes already read and parsed (:mod:`moos_lint.speed.parallel`).
     """
     in_memory = run.preprocessor.cache.in_memory
     if parsed is not None and any(in_memory(p) is not None for p in paths):
         parsed = None  # files being fixed: the workers read the disk's text
+    names: dict[str, FileNames] = {}
     if parsed is None:
-        sources = read_relevant(paths, in_memory)
+        sources = read_relevant(paths, in_memory, names)
         run.sources.update(sources)
         apps = {a.folder: a for a in build_apps(sources)}
     else:
-        found = {p: s for srcs, _ in parsed.values() for p, s in srcs.items()}
+        found = {p: s for srcs, _, _ in parsed.values() for p, s in srcs.items()}
+        for _, _, folder_names in parsed.values():
+            names.update(folder_names)
         sources = {p: found[p] for p in paths if p in found}  # in the order of ``paths``
         run.sources.update(sources)
-        linked = [AppModel(folder=f, files=fs) for f, (s, fs) in sorted(parsed.items()) if s]
+        linked = [AppModel(folder=f, files=fs) for f, (s, fs, _) in sorted(parsed.items()) if s]
         link_apps(linked)
         apps = {a.folder: a for a in linked}
     compiled = None
@@ -52,7 +57,7 @@ def build_cpp_units(
     if apps:
         from moos_lint.frontends.cpp.values import link_values
 
-        link_values(list(apps.values()), paths, compiled)
+        link_values(list(apps.values()), paths, compiled, names)
         _own_geodesy(list(apps.values()), paths)
     units = []
     folders: dict[str, list[str]] = {}

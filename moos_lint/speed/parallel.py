@@ -169,16 +169,20 @@ def _cpp_folder(i: int, paths: list[str]) -> tuple[tuple, list] | None:
     return facts, source.journal_since(size)
 
 
-def cpp_folder_facts(paths: list[str]) -> tuple[list[str], dict[str, Any], list[Any] | None, str]:
-    """Read, prefilter and parse one folder of C++ files: (paths, sources, facts, error)."""
+def cpp_folder_facts(
+    paths: list[str],
+) -> tuple[list[str], dict[str, Any], list[Any] | None, str, dict[str, Any]]:
+    """Read, prefilter and parse one folder of C++ files: (paths, sources, facts, error,
+    the value analysis's index of each file read)."""
     from moos_lint.frontends.cpp.app import parse_folder, read_relevant
 
+    names: dict[str, Any] = {}
     try:
-        sources = read_relevant(paths)
+        sources = read_relevant(paths, names=names)
         files = parse_folder(sources) if sources else []
-        return paths, sources, files, ""
+        return paths, sources, files, "", names
     except Exception as exc:  # the main process redoes this folder to report it
-        return paths, {}, None, f"{type(exc).__name__}: {exc}"
+        return paths, {}, None, f"{type(exc).__name__}: {exc}", {}
 
 
 def _folder_weight(paths: list[str]) -> int:
@@ -231,7 +235,7 @@ def _completed(
             merge_journal(reads)
             yield facts
     except Exception as exc:  # a worker died: the main process redoes the C++
-        yield tasks[0] if tasks else [], {}, None, f"{type(exc).__name__}: {exc}"
+        yield tasks[0] if tasks else [], {}, None, f"{type(exc).__name__}: {exc}", {}
 
 
 # ------------------------------------------------------------------ phase 2: rules

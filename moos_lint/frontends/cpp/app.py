@@ -13,12 +13,15 @@ from moos_lint.files.diagnostics import Span
 from moos_lint.files.source import SourceFile, decode, read_bytes
 from moos_lint.files.suffixes import CPP_SUFFIXES
 from moos_lint.frontends.cpp.cmake import executable_name, executables_in, unbuilt
+from moos_lint.frontends.cpp.file_names import FileNames, file_names
 from moos_lint.frontends.cpp.model import APP_BASES, AppModel, CppClass, CppFile, IOUse
 from moos_lint.frontends.cpp.prefilter import mentions_moos
 
 
 def read_relevant(
-    paths: Iterable[str], in_memory: Callable[[str], object] | None = None
+    paths: Iterable[str],
+    in_memory: Callable[[str], object] | None = None,
+    names: dict[str, FileNames] | None = None,
 ) -> dict[str, SourceFile]:
     """The C++ files that can be read and mention the MOOS API.
 
@@ -26,6 +29,9 @@ def read_relevant(
     repository never mention the MOOS API and are never decoded. (The pattern is
     ASCII, so bytes and the re-encoded text match alike.) ``in_memory``: the text of
     a file held in memory instead of the disk's (a file ``--fix`` is fixing), or None.
+    ``names``: when given, the value analysis's index of every file read from the disk
+    is added to it (:func:`~moos_lint.frontends.cpp.file_names.file_names`), so that
+    it needs no read of its own.
     """
     out: dict[str, SourceFile] = {}
     for path in paths:
@@ -39,15 +45,20 @@ def read_relevant(
             continue
         kept = _read_memo.get(path) if PARSE_MEMO_SIZE else None
         if kept is not None and kept[0] == data:
-            src = kept[1]  # the same bytes as last time: the same verdict and text
+            src = kept[1]  # the same bytes as last time: the same verdict, text and index
+            if names is not None:
+                names[path] = kept[2]
         else:
             src = None
             if mentions_moos(data):
                 decoded = decode(data, path)
                 if isinstance(decoded, SourceFile):
                     src = decoded
-            if PARSE_MEMO_SIZE:
-                _read_memo[path] = (data, src)
+            index = file_names(data) if names is not None or PARSE_MEMO_SIZE else None
+            if names is not None and index is not None:
+                names[path] = index
+            if PARSE_MEMO_SIZE and index is not None:
+                _read_memo[path] = (data, src, index)
         if src is not None:
             out[path] = src
     return out
@@ -94,7 +105,7 @@ def helper_io(paths: Iterable[str]) -> list[tuple[SourceFile, CppFile]]:
 
 #: the language server's C++ files, by their bytes: a re-lint prefilters and decodes only
 #: the files that changed
-_read_memo: dict[str, tuple[bytes, SourceFile | None]] = {}
+_read_memo: dict[str, tuple[bytes, SourceFile | None, FileNames]] = {}
 
 
 def parse_folder(sources: dict[str, SourceFile], compiled: Any = None) -> list[CppFile]:

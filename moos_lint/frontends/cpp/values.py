@@ -24,8 +24,13 @@ from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from moos_lint.frontends.cpp import facts, fields
+from moos_lint.frontends.cpp.file_names import (
+    DEF_TEMPLATE,
+    SETTER_NAME,
+    FileNames,
+    file_names,
+)
 from moos_lint.frontends.cpp.names import (
-    WORD_BYTES,
     callee_name,
     displacement_axis,
     function_declarator,
@@ -521,8 +526,15 @@ def class_body(data: bytes, cls: str) -> tuple[int, int] | None:
     """Where the body of class or struct ``cls`` lies in ``data`` (``struct cls {...}``
     or ``typedef struct {...} cls;``), braces counted (comments and strings are not
     told apart): (start, end) offsets, or None."""
-    name = re.escape(cls.encode())
-    m = re.search(rb"(?:class|struct)\s+" + name + rb"\b[^;{}()]*\{", data)
+    key = cls.encode()
+    if key not in data:
+        return None
+    name = re.escape(key)
+    m = None
+    for keyword in (b"class", b"struct"):  # each literal first: an alternation is tried
+        found = re.search(keyword + rb"\s+" + name + rb"\b[^;{}()]*\{", data)  # at every byte
+        if found is not None and (m is None or found.start() < m.start()):
+            m = found
     if m is not None:
         depth, i = 1, m.end()
         while i < len(data) and depth:
@@ -2064,28 +2076,7 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
 
 #: a getter's name (``getPitch``, ``GetDepth``): its setter is ``setPitch`` / ``SetDepth``
 _GETTER_NAME = re.compile(r"^(get|Get)([A-Z]\w*)$")
-_DEF_TEMPLATE = rb"(?:::|\b)%s\s*\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{"
-#: the tail of :data:`_DEF_TEMPLATE`: a definition's parameter list and opening brace
-_DEF_TAIL = re.compile(rb"\([^;{}()]*\)\s*(?:const\s*)?(?:override\s*)?\{")
 _WORD = re.compile(rb"\w+")
-_SPACE_BYTES = frozenset(b" \t\n\r\f\v")
-
-
-def defined_names(data: bytes) -> set[bytes]:
-    """The names ``data`` may define a function of: exactly the word names ``N`` for
-    which ``_DEF_TEMPLATE % N`` finds a match (each match holds one ``(``, so none hides
-    another, and the name is the word just before it, spaces apart)."""
-    names: set[bytes] = set()
-    for m in _DEF_TAIL.finditer(data):
-        end = m.start()
-        while end > 0 and data[end - 1] in _SPACE_BYTES:
-            end -= 1
-        start = end
-        while start > 0 and data[start - 1] in WORD_BYTES:
-            start -= 1
-        if start < end:
-            names.add(data[start:end])
-    return names
 
 
 _CLASS_HEAD = re.compile(rb"\b(?:class|struct)\s+(\w+)[^;{}()]*\{")
@@ -2097,7 +2088,7 @@ def _owners_of(name: bytes, data: bytes) -> set[str]:
     qualifier of ``Owner::name(...) {``, or for a definition inside a class body the
     class whose head comes last before it (a guess: it only orders the reads)."""
     out: set[str] = set()
-    for m in re.finditer(_DEF_TEMPLATE % re.escape(name), data):
+    for m in re.finditer(DEF_TEMPLATE % re.escape(name), data):
         if data.startswith(b"::", m.start()):  # ``Owner::name(...) {``
             q = _LAST_WORD.search(data, max(0, m.start() - 200), m.start())
             if q is not None:
@@ -2121,15 +2112,26 @@ KEEP_PARSED = 4
 class RepositoryResolver:
     """Resolves a function's return value by its name across the repository's C++ files.
 
-    Each file is read once, to index the names it may define; a file is parsed only
-    when a pending value names a function it may define. Only the index is kept, not
-    the files' bytes, and only the last :data:`KEEP_PARSED` parsed files.
+    Each file is indexed once (:mod:`~moos_lint.frontends.cpp.file_names`: the names
+    it may define, the setters it names), from ``known`` (the index its first read made)
+    or from a read of its own; a file is parsed only when a pending value names a
+    function it may define. Only the index is kept, not the files' bytes, and only the
+    last :data:`KEEP_PARSED` parsed files.
     """
 
-    def __init__(self, paths: list[str], read: Any, compiled: Compiled | None = None):
+    def __init__(
+        self,
+        paths: list[str],
+        read: Any,
+        compiled: Compiled | None = None,
+        known: dict[str, FileNames] | None = None,
+    ):
         self.paths = paths
         self.read = read
         self.compiled = compiled
+        self.known = known or {}
+        #: each file's index (in the order of :attr:`all_paths`), once it is read
+        self._names: list[FileNames] = []
         self.cache: dict[str, AbstractValue | None] = {}
         #: the last parsed files (:data:`KEEP_PARSED`), by path
         self.parsed: OrderedDict[str, Any] = OrderedDict()
@@ -2169,7 +2171,7 @@ class RepositoryResolver:
         """The files that may define ``name`` (in path order), with their bytes when read."""
         key = name.encode()
         if _WORD.fullmatch(key) is None:  # not a plain word: search every file's bytes
-            pattern = re.compile(_DEF_TEMPLATE % re.escape(key))
+            pattern = re.compile(DEF_TEMPLATE % re.escape(key))
             out: list[tuple[str, bytes | None]] = []
             for path in self.all_paths:
                 data = self._data(path)
@@ -2202,33 +2204,57 @@ class RepositoryResolver:
                 v = v.fallback if isinstance(v.fallback, AbstractValue) else None
 
     def _read_all(self) -> None:
-        """One read of every file: the names it may define a function of, and whether it
-        names each expected class (for :meth:`_field`)."""
-        self._index = {}
-        classes = self._naming_of(self._expected - set(self._naming))
+        """Index every file: the names it may define a function of (from what its first
+        read noted, else read here), and whether it names each expected class (for
+        :meth:`_field`)."""
         wanted = self._wanted
+        expected = self._expected - set(self._naming)
+        setters = {c for c in expected if SETTER_NAME.match(c)}
+        byte_keys = self._naming_of(expected - setters)
+        self._index = {}
         for i, path in enumerate(self.all_paths):
-            data = self._data(path)
-            names = defined_names(data)
-            for n in names:
+            names = self.known.get(path)
+            data = None
+            if names is None:
+                data = self._data(path)
+                names = file_names(data)
+            self._names.append(names)
+            for n in names.defined:
                 self._index.setdefault(n, []).append(i)
-            for key, paths in classes:
-                if key in data:
-                    paths.append(path)
-            for n in names & wanted if wanted else ():
-                self._owners.update(_owners_of(n, data))
+            owned = names.defined & wanted if wanted else ()
+            if byte_keys or owned:
+                data = self._data(path) if data is None else data
+                for key, paths in byte_keys:
+                    if key in data:
+                        paths.append(path)
+                for n in owned:
+                    self._owners.update(_owners_of(n, data))
+        for cls in setters:
+            self._naming[cls] = self._setter_files(cls.encode())
 
     def _naming_of(self, classes: set[str]) -> list[tuple[bytes, list[str]]]:
-        """Start :attr:`_naming` for ``classes``: (the class's bytes, its list to fill)."""
+        """Start :attr:`_naming` for ``classes``: once the files are indexed, the setters
+        among them are found in the index; for the others, (the class's bytes, its list
+        to fill) is returned, to look for in the files' bytes."""
         out = []
         for cls in sorted(classes):
+            if self._index is not None and SETTER_NAME.match(cls):
+                self._naming[cls] = self._setter_files(cls.encode())
+                continue
             self._naming[cls] = []
             out.append((cls.encode(), self._naming[cls]))
         return out
 
+    def _setter_files(self, key: bytes) -> list[str]:
+        """The files whose index names setter ``key``."""
+        paths = self.all_paths
+        return [paths[i] for i, names in enumerate(self._names) if key in names.setters]
+
     def _find_naming(self, classes: set[str]) -> None:
         """One read of every file: which of ``classes`` each names (for :meth:`_field`)."""
         keys = self._naming_of(classes)
+        if not keys:
+            return
         for path in self.all_paths:
             data = self._data(path)
             for key, paths in keys:
@@ -2530,7 +2556,12 @@ def c_sources(paths: list[str]) -> list[str]:
     return out
 
 
-def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = None) -> None:
+def link_values(
+    apps: list[Any],
+    paths: list[str],
+    compiled: Compiled | None = None,
+    names: dict[str, FileNames] | None = None,
+) -> None:
     """Finish the values the apps publish with what only the repository knows.
 
     Calls to functions defined outside an app's folder are resolved by name across
@@ -2540,6 +2571,7 @@ def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = N
     arguments of ``sin``, ``cos`` and ``tan`` are finished too; one read by mail of a
     variable the repository's apps publish, not known to be in degrees, is unknown.
     ``compiled``: libclang's facts (:class:`Compiled`), for the files it parsed.
+    ``names``: the index of the files already read (see :class:`RepositoryResolver`).
     """
     from moos_lint.files.source import read_bytes
 
@@ -2556,7 +2588,7 @@ def link_values(apps: list[Any], paths: list[str], compiled: Compiled | None = N
     ]
     resolver: RepositoryResolver | None = None
     if waiting:
-        resolver = RepositoryResolver(sorted(paths), read_bytes, compiled)
+        resolver = RepositoryResolver(sorted(paths), read_bytes, compiled, names)
         resolver.expect(waiting)
     for app in apps:
         for pub in app.publications:
