@@ -598,6 +598,24 @@ def test_a_file_names_a_setter_by_its_whole_name():
     }
 
 
+def test_a_setter_call_on_another_class_is_not_the_getters(tmp_path):
+    """``m_record`` is a NodeRecord: a call of ``setPitch`` on an object declared of another
+    class is not its setter's, and its unreadable value leaves the getter known; on an
+    object whose class is not declared (``auto``) it may be, and leaves it unknown."""
+    app = """
+    class A : public CMOOSApp { NodeRecord m_record; };
+    bool A::Iterate() { Notify("NAV_PITCH", m_record.getPitch()); return true; }
+    """
+    v = published(app)
+    assert v["NAV_PITCH"].pending == "getPitch" and v["NAV_PITCH"].receiver == "NodeRecord"
+    other = "Record6DOF load(string s) { Record6DOF r; r.setPitch(atof(s.c_str())); return r; }"
+    files = {"sim/SimEngine.cpp": SIM_ENGINE, "lib/parse.cpp": other}
+    assert _resolve_in(tmp_path / "a", files, v["NAV_PITCH"]).unit == "deg"
+    unknown = "void load(string s) { auto r = parse(s); r.setPitch(atof(s.c_str())); }"
+    files = {"sim/SimEngine.cpp": SIM_ENGINE, "lib/parse.cpp": unknown}
+    assert not _resolve_in(tmp_path / "b", files, v["NAV_PITCH"]).known
+
+
 def test_setters_of_several_ranges_give_no_range(tmp_path):
     v = published('bool A::Iterate() { Notify("NAV_YAW", m_record.getYaw()); return true; }')
     code = """

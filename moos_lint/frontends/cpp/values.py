@@ -64,6 +64,10 @@ class AbstractValue:
     fallback: Any = None
     #: a field of an NMEA speed sentence: (its unit if it is read as a speed, the sentence)
     nmea_speed: tuple[str, str] | None = None
+    #: for a method called on an object whose class is declared (``record.getPitch()`` of
+    #: a ``NodeRecord& record``): that class, whose setter alone gives the getter's value
+    #: (:meth:`RepositoryResolver.set_by`)
+    receiver: str | None = None
 
     @property
     def known(self) -> bool:
@@ -1195,7 +1199,17 @@ class Evaluator:
         own = self.folder.functions.get(name)
         if own:
             return self._returns(name, own, depth)
-        return AbstractValue(pending=name, why=(f"{text(n)[:40]} at {at}",))
+        receiver = self.object_class(pf, fn) if fn.type == "field_expression" else None
+        return AbstractValue(pending=name, why=(f"{text(n)[:40]} at {at}",), receiver=receiver)
+
+    def object_class(self, pf: Any, fn: Any) -> str | None:
+        """The class of the object a method is called on (``record`` of ``record.getX``),
+        when it is a local, a parameter or a member declared of one class; else None."""
+        obj = strip(fn.child_by_field_name("argument"))
+        if obj is None or obj.type != "identifier":
+            return None
+        name = text(obj)
+        return fields.declared_type(pf.function_of(fn), name, fn) or self.folder.member_type(name)
 
     def _once(self, key: tuple, compute: Callable[[], Any], on_cycle: Any = UNKNOWN) -> Any:
         """``compute()``, once per folder and ``key``; ``on_cycle`` when asked again while it
@@ -2059,7 +2073,7 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
         before = v.fallback if v.fallback is not None else UNKNOWN
         return apply_ops(resolve_pending(before, resolver), v.ops)
     if (base is None or not base.known) and isinstance(resolver, RepositoryResolver):
-        base = resolver.set_by(v.pending) or base  # a getter read through its setter
+        base = resolver.set_by(v.pending, v.receiver) or base  # a getter through its setter
     if base is None or not base.known:
         base = name_hint(v.pending)  # a getter defined nowhere in the repository
     out = apply_ops(base, v.ops)
@@ -2352,19 +2366,22 @@ class RepositoryResolver:
             self._find_naming({cls} | (self._owners - set(self._naming)))
         return self._naming[cls]
 
-    def set_by(self, getter: str) -> AbstractValue | None:
+    def set_by(self, getter: str, receiver: str | None = None) -> AbstractValue | None:
         """What getter ``getX`` returns, read from what the repository gives its setter
         ``setX``: the join of the argument of every call of ``setX`` (``record.setPitch(
         angle180(p))``), each known or a constant. A record class defined outside the
         repository (MOOS-IvP's ``NodeRecord``) or one whose setter stores its parameter is
-        read so. None when ``getter`` is not named ``getX`` / ``GetX``, the repository never
-        calls the setter, a call passes it another number of arguments, or one passes a
-        value we cannot read (a write we cannot read leaves the value unknown)."""
+        read so. ``receiver``: the class the getter is called on, when declared; a call on
+        an object declared of another class is not its setter's (a repository's own
+        ``NodeRecord6DOF`` parser beside the simulator's ``NodeRecord``). None when
+        ``getter`` is not named ``getX`` / ``GetX``, the repository never calls the setter,
+        a call passes it another number of arguments, or one passes a value we cannot read
+        (a write we cannot read leaves the value unknown)."""
         m = _GETTER_NAME.match(getter)
         if m is None:
             return None
         setter = ("set" if m.group(1) == "get" else "Set") + m.group(2)
-        key = "=" + setter
+        key = f"={setter}@{receiver or ''}"
         if key in self.cache:
             return self.cache[key]
         self.cache[key] = None  # recursion guard
@@ -2380,6 +2397,11 @@ class RepositoryResolver:
             folder = Folder([pf])
             ev = Evaluator(folder, library=True, compiled=self.compiled)
             for cpf, call in folder.calls(setter):
+                fn = call.child_by_field_name("function")
+                if receiver and fn.type == "field_expression":
+                    cls = ev.object_class(cpf, fn)
+                    if cls is not None and cls != receiver:
+                        continue  # another class's setter of the same name
                 args = _arguments(call)
                 if len(args) != 1:
                     return None
