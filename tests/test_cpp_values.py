@@ -616,6 +616,26 @@ def test_a_setter_call_on_another_class_is_not_the_getters(tmp_path):
     assert not _resolve_in(tmp_path / "b", files, v["NAV_PITCH"]).known
 
 
+def test_a_library_class_method_is_what_the_library_says(tmp_path):
+    """``euler.pitch()`` of an ``XsEuler`` is the Xsens SDK's degrees, even where the
+    repository defines a ``pitch()`` of its own class in radians; a method of another
+    class is still read from the repository."""
+    app = """
+    class A : public CMOOSApp { Attitude m_att; };
+    void A::onPacket(const XsDataPacket& packet) {
+      XsEuler euler = packet.orientationEuler();
+      Notify("IMU_PITCH", euler.pitch());
+      Notify("ATT_PITCH", m_att.pitch());
+    }
+    """
+    v = published(app)
+    assert v["IMU_PITCH"].receiver == "XsEuler" and v["ATT_PITCH"].receiver == "Attitude"
+    own = "double Attitude::pitch() const { return asin(m_q); }"
+    out = _resolve_in(tmp_path, {"lib/Attitude.cpp": own}, v["IMU_PITCH"])
+    assert (out.unit, out.range) == ("deg", (-90.0, 90.0)) and "XsEuler" in out.why[0]
+    assert _resolve_in(tmp_path, {"lib/Attitude.cpp": own}, v["ATT_PITCH"]).unit == "rad"
+
+
 def test_setters_of_several_ranges_give_no_range(tmp_path):
     v = published('bool A::Iterate() { Notify("NAV_YAW", m_record.getYaw()); return true; }')
     code = """

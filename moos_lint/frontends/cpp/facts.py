@@ -158,6 +158,24 @@ LIBRARY_FIELDS: dict[tuple[str, str], tuple[str | None, str | None, tuple[float,
     ),
 }
 
+#: Methods of library classes whose angle is known: (class, method) -> as
+#: :data:`LIBRARY_ANGLES`, for a method called on an object declared of that class
+#: (``XsEuler euler = packet.orientationEuler(); euler.pitch()``), also where the
+#: repository holds the library's code or defines a method of that name on a class of its
+#: own (the value analysis finds a function's definitions by name). The Xsens
+#: MT SDK's ``XsEuler`` holds Euler angles in degrees: xstypes/xseuler.c fills roll, pitch
+#: and yaw with ``XsMath_rad2deg(...)`` of a quaternion (roll and yaw from atan2, pitch
+#: from an asin), and xseuler.h's ``roll()``, ``pitch()``, ``yaw()`` (also ``x()``,
+#: ``y()``, ``z()``) return them; the yaw's sense follows the frame the device is set to.
+_XS_EULER = "the Xsens SDK's XsEuler holds Euler angles in degrees"
+LIBRARY_METHODS: dict[tuple[str, str], tuple[str, str | None, tuple[float, float], str]] = {
+    **{
+        ("XsEuler", method): ("deg", None, (-180.0, 180.0), _XS_EULER)
+        for method in ("roll", "yaw", "x", "z")
+    },
+    **{("XsEuler", method): ("deg", None, (-90.0, 90.0), _XS_EULER) for method in ("pitch", "y")},
+}
+
 #: Device libraries that hand a callback of the app's the readings they receive: the
 #: class constructed -> (which of its arguments is the data callback, the elements of the
 #: callback's array argument whose unit is known, that unit, why). Peter Bartz's Razor

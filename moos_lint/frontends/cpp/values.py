@@ -2056,7 +2056,11 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     """A pending value with its function's return resolved across the repository."""
     if v.pending is None:
         return v
-    base = resolver(v.pending)
+    # a library class's method: what the library's documentation says, even where the
+    # repository defines a method of that name on a class of its own
+    base = library_method(v) if v.receiver else None
+    if base is None:
+        base = resolver(v.pending)
     if v.pending.startswith(".") and (base is None or not base.known):
         # a field the repository never writes (or not in a way we can read): its name,
         # or the comment or print label where the app reads it
@@ -2533,6 +2537,17 @@ def _callback_given(data: bytes, lib: str, arg: int, fn: str) -> int | None:
         if arg < len(args) and re.search(rb"(?:::|\b)%s\b" % re.escape(fn.encode()), args[arg]):
             return m.start()
     return None
+
+
+def library_method(v: AbstractValue) -> AbstractValue | None:
+    """What :data:`facts.LIBRARY_METHODS` says of pending method ``v`` called on an object
+    of class ``v.receiver`` (``euler.pitch()`` of an ``XsEuler``), or None."""
+    known = facts.LIBRARY_METHODS.get((v.receiver or "", v.pending or ""))
+    if known is None:
+        return None
+    called = v.why[0] if v.why else f"{v.pending}()"
+    why = f"{called}, a method of {v.receiver}: {known[3]}"
+    return AbstractValue(unit=known[0], sense=known[1], range=known[2], why=(why,))
 
 
 def library_field(pf: Any, cls: str | None, field: str) -> tuple | None:

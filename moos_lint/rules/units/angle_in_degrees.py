@@ -15,7 +15,8 @@ Euler triple: `IMU_EULER_P`, `EULER_THETA`) with a degree value (a literal
 above 2π, a radians-to-degrees conversion, a library getter or device value
 in degrees, a raw count over a resolution named in degrees such as
 `EULER_DIV_DEG`, an angle read from the same device array as one a consumer
-converts from degrees, the yaw, pitch and roll the Razor AHRS interface hands
+converts from degrees, the roll and pitch of the Xsens SDK's `XsEuler`
+(`euler.pitch()`), the yaw, pitch and roll the Razor AHRS interface hands
 its data callback, a pitch a simulator's record is only ever set to in degrees
 through its setter, `record.setPitch(angle180(p))`, calls on objects of other
 classes apart), and of an angular rate (`*_GYRO_*`,
