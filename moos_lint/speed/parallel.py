@@ -185,6 +185,15 @@ def cpp_folder_facts(
         return paths, {}, None, f"{type(exc).__name__}: {exc}", {}
 
 
+def _load_cpp() -> None:
+    """Load the C++ reader and compile its query (about 30 ms) in this process, which
+    needs them too, before the workers are forked: each would otherwise do it again."""
+    from moos_lint.frontends.cpp import app, values  # noqa: F401
+    from moos_lint.frontends.cpp.parse import backend
+
+    backend()
+
+
 def _folder_weight(paths: list[str]) -> int:
     total = 0
     for p in paths:
@@ -200,6 +209,7 @@ def start_cpp(workers: Any, paths: list[str]) -> Iterator[Any]:
     for p in paths:
         folders.setdefault(os.path.dirname(p), []).append(p)
     tasks = sorted(folders.values(), key=lambda ps: (-_folder_weight(ps), ps[0]))
+    _load_cpp()  # before the first submit forks the workers: they share it
     futures: list[Any] = []
     claims: Claims | _Unshared = _Unshared()
     try:
