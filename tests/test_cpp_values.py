@@ -636,6 +636,28 @@ def test_a_library_class_method_is_what_the_library_says(tmp_path):
     assert _resolve_in(tmp_path, {"lib/Attitude.cpp": own}, v["ATT_PITCH"]).unit == "rad"
 
 
+def test_a_method_of_the_receivers_class_is_not_mixed_with_another_classs(tmp_path):
+    """``m_att.pitch()`` of an ``Attitude``: the repository's ``Attitude::pitch`` gives the
+    value (here one it cannot read), not ``Euler::pitch`` in degrees; a class that defines
+    no ``pitch`` of its own (it inherits it) takes every definition, as before."""
+    app = """
+    class A : public CMOOSApp { Attitude m_att; Derived m_der; };
+    bool A::Iterate() {
+      Notify("ATT_PITCH", m_att.pitch());
+      Notify("DER_PITCH", m_der.pitch());
+      return true;
+    }
+    """
+    v = published(app)
+    files = {
+        "lib/Euler.cpp": "double Euler::pitch() const { return asin(m_s) * 180.0 / M_PI; }",
+        "lib/Attitude.h": "class Attitude {\n public:\n"
+        "  double pitch() const { return atof(m_text.c_str()); }\n};\n",
+    }
+    assert not _resolve_in(tmp_path / "a", files, v["ATT_PITCH"]).known
+    assert _resolve_in(tmp_path / "b", files, v["DER_PITCH"]).unit == "deg"
+
+
 def test_setters_of_several_ranges_give_no_range(tmp_path):
     v = published('bool A::Iterate() { Notify("NAV_YAW", m_record.getYaw()); return true; }')
     code = """

@@ -824,6 +824,13 @@ def _declared_local(pf: Any, a: Any) -> bool:
     return _is_param(a.fn, a.target)
 
 
+def _owner(fn: Any) -> str | None:
+    """The class function definition ``fn`` is a method of (``Owner::name(...) {...}``, or
+    a definition inside the class's body), by name; None for a free function."""
+    decl = fn.child_by_field_name("declarator")
+    return fields.enclosing_class(decl) if decl is not None else None
+
+
 def _function_short_name(fn: Any) -> str:
     decl = function_declarator(fn)
     if decl is None:
@@ -2060,7 +2067,7 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     # repository defines a method of that name on a class of its own
     base = library_method(v) if v.receiver else None
     if base is None:
-        base = resolver(v.pending)
+        base = resolver(v.pending, v.receiver) if v.receiver else resolver(v.pending)
     if v.pending.startswith(".") and (base is None or not base.known):
         # a field the repository never writes (or not in a way we can read): its name,
         # or the comment or print label where the app reads it
@@ -2279,10 +2286,17 @@ class RepositoryResolver:
                 if key in data:
                     paths.append(path)
 
-    def __call__(self, name: str) -> AbstractValue | None:
-        if name in self.cache:
-            return self.cache[name]
-        self.cache[name] = None  # recursion guard
+    def __call__(self, name: str, receiver: str | None = None) -> AbstractValue | None:
+        """What function ``name`` returns (``name#i``: what it sets its argument ``i``
+        to; ``.Class.field``: what the repository writes to that field). ``receiver``:
+        the class a method is called on, when declared: where the repository defines the
+        method on that class, those definitions alone give the value, not a method of the
+        same name on another class; where it does not (a method of a base class), every
+        definition does."""
+        key = f"{name}@{receiver}" if receiver and not name.startswith(".") else name
+        if key in self.cache:
+            return self.cache[key]
+        self.cache[key] = None  # recursion guard
         if name.startswith("."):  # ``.Class.field|alias``: where the repository writes it
             self.cache[name] = self._field(name)
             return self.cache[name]
@@ -2291,6 +2305,8 @@ class RepositoryResolver:
         )  # ``getAttitude#2``: what it sets its third argument to
         name = fname
         out: AbstractValue | None = None
+        own: AbstractValue | None = None  # of the receiver's own definitions
+        found_own = False
         for path, data in self._candidates(name):
             pf = self._parse(path, data)
             if pf is None:
@@ -2299,6 +2315,14 @@ class RepositoryResolver:
             defs = folder.functions.get(name)
             if not defs:
                 continue
+            mine = [d for d in defs if _owner(d[1]) == receiver] if receiver and not index else []
+            if mine:
+                found_own = True
+                v = Evaluator(folder, library=True, compiled=self.compiled)._returns(name, mine, 0)
+                if v.pending is not None and v.pending != name:
+                    v = resolve_pending(v, self)
+                if v.known:
+                    own = v if own is None else join(own, v)
             if index:
                 at, _, field = index.partition(".")  # ``read#0.p``: the field ``p`` it sets
                 ev = Evaluator(folder, library=True, compiled=self.compiled)
@@ -2315,7 +2339,9 @@ class RepositoryResolver:
                 v = resolve_pending(v, self)
             if v.known:
                 out = v if out is None else join(out, v)
-        self.cache[f"{name}#{index}" if index else name] = out
+        if found_own:
+            out = own
+        self.cache[f"{name}#{index}" if index else key] = out
         return out
 
     def _field(self, pending: str) -> AbstractValue | None:
