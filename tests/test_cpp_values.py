@@ -125,14 +125,7 @@ def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     v = published('bool A::Iterate() { Notify("IMU_PITCH", m_filter.pitch()); return true; }')
     pending = v["IMU_PITCH"]
     assert pending.pending == "pitch"
-    read = []
-
-    def reader(path):
-        read.append(path)
-        with open(path, "rb") as f:
-            return f.read()
-
-    resolver = RepositoryResolver([str(lib), str(other)], reader)
+    resolver = RepositoryResolver([str(lib), str(other)], _reader())
     out = resolve_pending(pending, resolver)
     assert out.unit == "deg"
     assert any("pitch() returns" in w and "Filter.cpp:1" in w for w in out.why)
@@ -325,19 +318,32 @@ def test_a_member_set_through_an_out_parameter_in_another_method():
     assert not v["A_ROLL"].known
 
 
-def _resolve_in(tmp_path, files: dict[str, str], pending: AbstractValue) -> AbstractValue:
+def _write(tmp_path, files: dict[str, str]) -> list[str]:
+    """Write ``files`` (relative path -> text) under ``tmp_path``: their paths."""
     paths = []
     for name, code in files.items():
         p = tmp_path / name
         p.parent.mkdir(parents=True, exist_ok=True)
         p.write_text(code)
         paths.append(str(p))
+    return paths
+
+
+def _reader(reads: list[str] | None = None):
+    """A resolver's file reader, noting each path it reads in ``reads``."""
 
     def reader(path):
+        if reads is not None:
+            reads.append(path)
         with open(path, "rb") as f:
             return f.read()
 
-    return resolve_pending(pending, RepositoryResolver(sorted(paths), reader))
+    return reader
+
+
+def _resolve_in(tmp_path, files: dict[str, str], pending: AbstractValue) -> AbstractValue:
+    paths = _write(tmp_path, files)
+    return resolve_pending(pending, RepositoryResolver(sorted(paths), _reader()))
 
 
 EULER_H = """
@@ -474,20 +480,9 @@ def test_the_classes_of_the_awaited_methods_are_searched_in_one_read(tmp_path):
         "geo/Geo.cpp": "void Geo::init(double d) { m_lat = d * 180 / M_PI; }\n",
         "app/Other.cpp": "int other() { return 1; }\n",
     }
-    paths = []
-    for name, code in files.items():
-        p = tmp_path / name
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(code)
-        paths.append(str(p))
-    reads = []
-
-    def reader(path):
-        reads.append(path)
-        with open(path, "rb") as f:
-            return f.read()
-
-    resolver = RepositoryResolver(sorted(paths), reader)
+    paths = _write(tmp_path, files)
+    reads: list[str] = []
+    resolver = RepositoryResolver(sorted(paths), _reader(reads))
     waiting = [AbstractValue(pending="getHeading"), AbstractValue(pending="toLat")]
     resolver.expect(waiting)
     outs = [resolve_pending(v, resolver) for v in waiting]
@@ -564,23 +559,12 @@ def test_the_index_of_the_first_read_spares_the_resolver_its_own(tmp_path):
         "sim/Other.cpp": "void f(NodeRecord& r) { r.setPitchRate(1); }\n",
         "app/Main.cpp": "int main() { return 0; }\n",
     }
-    paths = []
-    for name, code in files.items():
-        p = tmp_path / name
-        p.parent.mkdir(parents=True, exist_ok=True)
-        p.write_text(code)
-        paths.append(str(p))
+    paths = _write(tmp_path, files)
     names: dict = {}
     read_relevant(paths, names=names)
     assert set(names) == set(paths)
-    reads = []
-
-    def reader(path):
-        reads.append(path)
-        with open(path, "rb") as f:
-            return f.read()
-
-    resolver = RepositoryResolver(sorted(paths), reader, None, names)
+    reads: list[str] = []
+    resolver = RepositoryResolver(sorted(paths), _reader(reads), None, names)
     resolver.expect([v["NAV_PITCH"]])
     out = resolve_pending(v["NAV_PITCH"], resolver)
     assert out.unit == "deg"

@@ -1215,8 +1215,12 @@ class Evaluator:
         obj = strip(fn.child_by_field_name("argument"))
         if obj is None or obj.type != "identifier":
             return None
-        name = text(obj)
-        return fields.declared_type(pf.function_of(fn), name, fn) or self.folder.member_type(name)
+        return self.class_of(pf.function_of(fn), text(obj), fn)
+
+    def class_of(self, fnode: Any, name: str, use: Any) -> str | None:
+        """The class variable ``name`` is declared of at node ``use`` of function ``fnode``:
+        a local or parameter in scope there, else a member or global of the folder."""
+        return fields.declared_type(fnode, name, use) or self.folder.member_type(name)
 
     def _once(self, key: tuple, compute: Callable[[], Any], on_cycle: Any = UNKNOWN) -> Any:
         """``compute()``, once per folder and ``key``; ``on_cycle`` when asked again while it
@@ -1321,8 +1325,7 @@ class Evaluator:
         field = text(left.child_by_field_name("field"))
         if obj is None or obj.type != "identifier" or field.lower() not in ("z", "down", "d"):
             return False
-        fnode = pf.function_of(left)
-        cls = fields.declared_type(fnode, text(obj), left) or self.folder.member_type(text(obj))
+        cls = self.class_of(pf.function_of(left), text(obj), left)
         return bool(cls and _NED_WORD.search(cls))
 
     def _field_pending(self, pf: Any, fnode: Any, n: Any, key: str) -> AbstractValue | None:
@@ -1333,7 +1336,7 @@ class Evaluator:
             obj = strip(n.child_by_field_name("argument"))
             if obj is None or obj.type != "identifier":
                 return None
-            cls = fields.declared_type(fnode, text(obj), n) or self.folder.member_type(text(obj))
+            cls = self.class_of(fnode, text(obj), n)
             if cls is None:  # ``auto x = p->getX(); x.yaw``: of the class getX returns
                 getter = fields.auto_getter(fnode, text(obj))
                 cls = f"{getter}()" if getter else None
@@ -2305,8 +2308,7 @@ class RepositoryResolver:
         )  # ``getAttitude#2``: what it sets its third argument to
         name = fname
         out: AbstractValue | None = None
-        own: AbstractValue | None = None  # of the receiver's own definitions
-        found_own = False
+        found_own = False  # a definition on the receiver's class was found
         for path, data in self._candidates(name):
             pf = self._parse(path, data)
             if pf is None:
@@ -2317,12 +2319,11 @@ class RepositoryResolver:
                 continue
             mine = [d for d in defs if _owner(d[1]) == receiver] if receiver and not index else []
             if mine:
-                found_own = True
-                v = Evaluator(folder, library=True, compiled=self.compiled)._returns(name, mine, 0)
-                if v.pending is not None and v.pending != name:
-                    v = resolve_pending(v, self)
-                if v.known:
-                    own = v if own is None else join(own, v)
+                if not found_own:  # other classes' definitions read before do not count
+                    out = None
+                found_own, defs = True, mine
+            elif found_own:
+                continue  # only the receiver's own definitions count now
             if index:
                 at, _, field = index.partition(".")  # ``read#0.p``: the field ``p`` it sets
                 ev = Evaluator(folder, library=True, compiled=self.compiled)
@@ -2339,8 +2340,6 @@ class RepositoryResolver:
                 v = resolve_pending(v, self)
             if v.known:
                 out = v if out is None else join(out, v)
-        if found_own:
-            out = own
         self.cache[f"{name}#{index}" if index else key] = out
         return out
 
