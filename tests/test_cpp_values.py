@@ -620,6 +620,27 @@ def test_a_library_class_method_is_what_the_library_says(tmp_path):
     assert _resolve_in(tmp_path, {"lib/Attitude.cpp": own}, v["ATT_PITCH"]).unit == "rad"
 
 
+def test_a_library_method_returns_a_library_class_through_a_chain_or_an_auto():
+    """``packet->orientationEuler().yaw()`` and ``auto e = packet.orientationEuler()``: the
+    class of what an ``XsDataPacket``'s ``orientationEuler`` returns is ``XsEuler`` (a fact
+    of the library); the same method of an app's own class gives no class, and an ``auto``
+    that names itself ends."""
+    app = """
+    class A : public CMOOSApp { Frame m_frame; };
+    void A::onPacket(const XsDataPacket* packet) {
+      Notify("A_PITCH", packet->orientationEuler(XDI_CoordSysEnu).pitch());
+      const auto& e = packet->orientationEuler();
+      Notify("B_ROLL", e.roll());
+      Notify("C_PITCH", m_frame.orientationEuler().pitch());
+      auto loop = loop.orientationEuler();
+      Notify("D_PITCH", loop.pitch());
+    }
+    """
+    v = published(app)
+    assert v["A_PITCH"].receiver == v["B_ROLL"].receiver == "XsEuler"
+    assert v["C_PITCH"].receiver is None and v["D_PITCH"].receiver is None
+
+
 def test_a_method_of_the_receivers_class_is_not_mixed_with_another_classs(tmp_path):
     """``m_att.pitch()`` of an ``Attitude``: the repository's ``Attitude::pitch`` gives the
     value (here one it cannot read), not ``Euler::pitch`` in degrees; a class that defines

@@ -176,6 +176,16 @@ LIBRARY_METHODS: dict[tuple[str, str], tuple[str, str | None, tuple[float, float
     **{("XsEuler", method): ("deg", None, (-90.0, 90.0), _XS_EULER) for method in ("pitch", "y")},
 }
 
+#: Methods of library classes that return an object of a library class: (class, method)
+#: -> the class returned, so that a method called on what they return is read as that
+#: class's (``packet.orientationEuler().yaw()``, with :data:`LIBRARY_METHODS`). The Xsens
+#: MT SDK's xstypes/xsdatapacket.h: ``inline XsEuler orientationEuler() const`` (and its
+#: overload taking a coordinate system) returns the packet's orientation as an
+#: ``XsEuler``.
+LIBRARY_RETURNS: dict[tuple[str, str], str] = {
+    ("XsDataPacket", "orientationEuler"): "XsEuler",
+}
+
 #: Device libraries that hand a callback of the app's the readings they receive: the
 #: class constructed -> (which of its arguments is the data callback, the elements of the
 #: callback's array argument whose unit is known, that unit, why). Peter Bartz's Razor

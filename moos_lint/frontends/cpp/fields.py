@@ -120,9 +120,18 @@ def auto_getter(fn: Any, name: str) -> str | None:
     """The function whose return initialises ``name`` when function ``fn`` declares it
     ``auto`` (``getUniHeadingA`` for ``const auto &hdg = m_parser->getUniHeadingA();``);
     None for any other declaration, or when ``fn`` declares ``name`` more than once."""
+    value = auto_value(fn, name)
+    return _callee(value) if value is not None else None
+
+
+def auto_value(fn: Any, name: str) -> Any:
+    """The expression that initialises ``name`` when function ``fn`` declares it ``auto``
+    (``m_parser->getUniHeadingA()`` of ``const auto &hdg = m_parser->getUniHeadingA();``),
+    parentheses stripped; None for any other declaration, or when ``fn`` declares ``name``
+    more than once."""
     if fn is None:
         return None
-    found: list[str | None] = []
+    found: list[Any] = []
     stack = [fn]
     while stack:
         x = stack.pop()
@@ -137,7 +146,7 @@ def auto_getter(fn: Any, name: str) -> str | None:
             if t is None or t.type != "placeholder_type_specifier" or value is None:
                 found.append(None)
             else:
-                found.append(_callee(strip(value)))
+                found.append(strip(value))
     return found[0] if len(found) == 1 else None
 
 

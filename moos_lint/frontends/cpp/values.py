@@ -1207,20 +1207,47 @@ class Evaluator:
         if own:
             return self._returns(name, own, depth)
         receiver = self.object_class(pf, fn) if fn.type == "field_expression" else None
-        return AbstractValue(pending=name, why=(f"{text(n)[:40]} at {at}",), receiver=receiver)
+        return AbstractValue(
+            pending=name, why=(f"{brief(text(n), 40)} at {at}",), receiver=receiver
+        )
 
     def object_class(self, pf: Any, fn: Any) -> str | None:
-        """The class of the object a method is called on (``record`` of ``record.getX``),
-        when it is a local, a parameter or a member declared of one class; else None."""
-        obj = strip(fn.child_by_field_name("argument"))
-        if obj is None or obj.type != "identifier":
-            return None
-        return self.class_of(pf.function_of(fn), text(obj), fn)
+        """The class of the object method ``fn`` (a field expression) is called on
+        (``record`` of ``record.getX``): see :meth:`receiver_class`."""
+        return self.receiver_class(pf.function_of(fn), fn)
 
-    def class_of(self, fnode: Any, name: str, use: Any) -> str | None:
+    def receiver_class(self, fnode: Any, fn: Any, depth: int = 0) -> str | None:
+        """The class of the object of field expression ``fn`` in function ``fnode``: a
+        local, a parameter or a member declared of one class (:meth:`class_of`), or what a
+        library's method returns (``packet.orientationEuler()`` of an ``XsDataPacket``,
+        :data:`facts.LIBRARY_RETURNS`); else None."""
+        obj = strip(fn.child_by_field_name("argument"))
+        if obj is None or depth > 4:
+            return None
+        if obj.type == "identifier":
+            return self.class_of(fnode, text(obj), fn, depth + 1)
+        return self._library_return(fnode, obj, depth + 1)
+
+    def _library_return(self, fnode: Any, call: Any, depth: int) -> str | None:
+        """The library class that method call ``call`` returns, when the class of the
+        object it is called on is known (:data:`facts.LIBRARY_RETURNS`); else None."""
+        inner = call.child_by_field_name("function") if call.type == "call_expression" else None
+        if inner is None or inner.type != "field_expression":
+            return None
+        method = inner.child_by_field_name("field")
+        cls = self.receiver_class(fnode, inner, depth) if method is not None else None
+        return facts.LIBRARY_RETURNS.get((cls, text(method))) if cls else None
+
+    def class_of(self, fnode: Any, name: str, use: Any, depth: int = 0) -> str | None:
         """The class variable ``name`` is declared of at node ``use`` of function ``fnode``:
-        a local or parameter in scope there, else a member or global of the folder."""
-        return fields.declared_type(fnode, name, use) or self.folder.member_type(name)
+        a local or parameter in scope there, else a member or global of the folder; for a
+        local declared ``auto``, the library class its initialiser returns."""
+        found = fields.declared_type(fnode, name, use) or self.folder.member_type(name)
+        if found is None and depth <= 4:
+            value = fields.auto_value(fnode, name)
+            if value is not None:
+                found = self._library_return(fnode, value, depth + 1)
+        return found
 
     def _once(self, key: tuple, compute: Callable[[], Any], on_cycle: Any = UNKNOWN) -> Any:
         """``compute()``, once per folder and ``key``; ``on_cycle`` when asked again while it

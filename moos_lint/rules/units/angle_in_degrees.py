@@ -16,12 +16,12 @@ above 2π, a radians-to-degrees conversion, a library getter or device value
 in degrees, a raw count over a resolution named in degrees such as
 `EULER_DIV_DEG`, an angle read from the same device array as one a consumer
 converts from degrees, the roll and pitch of the Xsens SDK's `XsEuler`
-(`euler.pitch()`), the yaw, pitch and roll the Razor AHRS interface hands
-its data callback, a pitch a simulator's record is only ever set to in degrees
-through its setter, `record.setPitch(angle180(p))`, calls on objects of other
-classes apart), and of an angular rate (`*_GYRO_*`,
-`YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a
-`*_DPS` scale).
+(`euler.pitch()`, `packet.orientationEuler().pitch()`), the yaw, pitch and
+roll the Razor AHRS interface hands its data callback, a pitch a simulator's
+record is only ever set to in degrees through its setter,
+`record.setPitch(angle180(p))`, calls on objects of other classes apart), and
+of an angular rate (`*_GYRO_*`, `YAW_RATE`) in degrees per second
+(`* 180 / M_PI`, a raw count over a `*_DPS` scale).
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
