@@ -83,7 +83,7 @@ class Context:
     def runs(self, code: str) -> bool:
         """Whether the rule with ``code`` runs in this lint too (two rules that would
         report one line leave it to the one that runs)."""
-        return any(r.code == code for r in self.run.rules)
+        return code in self.run.codes
 
     def report(
         self,
@@ -119,6 +119,7 @@ class LintRun:
     def __init__(self, settings: Settings, rules: list[Rule], cache: FileCache | None = None):
         self.settings = settings
         self.rules = rules
+        self.codes = frozenset(r.code for r in rules)  # (what Context.runs asks)
         self.cache = cache or FileCache()
         self.preprocessor = Preprocessor(
             defines=settings.defines,

@@ -197,7 +197,6 @@ _DEGREES_NOTE = re.compile(r"\bdeg(?:rees?|s)?\b|°", re.IGNORECASE)
 
 
 def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[AngleValue]:
-    lkey = "".join(key.split()).lower()
     found = _make(key, value, line, base, "parameter", config_key=True)
     if found is not None:
         # an app's own key whose line says it is in degrees (a library's mounting pose,
@@ -206,6 +205,9 @@ def _param_values(key: str, value: str, base: int, line: Line) -> Iterator[Angle
         if comment < 0 or not _DEGREES_NOTE.search(line.text, comment):
             yield found
         return
+    if "=" not in value:  # no posting, flag or event in it
+        return
+    lkey = "".join(key.split()).lower()
     if lkey == "event":
         found = _timer_event(value, base, line)
         if found is not None:

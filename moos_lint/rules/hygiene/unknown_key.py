@@ -98,7 +98,8 @@ misspellings this rule is for.
 
 import difflib
 import re
-from collections.abc import Sequence
+from collections.abc import Iterable, Mapping
+from types import MappingProxyType
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.moos import block_comments, looks_commented
@@ -180,9 +181,10 @@ def check(ctx):
         # lines between `/*` and `*/` were meant to be off: malformed-line names the markers
         off = {id(line) for s, e, _ in block_comments(moos.lines) for line in moos.lines[s:e]}
         built = built_keys(ctx.run)
+        top = _by_lower(globals_known)
         for p in moos.globals:
             if id(p.line) not in off:
-                yield from _judge(ctx, p, globals_known, "top-of-file", r007, APP_KEYS, built)
+                yield from _judge(ctx, p, top, "top-of-file", r007, _APP_KEYS_LOWER, built)
     for block in moos.antler_blocks:
         # a global key (`LatOrigin`) is read wherever it sits, blocks included (MOOS's
         # file reader scans every line for it): global-key-in-block (R009) reports the place
@@ -192,6 +194,7 @@ def check(ctx):
                 if run.options.get(opt):
                     known.append(run.options[opt])
         present = frozenset(_norm(p.key) for p in block.params)
+        by_lower = _by_lower(known)
         for p in block.params:
             if _norm(p.key).isdigit():
                 continue  # a numbered console configuration (`4 = -geometry,...`, XConfig=4)
@@ -199,27 +202,35 @@ def check(ctx):
                 # a console configuration (`pSPConfig = -geometry,80x20+0+0,-bg,green`) or
                 # a list of arguments, kept for a Run line that names it (or once did)
                 continue
-            yield from _judge(ctx, p, known, "ANTLER-block", r007, present=present)
+            yield from _judge(ctx, p, by_lower, "ANTLER-block", r007, present=present)
+
+
+def _by_lower(keys: Iterable[str]) -> dict[str, str]:
+    """The keys by their lower case (the last spelling of one key wins)."""
+    return {k.lower(): k for k in keys}
+
+
+_APP_KEYS_LOWER = _by_lower(APP_KEYS)
 
 
 def _judge(
     ctx,
     p,
-    known: list[str],
+    by_lower: dict[str, str],
     where: str,
     r007: bool,
-    block_keys: Sequence[str] = (),
+    in_block: Mapping[str, str] = MappingProxyType({}),
     built: BuiltKeys | None = None,
     present: frozenset[str] = frozenset(),
 ):
+    """``by_lower``: the keys known here, by their lower case; ``in_block``: the keys an
+    app reads from its own block, by their lower case (for a top-of-file key)."""
     key = p.key
     if _skip_key(key):
         return
     lkey = _norm(key)
-    by_lower = {k.lower(): k for k in known}
     if lkey in by_lower or (built is not None and built.matches(lkey)):
         return
-    in_block = {k.lower(): k for k in block_keys}
     if lkey in in_block:
         yield ctx.report(
             p.key_span,
