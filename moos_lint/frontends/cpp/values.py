@@ -1243,7 +1243,7 @@ class Evaluator:
         a local or parameter in scope there, else a member or global of the folder; for a
         local declared ``auto``, the library class its initialiser returns."""
         found = fields.declared_type(fnode, name, use) or self.folder.member_type(name)
-        if found is None and depth <= 4:
+        if found is None and depth <= 4 and fnode is not None and b"auto" in fnode.text:
             value = fields.auto_value(fnode, name)
             if value is not None:
                 found = self._library_return(fnode, value, depth + 1)
