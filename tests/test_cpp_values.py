@@ -717,3 +717,49 @@ def test_a_chained_assignment_gives_each_member_its_right_side():
     """
     v = published(code)
     assert v["NAV_YAW"].unit == "rad" and v["NAV_PITCH"].unit == "rad"
+
+
+@pytest.mark.parametrize(
+    ("names", "device"),
+    [
+        ("class CiOS5000 : public CMOOSInstrument {};", True),
+        ("void iOS5000_Hover::parseLine(string msg) {}", True),
+        ("bool os5000::ParseNMEAString(string s) {}", True),
+        ('reportRunWarning("Line from an OS4000 unit");', True),
+        ("int dos5000 = 0; int OS50001 = 0;", False),
+        ("class Compass {};", False),
+    ],
+)
+def test_a_text_field_of_a_device_named_in_the_file_is_degrees(names, device):
+    code = (
+        names
+        + """
+    void A::f(char* s) {
+      double p = atof(s);
+      Notify("COMPASS_PITCH", p);
+    }
+    """
+    )
+    v = published(code)["COMPASS_PITCH"]
+    assert (v.unit == "deg" and v.hint) is device
+    if device:
+        assert "OceanServer OS5000" in v.explanation
+
+
+def test_a_member_set_to_a_sum_ending_in_a_literal_gives_the_name_s_end():
+    code = """
+    void A::prefixes(std::string pre) {
+      m_pitch_name = pre + "PITCH";
+      m_any = pre;
+      m_two = pre + "ROLL";
+      m_two = pre + "PITCH";
+    }
+    void A::f(double p) {
+      Notify(m_pitch_name, p * 180 / M_PI);
+      Notify(m_any, p);
+      Notify(m_two, p);
+    }
+    """
+    files = parse_folder({"app/App.cpp": SourceFile("app/App.cpp", code)})
+    names = [(p.name.source, p.name.last) for f in files for p in f.publications]
+    assert names == [("m_pitch_name", "PITCH"), ("m_any", ""), ("m_two", "")]

@@ -137,7 +137,9 @@ def _shown(p: Publication) -> str:
     source = " ".join(p.name.source.split())
     if p.name.suffix in source:
         return f"`{p.name.suffix}` (named by `{source}`)"
-    return f"`{source}` (a {angles.last_word(p.name.suffix)} by its index)"
+    if "[" in source:
+        return f"`{source}` (a {angles.last_word(p.name.suffix)} by its index)"
+    return f"`{source}` (a name set to end in `{p.name.suffix}`)"
 
 
 def _because(v: Any) -> str:

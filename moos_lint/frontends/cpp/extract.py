@@ -320,6 +320,9 @@ class FolderTables:
     assigns: dict[str, list[str | None]] = field(default_factory=dict)
     # member -> the configuration key read into it (``GetConfigurationParam("prefix", m_prefix)``)
     config_keys: dict[str, str] = field(default_factory=dict)
+    # member/global -> the literal end of each value assigned to it, "" where it has none
+    # (``namePitch = pre + "PITCH"`` gives "PITCH")
+    suffixes: dict[str, list[str]] = field(default_factory=dict)
     # array -> the literal names it is initialised with (``const char* names[] = {"A", "B"}``)
     name_tables: dict[str, list[str]] = field(default_factory=dict)
     # a dynamic variable's name -> the name it is published as (``AddMOOSVariable``; None
@@ -495,6 +498,7 @@ def _file_tables(pf: ParsedFile) -> FolderTables:
                 t.config_keys.setdefault(a.target, ckey)
                 continue
         t.assigns.setdefault(a.target, []).append(val)
+        t.suffixes.setdefault(a.target, []).append(_literal_end(a.rhs) if a.op == "=" else "")
     for name, entries in _name_tables(pf):
         t.name_tables.setdefault(name, entries)
     for name, args in pf.inits:
@@ -519,6 +523,14 @@ def _file_tables(pf: ParsedFile) -> FolderTables:
     return t
 
 
+def _literal_end(rhs: Any) -> str:
+    """The literal a sum ends with (``pre + "PITCH"``, ``m_prefix + "_" + "ROLL"``), else ""."""
+    n = strip_parens(rhs)
+    if n is None or n.type != "binary_expression" or text(n.child_by_field_name("operator")) != "+":
+        return ""
+    return string_value(strip_parens(n.child_by_field_name("right"))) or ""
+
+
 def collect_tables(files: list[ParsedFile]) -> FolderTables:
     """The folder's tables: each file's, merged in the files' order (a name a first file
     gives keeps its value, as if one pass read the files in turn)."""
@@ -532,6 +544,8 @@ def collect_tables(files: list[ParsedFile]) -> FolderTables:
         t.defines.update(part.defines)
         for name, vals in part.assigns.items():
             t.assigns.setdefault(name, []).extend(vals)
+        for name, ends in part.suffixes.items():
+            t.suffixes.setdefault(name, []).extend(ends)
         for name, ckey in part.config_keys.items():
             t.config_keys.setdefault(name, ckey)
         for name, entries in part.name_tables.items():
@@ -750,6 +764,17 @@ class Extractor:
             ):
                 enum = text(key).split("::")[-1]
                 return re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", enum).upper()
+        if n.type in ("identifier", "field_expression"):
+            # a member every assignment of which ends with one literal: ``namePitch`` of
+            # ``namePitch = pre + "PITCH"``
+            ends = self.tables.suffixes.get(target_name(n))
+            if (
+                ends
+                and ends[0]
+                and len(set(ends)) == 1
+                and self._local_before(n, target_name(n)) is None
+            ):
+                return ends[0]
         return ""
 
     def _table_names(self, n: Any) -> list[Name]:

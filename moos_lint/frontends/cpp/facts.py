@@ -67,7 +67,9 @@ MAIL_UNITS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, 
 
 #: NMEA 0183 sentences whose fields an app parses with atof/stod: their angles
 #: (HDT/HDG/HDM headings, RMC/VTG courses, PASHR/PRDID attitude) are degrees by the
-#: standard. A literal naming one marks a file as an NMEA parser.
+#: standard, as the proprietary ``$OHPR`` of OceanServer's compasses (heading, pitch and
+#: roll in degrees: OceanServer Compass Manual, OS5000 Series, format type 0x02). A
+#: literal naming one marks a file as an NMEA parser.
 NMEA_SENTENCES = (
     "HDT",
     "HDG",
@@ -82,7 +84,23 @@ NMEA_SENTENCES = (
     "XDR",
     "ROT",
     "THS",
+    "OHPR",
 )
+
+#: Devices whose text output an app parses with atof/strtod, every angle of it in degrees,
+#: named in the app's code (its class, its app's name, a literal): a pattern of the name,
+#: case aside -> (what a field read from it is, why its angles are degrees). OceanServer's
+#: OS5000 compasses (and the OS4000 and OS3000 of the same family) send
+#: ``$C<heading>P<pitch>R<roll>T<temperature>*cc``: "C" precedes the heading in degrees,
+#: "P" the pitch angle in degrees, "R" the roll angle in degrees (OceanServer Compass
+#: Manual, OS5000 Series, output format type 0x01, the "$C" format); their ``$OHPR``
+#: sentence holds the same angles (it is in :data:`NMEA_SENTENCES`).
+DEGREE_DEVICES: dict[str, tuple[str, str]] = {
+    r"os[345]000": (
+        "an OS5000 field",
+        "the OceanServer OS5000 compass sends heading, pitch and roll in degrees",
+    ),
+}
 
 #: Speeds in another unit than metres per second -> metres per second in one of them: the
 #: knot is one nautical mile (1852 m) an hour, the mile an hour 1609.344 m an hour (both

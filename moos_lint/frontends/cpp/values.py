@@ -86,15 +86,22 @@ class AbstractValue:
             for w, p in zip(steps, places, strict=True)
             if not (" set at " in w and places.count(p) > 1)
         ]
-        kept = [
-            w
-            for i, w in enumerate(steps)
-            if not (_place_of(w) and any(_place_of(x) == _place_of(w) for x in steps[i + 1 :]))
-        ]
+        kept = []
+        for i, w in enumerate(steps):
+            p = _place_of(w)
+            later = [x for x in steps[i + 1 :] if p and _place_of(x) == p]
+            if later and not all(x.startswith(_PASSED) for x in later):
+                continue
+            # an argument passed where it is read (``f(atof(s))``): where it comes from
+            # says more than the call it goes through
+            if w.startswith(_PASSED) and p and any(_place_of(x) == p for x in steps[:i]):
+                continue
+            kept.append(w)
         return "; ".join(kept[-3:])
 
 
 UNKNOWN = AbstractValue()
+_PASSED = "passed to "
 _AT = re.compile(r" at (\S+:\d+)\b")
 
 
@@ -679,6 +686,28 @@ _NMEA = re.compile(rb'"\$?(?:[A-Z]{2})?(?:' + "|".join(facts.NMEA_SENTENCES).enc
 _KEY_OF_REPORT = re.compile(rb"tok(?:String|Double)Parse\s*\([^;]*?$")
 
 
+#: a device of :data:`facts.DEGREE_DEVICES` named in a file's code: ``iOS5000``,
+#: ``CiOS5000``, ``os5000::``, ``"OS5000"`` (the name starts a word, after an app's ``i``
+#: or a class's ``C`` or ``Ci``, and no digit follows it)
+_DEVICES = [
+    (
+        re.compile(
+            rb"(?i)(?:^|[^a-z0-9]|(?<![a-z0-9])(?:c|i|ci))" + pattern.encode() + rb"(?![0-9])"
+        ),
+        why,
+    )
+    for pattern, why in facts.DEGREE_DEVICES.items()
+]
+
+
+def _names_device(data: bytes) -> tuple[str, str] | None:
+    """The device of :data:`facts.DEGREE_DEVICES` that ``data`` names, if one."""
+    for pattern, why in _DEVICES:
+        if pattern.search(data):
+            return why
+    return None
+
+
 def _names_nmea(data: bytes) -> bool:
     """Whether ``data`` names an NMEA 0183 sentence (``"$GPRMC"``, ``"HDT"``), a report's
     ``"HDG"`` key aside."""
@@ -711,6 +740,7 @@ class FilePart:
 
     nmea: bool
     nmea_speed: bool
+    device: tuple[str, str] | None  # a device of facts.DEGREE_DEVICES the file names
     members: list[Any]  # the assignments to members, globals and constants
     functions: list[tuple[str, Any]]  # (short name, definition)
 
@@ -720,6 +750,7 @@ def _folder_part(pf: Any) -> FilePart:
         pf.folder_part = FilePart(
             _names_nmea(pf.data),
             bool(_SPEED_SENTENCE.search(pf.data)),
+            _names_device(pf.data),
             [a for a in pf.asgs if a.fn is None or not _declared_local(pf, a)],
             [(name, fn) for fn in pf.functions if (name := _function_short_name(fn))],
         )
@@ -737,10 +768,14 @@ class Folder:
         self.nmea: set[str] = set()
         #: the files that name an NMEA speed sentence (:func:`_nmea_speed` looks only there)
         self.nmea_speed: set[str] = set()
+        #: the files that name a device of facts.DEGREE_DEVICES -> (field, why)
+        self.devices: dict[str, tuple[str, str]] = {}
         for pf in files:
             part = _folder_part(pf)
             if part.nmea:
                 self.nmea.add(pf.path)
+            if part.device is not None:
+                self.devices[pf.path] = part.device
             if part.nmea_speed:
                 self.nmea_speed.add(pf.path)
             self.defines.update(pf.defines)
@@ -1198,6 +1233,11 @@ class Evaluator:
             if speed is not None:
                 why = f"{_NMEA_FIELD} read with {name}() at {at}"
                 return AbstractValue(nmea_speed=speed, why=(why,))
+            device = self.folder.devices.get(pf.path)
+            if device is not None:
+                field, angles = device
+                why = f"{field} read with {name}() at {at}; {angles}"
+                return AbstractValue(unit="deg", hint=True, why=(why,))
             return UNKNOWN
         if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
             return self._mail(pf, n)
@@ -1588,7 +1628,7 @@ class Evaluator:
                     v = settle(self._eval(cpf, args[index], depth + 1))
                     if not v.known:
                         continue  # a call we cannot read says nothing against the others
-                    v = v.because(f"passed to {name}() at {_at(cpf, call)}")
+                    v = v.because(f"{_PASSED}{name}() at {_at(cpf, call)}")
                     out = v if out is None else join(out, v)
         finally:
             self._stack.discard(pkey)
