@@ -763,3 +763,24 @@ def test_a_member_set_to_a_sum_ending_in_a_literal_gives_the_name_s_end():
     files = parse_folder({"app/App.cpp": SourceFile("app/App.cpp", code)})
     names = [(p.name.source, p.name.last) for f in files for p in f.publications]
     assert names == [("m_pitch_name", "PITCH"), ("m_any", ""), ("m_two", "")]
+
+
+def test_a_behavior_s_buffer_reads_carry_what_the_variable_is():
+    code = """
+    IvPFunction* BHV_A::onRunState() {
+      bool ok;
+      double h = getBufferDoubleVal("NAV_HEADING", ok);
+      double y = 0, other = 0;
+      getBufferDoubleValX("NAV_YAW", y);
+      getBufferDoubleValX("MY_ANGLE", other);
+      double s = sin(h) + sin(y) + sin(other) + sin(getBufferDoubleVal("NAV_PITCH"));
+      return 0;
+    }
+    """
+    files = parse_folder({"lib_bhv_a/BHV_A.cpp": SourceFile("lib_bhv_a/BHV_A.cpp", code)})
+    uses = {t.value.text: t.value.abstract for f in files for t in f.trig_uses}
+    assert uses["h"].unit == "deg" and uses["h"].sense == "heading"
+    assert "helm's buffer" in uses["h"].explanation
+    assert uses["y"].unit == "rad"
+    assert uses["other"].unit is None
+    assert uses['getBufferDoubleVal("NAV_PITCH")'].unit == "rad"

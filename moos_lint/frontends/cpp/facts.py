@@ -65,6 +65,14 @@ MAIL_UNITS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, 
     "NAV_LONG": ("deg", None, None, None),
 }
 
+#: The helm's reads of its information buffer, which hold what :data:`MAIL_UNITS` says of
+#: the MOOS variable named by their first argument: name -> the index of the argument set
+#: to the value, None for the value returned. IvPBehavior's ``getBufferDoubleVal(varname,
+#: ok)`` returns ``m_info_buffer->dQuery(varname, ok)`` (or the number its string value
+#: holds), the variable's last value as the helm received it; ``getBufferDoubleValX(varname,
+#: dval)`` sets ``dval`` to that (moos-ivp ivp/src/lib_behaviors/IvPBehavior.cpp).
+BUFFER_READS: dict[str, int | None] = {"getBufferDoubleVal": None, "getBufferDoubleValX": 1}
+
 #: NMEA 0183 sentences whose fields an app parses with atof/stod: their angles
 #: (HDT/HDG/HDM headings, RMC/VTG courses, PASHR/PRDID attitude) are degrees by the
 #: standard, as the proprietary ``$OHPR`` of OceanServer's compasses (heading, pitch and

@@ -16,6 +16,8 @@ _WORDS = (
     b"OnStartUp",
     b"GetConfigurationParam",
     b"CMOOSSerialPort",
+    b"getBufferDoubleVal",
+    b"getBufferDoubleValX",
 )
 
 #: ``\b(?:Notify|Register|...)\b|\.Run\s*\(`` as one pattern per name, each literal first
@@ -37,6 +39,7 @@ _NEEDLES = (
     b"OnStartUp",
     b"GetConfigurationParam",
     b".Run",
+    b"getBufferDoubleVal",
 )
 
 

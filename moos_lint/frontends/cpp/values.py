@@ -423,6 +423,11 @@ def ned_z_name(name: str) -> bool:
     )
 
 
+def _is_depth_local(name: str) -> bool:
+    """A local named a depth (``depth``, ``dDepth``), whose sign its name gives."""
+    return name_hint(name).sign == "down"
+
+
 def name_hint(name: str) -> AbstractValue:
     """What an identifier's name says of its unit (``m_heading``, ``pitch_rad``)."""
     base = name.rsplit(".", 1)[-1].rsplit(">", 1)[-1]
@@ -1241,6 +1246,8 @@ class Evaluator:
             return UNKNOWN
         if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
             return self._mail(pf, n)
+        if name in facts.BUFFER_READS and facts.BUFFER_READS[name] is None and args:
+            return self._buffer_read(pf, n, args[0])
         if not name or name in ("c_str", "size", "length", "GetTime", "MOOSTime"):
             return UNKNOWN
         own = self.folder.functions.get(name)
@@ -1334,6 +1341,22 @@ class Evaluator:
             range=rng,
             sign=sign,
             why=(f"{var} read by mail at {place(pf.path, n.start_point[0] + 1)}",),
+        )
+
+    def _buffer_read(self, pf: Any, call: Any, var: Any) -> AbstractValue:
+        """A MOOS variable read from the helm's information buffer (``getBufferDoubleVal(
+        "NAV_HEADING", ok)``): what :data:`facts.MAIL_UNITS` says of it."""
+        name = _string_text(strip(var))
+        fact = facts.MAIL_UNITS.get(name) if name is not None else None
+        if fact is None:
+            return UNKNOWN
+        unit, sense, rng, sign = fact
+        return AbstractValue(
+            unit=unit,
+            sense=sense,
+            range=rng,
+            sign=sign,
+            why=(f"{name} read from the helm's buffer at {_at(pf, call)}",),
         )
 
     # -- names
@@ -1497,10 +1520,14 @@ class Evaluator:
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
                 if (
-                    v.pending is not None or _parsed_text(a.rhs, v) or _speed_named(key, v)
+                    v.pending is not None
+                    or _parsed_text(a.rhs, v)
+                    or _speed_named(key, v)
+                    or (v.sign is None and v.const is None and _is_depth_local(key))
                 ) and name_hint(key).known:
                     # an opaque getter, or a number parsed from a device's text, kept in a
-                    # variable that names its unit (``double dfHeading = atof(field)``)
+                    # variable that names its unit (``double dfHeading = atof(field)``); a
+                    # depth worked out from a pressure (``double depth = (p - p0) / rho_g``)
                     v = name_hint(key)
                 if cond is not None and state is not None and not _inside(use, cond):
                     state = join(state, v)
@@ -1525,7 +1552,10 @@ class Evaluator:
                 continue
             own = self.folder.functions.get(name)
             at = _at(pf, call)
-            if own:
+            if facts.BUFFER_READS.get(name) == index:
+                argv = call.child_by_field_name("arguments").named_children
+                v = self._buffer_read(pf, call, argv[0]) if argv else UNKNOWN
+            elif own:
                 v = self.out_param(name, own, index, depth)
                 if v is None:
                     continue  # the function does not set this argument

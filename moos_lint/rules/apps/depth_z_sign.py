@@ -3,7 +3,9 @@
 ## What it does
 Reports `Notify` of a variable whose last word is `Z` (`NAV_Z`, `GPS_Z`) when
 the value is positive down without a minus sign: a depth (`m_depth`,
-`record.getDepth()`, `NAV_DEPTH` read by mail) or the z of a NED frame
+`record.getDepth()`, `NAV_DEPTH` read by mail, a local named a depth and set
+from a sum whose sign nothing else gives, `double depth = (p - p0) / (rho *
+g)`) or the z of a NED frame
 (`m_ned.z`); and of a variable whose last word is `DEPTH` published from
 `NAV_Z` as is. A frame used inside the process is free: only what is
 published counts, with one exception that is a sign error in any frame: a

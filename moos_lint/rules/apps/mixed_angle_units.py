@@ -1,17 +1,17 @@
 """Degrees and radians added, subtracted or compared.
 
 ## What it does
-Reports a sum, difference or comparison (`+`, `-`, `<`, `>`, `<=`, `>=`,
-`==`, `!=`) whose one side is an angle known to be in degrees and the other an
-angle known to be in radians: an `acos` result against a value converted with
-`180/PI`, a heading read by mail against an `atan2`, `MOOSDeg2Rad(x)` against
-`MOOSRad2Deg(y)`. The units come from moos-lint's value analysis of C++
-(README, "C++ apps"), which follows values through locals, members and
-functions; the finding says where each side's unit comes from. Only operands
-that are a name, a member, an array element or a call, and whose text may
-hold an angle (heading, yaw, pitch, roll, theta, phi, psi, angle, bearing,
-course, azimuth, a `deg` or `rad` in the name), are looked at, and a unit that
-only a name suggests is not trusted.
+Reports a sum, difference or comparison (`+`, `-`, `<`, `>`, `<=`, `>=`, `==`,
+`!=`) whose one side is an angle known to be in degrees and the other an angle
+known to be in radians: an `acos` result against a value converted with
+`180/PI`, a heading read by mail (or by a helm behavior from the helm's
+buffer) against an `atan2`, `MOOSDeg2Rad(x)` against `MOOSRad2Deg(y)`. The
+units come from moos-lint's value analysis of C++ (README, "C++ apps"), which
+follows values through locals, members and functions; the finding says where
+each side's unit comes from. Only operands that are a name, a member, an array
+element or a call, and whose text may hold an angle (heading, yaw, pitch,
+roll, theta, phi, psi, angle, bearing, course, azimuth, a `deg` or `rad` in
+the name), are looked at, and a unit that only a name suggests is not trusted.
 
 ## Why is this bad?
 A comparison of 0.6 radians with 35 degrees is always decided by the unit,

@@ -3,7 +3,8 @@
 ## What it does
 Reports a call of C++'s `sin`, `cos` or `tan` (`std::` or not, and their
 `f`/`l` forms) whose argument is known to be in degrees: a heading read by mail
-(`NAV_HEADING`, `DESIRED_HEADING`), a value converted to degrees
+(`NAV_HEADING`, `DESIRED_HEADING`) or, in a helm behavior, from the helm's
+buffer (`getBufferDoubleVal("NAV_HEADING", ok)`), a value converted to degrees
 (`MOOSRad2Deg`, `* 180 / M_PI`), or a sum or difference with such a term in
 it, whatever the other terms are (`cos(90 - heading)`,
 `sin(heading + tan(dx / dy))`: a sum with degrees in it is not radians),
