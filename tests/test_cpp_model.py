@@ -70,10 +70,12 @@ def test_prefilter_skips_files_without_moos_api(tmp_path):
     assert mentions_moos(b'Notify("X", 1);')
     assert mentions_moos(b"class A : public CMOOSApp {};")
     assert not mentions_moos(b"int notify_all(); // Registering\n")
-    # a helm behavior reads the helm's buffer
-    assert mentions_moos(b'double h = getBufferDoubleVal("NAV_HEADING", ok);')
-    assert mentions_moos(b'getBufferDoubleValX("NAV_X", x);')
-    assert not mentions_moos(b"double getBufferDoubleValue();")
+    # a helm behavior that reads the helm's buffer and does angle arithmetic
+    assert mentions_moos(b'double h = getBufferDoubleVal("NAV_HEADING", ok); cos(h);')
+    assert mentions_moos(b'getBufferDoubleValX("NAV_X", x); y = x * M_PI;')
+    assert mentions_moos(b'getBufferDoubleValX("H", h); y = degToRadians(h);')
+    assert not mentions_moos(b'double h = getBufferDoubleVal("NAV_HEADING", ok);')
+    assert not mentions_moos(b'getBufferDoubleVal("H", ok); cosine(h); MPI;')
     (tmp_path / "plain.cpp").write_text("int f() { return 1; }\n")
     assert read_relevant([str(tmp_path / "plain.cpp")]) == {}
 

@@ -16,8 +16,6 @@ _WORDS = (
     b"OnStartUp",
     b"GetConfigurationParam",
     b"CMOOSSerialPort",
-    b"getBufferDoubleVal",
-    b"getBufferDoubleValX",
 )
 
 #: ``\b(?:Notify|Register|...)\b|\.Run\s*\(`` as one pattern per name, each literal first
@@ -39,12 +37,24 @@ _NEEDLES = (
     b"OnStartUp",
     b"GetConfigurationParam",
     b".Run",
-    b"getBufferDoubleVal",
+)
+
+
+#: a helm behavior's read of the helm's buffer (``getBufferDoubleVal("NAV_HEADING", ok)``,
+#: ``getBufferDoubleValX``)
+_BUFFER_READ = b"getBufferDoubleVal"
+#: angle arithmetic whose units the value checks of a behavior judge: a trigonometric
+#: call, a conversion between degrees and radians, π
+_ANGLE_WORK = re.compile(
+    rb"\b(?:a?sin|a?cos|a?tan|atan2)[fl]?\s*\(|Deg2Rad|Rad2Deg|degToRadians|radToDegrees|"
+    rb"headingToRadians|radToHeading|\bM_PI\b|\bPI\b"
 )
 
 
 def mentions_moos(data: bytes) -> bool:
-    """Whether a C++ file mentions any MOOS API (cheap, on bytes)."""
-    if not any(needle in data for needle in _NEEDLES):
-        return False
-    return any(p.search(data) for p in _MOOS_API)
+    """Whether a C++ file mentions any MOOS API, or is a helm behavior's that reads the
+    helm's buffer and does angle arithmetic (what the value checks of a behavior judge;
+    cheap, on bytes)."""
+    if any(needle in data for needle in _NEEDLES) and any(p.search(data) for p in _MOOS_API):
+        return True
+    return _BUFFER_READ in data and _ANGLE_WORK.search(data) is not None
