@@ -696,6 +696,7 @@ _KEY_OF_REPORT = re.compile(rb"tok(?:String|Double)Parse\s*\([^;]*?$")
 #: or a class's ``C`` or ``Ci``, and no digit follows it)
 _DEVICES = [
     (
+        re.compile(rb"(?i)" + pattern.encode()),  # the name alone: a quick first look
         re.compile(
             rb"(?i)(?:^|[^a-z0-9]|(?<![a-z0-9])(?:c|i|ci))" + pattern.encode() + rb"(?![0-9])"
         ),
@@ -707,8 +708,8 @@ _DEVICES = [
 
 def _names_device(data: bytes) -> tuple[str, str] | None:
     """The device of :data:`facts.DEGREE_DEVICES` that ``data`` names, if one."""
-    for pattern, why in _DEVICES:
-        if pattern.search(data):
+    for name, pattern, why in _DEVICES:
+        if name.search(data) and pattern.search(data):
             return why
     return None
 
