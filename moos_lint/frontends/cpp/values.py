@@ -423,9 +423,13 @@ def ned_z_name(name: str) -> bool:
     )
 
 
-def _is_depth_local(name: str) -> bool:
-    """A local named a depth (``depth``, ``dDepth``), whose sign its name gives."""
-    return name_hint(name).sign == "down"
+def _variable_value(var: str | None, why: str) -> AbstractValue:
+    """What :data:`facts.MAIL_UNITS` says of MOOS variable ``var``, read as ``why`` says."""
+    fact = facts.MAIL_UNITS.get(var) if var is not None else None
+    if fact is None:
+        return UNKNOWN
+    unit, sense, rng, sign = fact
+    return AbstractValue(unit=unit, sense=sense, range=rng, sign=sign, why=(why,))
 
 
 def name_hint(name: str) -> AbstractValue:
@@ -1330,35 +1334,14 @@ class Evaluator:
 
     def _mail(self, pf: Any, n: Any) -> AbstractValue:
         var = mail_key_of(n)
-        if var is None:
-            return UNKNOWN
-        fact = facts.MAIL_UNITS.get(var)
-        if fact is None:
-            return UNKNOWN
-        unit, sense, rng, sign = fact
-        return AbstractValue(
-            unit=unit,
-            sense=sense,
-            range=rng,
-            sign=sign,
-            why=(f"{var} read by mail at {place(pf.path, n.start_point[0] + 1)}",),
-        )
+        at = place(pf.path, n.start_point[0] + 1)
+        return _variable_value(var, f"{var} read by mail at {at}")
 
     def _buffer_read(self, pf: Any, call: Any, var: Any) -> AbstractValue:
         """A MOOS variable read from the helm's information buffer (``getBufferDoubleVal(
         "NAV_HEADING", ok)``): what :data:`facts.MAIL_UNITS` says of it."""
         name = _string_text(strip(var))
-        fact = facts.MAIL_UNITS.get(name) if name is not None else None
-        if fact is None:
-            return UNKNOWN
-        unit, sense, rng, sign = fact
-        return AbstractValue(
-            unit=unit,
-            sense=sense,
-            range=rng,
-            sign=sign,
-            why=(f"{name} read from the helm's buffer at {_at(pf, call)}",),
-        )
+        return _variable_value(name, f"{name} read from the helm's buffer at {_at(pf, call)}")
 
     # -- names
     def _written_as(self, pf: Any, n: Any) -> str:
@@ -1521,15 +1504,15 @@ class Evaluator:
             if a.op == "=":
                 v = settle(self._eval(pf, a.rhs, depth + 1))
                 if (
-                    v.pending is not None
-                    or _parsed_text(a.rhs, v)
-                    or _speed_named(key, v)
-                    or (v.sign is None and v.const is None and _is_depth_local(key))
+                    v.pending is not None or _parsed_text(a.rhs, v) or _speed_named(key, v)
                 ) and name_hint(key).known:
                     # an opaque getter, or a number parsed from a device's text, kept in a
-                    # variable that names its unit (``double dfHeading = atof(field)``); a
-                    # depth worked out from a pressure (``double depth = (p - p0) / rho_g``)
+                    # variable that names its unit (``double dfHeading = atof(field)``)
                     v = name_hint(key)
+                elif v.sign is None and v.const is None and _DEPTH_NAME.search(key):
+                    # a depth worked out from a pressure (``double depth = (p - p0) / rho_g``)
+                    hint = name_hint(key)
+                    v = hint if hint.sign == "down" else v
                 if cond is not None and state is not None and not _inside(use, cond):
                     state = join(state, v)
                 else:

@@ -13,19 +13,19 @@ the literal with its radian value (value·π/180, wrapped to ±π, 4 decimals).
 In C++, it reports `Notify` of a ROLL or PITCH variable (also the axes of an
 Euler triple: `IMU_EULER_P`, `EULER_THETA`; a name built at run time counts by
 its known end, `m_prefix + "_PITCH"`, or a member every assignment of which
-ends so, `m_name_pitch = pre + "PITCH"`) with a degree value (a literal
-above 2π, a radians-to-degrees conversion, a library getter or device value
-in degrees, a raw count over a resolution named in degrees such as
+ends so, `m_name_pitch = pre + "PITCH"`) with a degree value (a literal above
+2π, a radians-to-degrees conversion, a library getter or device value in
+degrees, a raw count over a resolution named in degrees such as
 `EULER_DIV_DEG`, an angle read from the same device array as one a consumer
-converts from degrees, the pitch and roll of an OceanServer OS5000 compass read from its text
-sentence in an app that names the device (`iOS5000`, `CiOS5000`), the roll and
-pitch of the Xsens SDK's `XsEuler`
-(`euler.pitch()`, `packet.orientationEuler().pitch()`), the yaw, pitch and
-roll the Razor AHRS interface hands its data callback, a pitch a simulator's
-record is only ever set to in degrees through its setter,
-`record.setPitch(angle180(p))`, calls on objects of other classes apart), and
-of an angular rate (`*_GYRO_*`, `YAW_RATE`) in degrees per second
-(`* 180 / M_PI`, a raw count over a `*_DPS` scale).
+converts from degrees, the pitch and roll of an OceanServer OS5000 compass
+read from its text sentence in an app that names the device (`iOS5000`,
+`CiOS5000`), the roll and pitch of the Xsens SDK's `XsEuler` (`euler.pitch()`,
+`packet.orientationEuler().pitch()`), the yaw, pitch and roll the Razor AHRS
+interface hands its data callback, a pitch a simulator's record is only ever
+set to in degrees through its setter, `record.setPitch(angle180(p))`, calls on
+objects of other classes apart), and of an angular rate (`*_GYRO_*`,
+`YAW_RATE`) in degrees per second (`* 180 / M_PI`, a raw count over a `*_DPS`
+scale).
 
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
