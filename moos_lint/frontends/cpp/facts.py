@@ -21,6 +21,16 @@ import math
 #:   frame: counter-clockwise from east); ``radToHeading`` is
 #:   ``angle360(90.0-(radval / M_PI) * 180)``; ``relAng`` a compass bearing in
 #:   [0, 360) (moos-ivp ivp/src/lib_geometry/AngleUtils.cpp).
+#: - The bearings and differences of the same file are degrees: ``relBearing`` is
+#:   ``angle360(relAng(os, cn) - osh)``, ``absRelBearing`` its ``angle180`` made
+#:   positive ([0, 180]), ``totAbsRelBearing`` the sum of two of those ([0, 360]),
+#:   ``angleDiff`` the smaller difference of two ``angle360`` ([0, 180]), ``aspectDiff``
+#:   the smaller ``angleDiff`` with the second angle or its opposite ([0, 90]),
+#:   ``headingAvg`` ``atan2(Σsin, Σcos) * 180 / M_PI`` made positive (a heading in
+#:   [0, 360)), ``angleFromThreePoints`` an ``acos`` turned into degrees ([0, 180]).
+#:   Apps define functions of their own named ``relBearing`` and ``angleDiff`` (in
+#:   degrees, in other ranges: ``angleDiff`` into ±180), so those two give a unit and
+#:   no range.
 HELPERS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str | None]] = {
     "MOOSDeg2Rad": ("deg", "rad", None, None),
     "degToRadians": ("deg", "rad", None, None),
@@ -33,6 +43,13 @@ HELPERS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str
     "headingToRadians": ("deg", "rad", (-math.pi, math.pi), "math"),
     "radToHeading": ("rad", "deg", (0.0, 360.0), "heading"),
     "relAng": (None, "deg", (0.0, 360.0), "heading"),
+    "relBearing": (None, "deg", None, None),
+    "absRelBearing": (None, "deg", (0.0, 180.0), None),
+    "totAbsRelBearing": (None, "deg", (0.0, 360.0), None),
+    "angleDiff": (None, "deg", None, None),
+    "aspectDiff": (None, "deg", (0.0, 90.0), None),
+    "headingAvg": (None, "deg", (0.0, 360.0), "heading"),
+    "angleFromThreePoints": (None, "deg", (0.0, 180.0), None),
     # DUNE's Angles::degrees(rad) and Angles::radians(deg) (src/DUNE/Math/Angles.hpp:
     # ``return rad * 180.0 / c_pi``), as GLM's glm::degrees / glm::radians
     "degrees": ("rad", "deg", None, None),

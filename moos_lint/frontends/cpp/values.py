@@ -126,6 +126,13 @@ def settle(v: AbstractValue, why: str = "") -> AbstractValue:
         return to_deg(v, why)
     if abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD:
         return to_rad(v, why)
+    if (v.unit is None or v.hint) and v.pending is None:
+        raw = _raw_conversion(s)
+        if raw is not None:  # a raw reading in hundredths of a degree, in radians
+            to, res = raw  # (the reading's resolution keeps what it is: a heading stays one)
+            rng = (v.range[0] * res, v.range[1] * res) if v.range else None
+            v = replace(v, unit=None, hint=False, range=rng)
+            return to_rad(v, why) if to == "rad" else to_deg(v, why)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("scale", s)))
     rng = (v.range[0] * s, v.range[1] * s) if v.range else None
@@ -134,6 +141,18 @@ def settle(v: AbstractValue, why: str = "") -> AbstractValue:
     if unit in facts.SPEED_UNITS and why:
         out = out.because(f"{why} converts to {speed_label(unit)}")
     return out
+
+
+def _raw_conversion(s: float) -> tuple[str, float] | None:
+    """A factor that turns a raw reading in a decimal fraction of a unit into the other
+    angle unit in one product (``raw / 100.0 * (M_PI / 180.0)``: hundredths of a degree
+    into radians): ``("rad", 0.01)`` there; None for any other factor."""
+    for to, factor in (("rad", facts.DEG2RAD), ("deg", facts.RAD2DEG)):
+        for k in (1, 2, 3, 4):
+            for resolution in (10.0**k, 10.0**-k):
+                if abs(s - factor * resolution) < 1e-3 * factor * resolution:
+                    return to, resolution
+    return None
 
 
 def _speed_scaled(v: AbstractValue, s: float) -> str | None:
@@ -1117,6 +1136,7 @@ class Evaluator:
         if v.const is None and (
             abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG
             or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
+            or ((v.unit is None or v.hint) and v.pending is None and _raw_conversion(s))
         ):
             v = settle(v, f"{brief(text(n))} at {_at(pf, n)}")
         elif v.const is None and s != 1.0 and v.pending is None and _speed_scaled(v, s):
@@ -1187,7 +1207,8 @@ class Evaluator:
                 range=known[2],
                 why=(f"{name}() at {at}: {known[3]}",),
             )
-        if name in facts.HELPERS and args:
+        # (an app's own function of a helper's name is read as written: ``angleDiff``)
+        if name in facts.HELPERS and args and name not in self.folder.functions:
             unit_in, unit_out, rng, sense = facts.HELPERS[name]
             arg = self._eval(pf, args[0], depth + 1)
             why = f"{name}() at {at}"
