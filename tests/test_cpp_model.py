@@ -326,3 +326,27 @@ def test_names_built_with_a_string_stream(tmp_path):
     # a stream reset, or given a first text, is not followed
     assert names["reset.str()"] == (None, "")
     assert names["given.str()"] == (None, "")
+
+
+def test_a_publication_that_is_a_whole_statement_knows_its_place_in_its_block():
+    from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.cpp.app import parse_folder
+
+    code = """
+void A::Go(double x, double y) {
+  Notify("A_X", x);
+  // a comment takes no place
+  Notify("A_Y", y);
+  double z = x;
+  Notify("A_Z", z);
+  if(x > 0)
+    Notify("A_SPEED", x);
+  bool ok = Notify("A_HEADING", y);
+}
+"""
+    files = parse_folder({"app/A.cpp": SourceFile("app/A.cpp", code)})
+    places = {p.name.text: p.statement for f in files for p in f.publications}
+    block = places["A_X"][0]
+    assert [places[n] for n in ("A_X", "A_Y", "A_Z")] == [(block, 0), (block, 1), (block, 3)]
+    assert places["A_SPEED"] is None  # the branch of an if, not a block's statement
+    assert places["A_HEADING"] is None  # part of a declaration

@@ -303,6 +303,69 @@ def mirrored_axes(app: AppModel) -> Iterator[Finding]:
         )
 
 
+#: a value that may stand for one quantity: no literal, no assignment or increment, no
+#: call (``next()``, ``atof(field)``: each call may give another value; a cast may stay)
+_LITERAL = re.compile(r'[-+]?[\d.][\w.+-]*|"[^"]*"|\'[^\']*\'|true|false|nullptr|NULL')
+_CHANGES = re.compile(r"\+\+|--|(?<![=!<>])=(?!=)|\w\s*\(")
+
+
+def _pasted_key(p: Publication) -> str | None:
+    """The value of publication ``p`` as compared with its neighbours' (spaces aside);
+    None for one that says nothing of a quantity (a constant) or may change between two
+    calls."""
+    v = p.value
+    if v is None or not p.active or v.number is not None:
+        return None
+    written = "".join(v.text.split())
+    if not written or _LITERAL.fullmatch(written) or _CHANGES.search(written):
+        return None
+    if v.abstract is not None and v.abstract.const is not None:
+        return None
+    return written
+
+
+def pasted_publication(app: AppModel) -> Iterator[Finding]:
+    """One value published under the names of two kinds of quantity (a position and a
+    heading) by calls written one after the other in a block: a call copied and its
+    value not changed."""
+    blocks: dict[tuple[str, int], dict[int, list[Publication]]] = {}
+    for p in app.publications:
+        if p.statement is not None:
+            block, place = p.statement
+            blocks.setdefault((p.span.path, block), {}).setdefault(place, []).append(p)
+    for places in blocks.values():
+        run: list[Publication] = []
+        last = None
+        for place in sorted(places):
+            if last is not None and place != last + 1:
+                yield from _pasted(run)
+                run = []
+            run.extend(places[place])
+            last = place
+        yield from _pasted(run)
+
+
+def _pasted(run: list[Publication]) -> Iterator[Finding]:
+    """The findings of one run of consecutive publications."""
+    by_value: dict[str, list[tuple[Publication, str]]] = {}
+    for p in run:
+        kind = angles.quantity(p.name.last)
+        key = _pasted_key(p) if kind is not None else None
+        if kind is not None and key is not None:
+            by_value.setdefault(key, []).append((p, kind))
+    for key, pubs in by_value.items():
+        first, kind = pubs[0]
+        for p, other in pubs[1:]:
+            if other == kind:
+                continue
+            yield (
+                p.value.span,  # type: ignore[union-attr]
+                f"{_shown(p)} ({other}) is given `{values.brief(key, 40)}`, which line "
+                f"{first.span.line} just above publishes as {_shown(first)} ({kind}): one "
+                "value is not both; a call copied with its value left unchanged?",
+            )
+
+
 def angle_from_east(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, angles.is_heading_var):
         if v is None or v.sense != "math":

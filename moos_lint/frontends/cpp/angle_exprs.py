@@ -86,6 +86,31 @@ def is_depth_var(name: str) -> bool:
 
 _ANGLE_WORDS = {"YAW", "PITCH", "ROLL", "TURN", "HEADING", "HDG"}
 
+#: the actuators of the MOOS Conventions, each a quantity of its own
+_ACTUATOR_WORDS = {"THRUST", "RUDDER", "ELEVATOR"}
+
+
+def quantity(name: str) -> str | None:
+    """The kind of quantity a variable holds by its name's last word, as a message names
+    it: an angle (a heading, yaw, pitch or roll: one kind, since a sensor mounted on its
+    side publishes one axis under another's name), a speed, a depth or height, a position
+    (x, y, latitude, longitude: NED and ENU exchange x and y), each actuator; None for any
+    other name (a rate, an error, a count)."""
+    ws = [w.upper() for w in words(name)]
+    if not ws:
+        return None
+    if is_heading_var(name) or is_yaw_var(name) or is_other_angle_var(name):
+        return "an angle"
+    if is_speed_var(name):
+        return "a speed"
+    if is_depth_var(name) or is_z_var(name) or ws[-1] == "ALTITUDE":
+        return "a depth or height"
+    if is_latlong_var(name) or (len(ws) > 1 and ws[-1] in ("X", "Y")):
+        return "a position"
+    if ws[-1] in _ACTUATOR_WORDS:
+        return f"the {ws[-1].lower()}"
+    return None
+
 
 def is_rate_var(name: str) -> bool:
     """An angular rate: a gyro axis (``IMU_GYRO_Z``) or an angle's ``RATE`` (``YAW_RATE``)."""

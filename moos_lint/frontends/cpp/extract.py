@@ -720,6 +720,8 @@ class Extractor:
         self.out = CppFile(path=pf.path)
         self.evaluator = evaluator
         self._ned_file: bool | None = None  # whether the file may name a NED z
+        #: a block's first byte -> its statements' first bytes -> their places in it
+        self._places: dict[int, dict[int, int]] = {}
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
@@ -1180,6 +1182,7 @@ class Extractor:
             valued = False  # not a number: no unit, sense or range to know
         if value is not None and self.evaluator is not None and valued:
             value.abstract = self.evaluator.of(self.pf, value_arg)
+        statement = self._statement(node)
         for each in names:
             self.out.publications.append(
                 Publication(
@@ -1188,8 +1191,25 @@ class Extractor:
                     span=spans.of(node),
                     name_span=spans.of(name_arg),
                     function=self._fn_of(node),
+                    statement=statement,
                 )
             )
+
+    def _statement(self, call: Any) -> tuple[int, int] | None:
+        """Where the statement that is ``call`` alone sits in its block: (the block's first
+        byte, the statement's place among the block's statements, comments aside); None
+        for a call that is part of a larger statement or not in a block."""
+        stmt = call.parent
+        block = stmt.parent if stmt is not None and stmt.type == "expression_statement" else None
+        if block is None or block.type != "compound_statement":
+            return None
+        places = self._places.get(block.start_byte)
+        if places is None:
+            statements = (c for c in block.named_children if c.type != "comment")
+            places = {c.start_byte: i for i, c in enumerate(statements)}
+            self._places[block.start_byte] = places
+        place = places.get(stmt.start_byte)
+        return (block.start_byte, place) if place is not None else None
 
     def _trig(self, call: Any, name: str, arg: Any) -> None:
         """A sine, cosine or tangent of a value that is not a number written out: its

@@ -76,6 +76,10 @@ class Publication:
     name_span: Span
     function: str  # the enclosing function, e.g. ``Sim::OnNewMail``
     active: bool = True  # False when libclang sees the call compiled out
+    #: for a call that is a whole statement of a block: (the block's first byte, the
+    #: statement's place among the block's statements); calls in consecutive places
+    #: are written one after the other
+    statement: tuple[int, int] | None = None
 
 
 @dataclass(slots=True)
