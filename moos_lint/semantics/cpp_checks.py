@@ -471,6 +471,21 @@ def latlong_in_radians(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def latlong_not_decimal(app: AppModel) -> Iterator[Finding]:
+    for p, v in _valued(app, angles.is_latlong_var):
+        found = values.nmea_position(v) if v is not None else None
+        if found is None:
+            continue
+        sentence, why = found
+        because = f" ({'; '.join(why[-3:])})" if why else ""
+        yield (
+            p.value.span,  # type: ignore[union-attr]
+            f"{_shown(p)} is published as NMEA's {sentence} sentence writes it, degrees and "
+            f"minutes run together{because}: `4916.45` is 49°16.45′, not 4916.45°; "
+            "latitude and longitude are decimal degrees: the degrees plus the minutes / 60",
+        )
+
+
 def yaw_in_degrees(app: AppModel) -> Iterator[Finding]:
     for p, v in _valued(app, angles.is_yaw_var):
         val = p.value

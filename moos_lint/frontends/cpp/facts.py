@@ -127,6 +127,13 @@ DEGREE_DEVICES: dict[str, tuple[str, str]] = {
     ),
 }
 
+#: NMEA 0183 sentences that give a position, its latitude and longitude written as
+#: degrees and minutes run together, ``ddmm.mmmm`` and ``dddmm.mmmm`` (``4916.45`` is
+#: 49°16.45′), each followed by its hemisphere: GGA's fields 2 and 4, RMC's 3 and 5, GLL's
+#: 1 and 3 (NMEA 0183, v4.10). A number parsed from such a sentence and published as a
+#: latitude or longitude with no arithmetic on the way is not decimal degrees.
+NMEA_POSITION_SENTENCES = ("GGA", "RMC", "GLL")
+
 #: Speeds in another unit than metres per second -> metres per second in one of them: the
 #: knot is one nautical mile (1852 m) an hour, the mile an hour 1609.344 m an hour (both
 #: exact by definition). MOOS speeds are metres per second (the MOOS conventions, SI units;

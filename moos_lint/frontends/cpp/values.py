@@ -64,6 +64,8 @@ class AbstractValue:
     fallback: Any = None
     #: a field of an NMEA speed sentence: (its unit if it is read as a speed, the sentence)
     nmea_speed: tuple[str, str] | None = None
+    #: a field of an NMEA position sentence read as it is written (ddmm.mmmm): the sentence
+    nmea_position: str | None = None
     #: for a method called on an object whose class is declared (``record.getPitch()`` of
     #: a ``NodeRecord& record``): that class, whose setter alone gives the getter's value
     #: (:meth:`RepositoryResolver.set_by`)
@@ -137,7 +139,9 @@ def settle(v: AbstractValue, why: str = "") -> AbstractValue:
         return replace(v, ops=(*v.ops, ("scale", s)))
     rng = (v.range[0] * s, v.range[1] * s) if v.range else None
     unit = _speed_scaled(v, s)
-    out = replace(v, unit=unit, range=rng, sense=None, hint=False, why=(), nmea_speed=None)
+    out = replace(
+        v, unit=unit, range=rng, sense=None, hint=False, why=(), nmea_speed=None, nmea_position=None
+    )
     if unit in facts.SPEED_UNITS and why:
         out = out.because(f"{why} converts to {speed_label(unit)}")
     return out
@@ -197,7 +201,7 @@ def to_rad(v: AbstractValue, why: str) -> AbstractValue:
     if v.unit in ("rad", "rad/s"):
         unit = None  # converting radians again: nothing certain
     rng = (v.range[0] * facts.DEG2RAD, v.range[1] * facts.DEG2RAD) if v.range else None
-    out = replace(v, unit=unit, range=rng, const=None, hint=False)
+    out = replace(v, unit=unit, range=rng, const=None, hint=False, nmea_position=None)
     return out.because(why) if why else out
 
 
@@ -209,7 +213,7 @@ def to_deg(v: AbstractValue, why: str) -> AbstractValue:
     if v.unit in ("deg", "deg/s"):
         unit = None
     rng = (v.range[0] * facts.RAD2DEG, v.range[1] * facts.RAD2DEG) if v.range else None
-    out = replace(v, unit=unit, range=rng, const=None, hint=False)
+    out = replace(v, unit=unit, range=rng, const=None, hint=False, nmea_position=None)
     return out.because(why) if why else out
 
 
@@ -264,6 +268,7 @@ def join(a: AbstractValue, b: AbstractValue) -> AbstractValue:
         hint=a.hint and b.hint,
         origin=origin,
         nmea_speed=a.nmea_speed if a.nmea_speed == b.nmea_speed else None,
+        nmea_position=a.nmea_position if a.nmea_position == b.nmea_position else None,
     )
 
 
@@ -332,9 +337,10 @@ def offset(v: AbstractValue) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
         return replace(v, ops=(*v.ops, ("offset", None)))
-    # an angle from east plus an unknown offset may be turned to north (``θ + m_rot``)
+    # an angle from east plus an unknown offset may be turned to north (``θ + m_rot``);
+    # a position field plus anything is being turned into decimal degrees
     sense = None if v.sense == "math" else v.sense
-    return replace(v, range=None, sign=None, const=None, sense=sense)
+    return replace(v, range=None, sign=None, const=None, sense=sense, nmea_position=None)
 
 
 def apply_ops(base: AbstractValue, ops: tuple[tuple[str, Any], ...]) -> AbstractValue:
@@ -1255,11 +1261,14 @@ class Evaluator:
         if name in facts.TEXT_TO_NUMBER:
             speed = _nmea_speed(n, args) if pf.path in self.folder.nmea_speed else None
             if pf.path in self.folder.nmea:
+                # (a part of a field, ``f.substr(0, 2)``, is not the field as written)
+                sentence = _sentence_of(n) if "sub" not in text(n) else None
                 return AbstractValue(
                     unit="deg",
                     hint=True,
                     why=(f"{_NMEA_FIELD} read with {name}() at {at}{_NMEA_ANGLES}",),
                     nmea_speed=speed,
+                    nmea_position=sentence if sentence in facts.NMEA_POSITION_SENTENCES else None,
                 )
             if speed is not None:
                 why = f"{_NMEA_FIELD} read with {name}() at {at}"
@@ -1752,23 +1761,28 @@ _SENTENCE_IN_NAME = re.compile(_SENTENCES)
 _FIELD_INDEX = re.compile(r"\[\s*(\d+)\s*\]|[(,]\s*(\d+)\s*[,)]")
 
 
-def _nmea_speed(call: Any, args: list[Any]) -> tuple[str, str] | None:
-    """For a number parsed from text where the code handles one NMEA speed sentence (an
-    ``if`` on the sentence's name, or a function named for it: ``handleGPRMC``), the unit
-    the field has when it is a speed, and the sentence; None elsewhere."""
-    sentence = None
+def _sentence_of(call: Any) -> str | None:
+    """The one NMEA sentence the code around ``call`` handles: named in the condition of
+    an ``if`` whose branch holds it, or else in the name of its function
+    (``handleGPRMC``); None where none or several are."""
     p, child = call.parent, call
     while p is not None and p.type != "function_definition":
         if p.type == "if_statement" and child == p.child_by_field_name("consequence"):
             found = set(_SENTENCE_IN_TEXT.findall(text(p.child_by_field_name("condition"))))
             if found:
-                sentence = found.pop() if len(found) == 1 else None
-                break
+                return found.pop() if len(found) == 1 else None
         p, child = p.parent, p
-    else:
-        if p is not None:
-            found = set(_SENTENCE_IN_NAME.findall(_function_short_name(p)))
-            sentence = found.pop() if len(found) == 1 else None
+    if p is None:
+        return None
+    found = set(_SENTENCE_IN_NAME.findall(_function_short_name(p)))
+    return found.pop() if len(found) == 1 else None
+
+
+def _nmea_speed(call: Any, args: list[Any]) -> tuple[str, str] | None:
+    """For a number parsed from text where the code handles one NMEA speed sentence (see
+    :func:`_sentence_of`), the unit the field has when it is a speed, and the sentence;
+    None elsewhere."""
+    sentence = _sentence_of(call)
     fields_of = facts.NMEA_SPEED_FIELDS.get(sentence or "")
     if fields_of is None:
         return None
@@ -1791,6 +1805,16 @@ def speed_unit(v: AbstractValue) -> tuple[str, list[str]] | None:
     field = f"a field of NMEA's {sentence} sentence, in {speed_label(unit)},"
     steps = [w.replace(_NMEA_ANGLES, "").replace(_NMEA_FIELD, field) for w in v.why]
     return unit, steps
+
+
+def nmea_position(v: AbstractValue) -> tuple[str, list[str]] | None:
+    """For a value read from a field of an NMEA position sentence as it is written
+    (ddmm.mmmm, with nothing done to it but a sign), the sentence and the reasons, source
+    first; None for any other."""
+    if v.nmea_position is None:
+        return None
+    field = f"a field of NMEA's {v.nmea_position} sentence"
+    return v.nmea_position, [w.replace(_NMEA_ANGLES, "").replace(_NMEA_FIELD, field) for w in v.why]
 
 
 def speed_label(unit: str) -> str:
