@@ -73,7 +73,10 @@ as recorded in the catalogue with the source line that enforces it:
   `GetConfigurationParam(double)`, which ignores a value that does not start
   with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
 
-The message names the parser's source line in moos-ivp.
+The message names the parser's source line in moos-ivp. A repository that
+carries its own copy of a MOOS-IvP app (a fork of MOOS-IvP, or the MOOS-IvP
+tree itself) has the app's keys read from the copy, and the forms MOOS-IvP's
+parser enforces hold for the keys the copy still reads.
 
 ## Why is this bad?
 An IvP app reports the line as "Unhandled config line" and keeps its default;

@@ -652,6 +652,8 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         info.subscriptions_from_config = known.subscriptions_from_config
         info.observer = known.observer
         info.launched_manually = known.launched_manually
+        # the value forms its parser enforces, for the keys the copy still reads
+        info.forms = {k: f for k, f in known.forms.items() if k in info.params}
     return info
 
 
