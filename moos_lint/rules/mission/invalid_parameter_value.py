@@ -76,7 +76,10 @@ as recorded in the catalogue with the source line that enforces it:
 The message names the parser's source line in moos-ivp. A repository that
 carries its own copy of a MOOS-IvP app (a fork of MOOS-IvP, or the MOOS-IvP
 tree itself) has the app's keys read from the copy, and the forms MOOS-IvP's
-parser enforces hold for the keys the copy still reads.
+parser enforces hold for the keys the copy still reads in a copy of the file
+that reads them (the file's path in the MOOS-IvP tree,
+`ivp/src/uTimerScript/TS_MOOSApp.cpp`); a course's own app of a stock name
+(`src/pOdometry` of a moos-ivp-extend tree) is not judged by MOOS-IvP's forms.
 
 ## Why is this bad?
 An IvP app reports the line as "Unhandled config line" and keeps its default;

@@ -496,14 +496,28 @@ def load_user_catalogue(path: str, into: Catalogue) -> None:
 
 
 @lru_cache(maxsize=1)
-def _base_keys() -> frozenset[str]:
-    """The keys CMOOSApp and AppCastingMOOSApp read for every app."""
+def _stock_bases() -> tuple[str, dict[str, Any]]:
+    """The stock catalogue's commit and its base classes (CMOOSApp, AppCastingMOOSApp)."""
     try:
         with open(STOCK, encoding="utf-8") as fh:
-            bases = json.load(fh).get("base_classes", {})
+            data = json.load(fh)
     except (OSError, ValueError):
-        return frozenset()
-    return frozenset(p for b in bases.values() for p in b.get("params", []))
+        return "", {}
+    return data.get("source", {}).get("commit", ""), data.get("base_classes", {})
+
+
+@lru_cache(maxsize=1)
+def _base_keys() -> frozenset[str]:
+    """The keys CMOOSApp and AppCastingMOOSApp read for every app."""
+    return frozenset(p for b in _stock_bases()[1].values() for p in b.get("params", []))
+
+
+@lru_cache(maxsize=1)
+def _base_forms() -> dict[str, dict[str, tuple[str, str]]]:
+    """The value forms CMOOSApp and AppCastingMOOSApp enforce for every app derived from
+    them (``AppTick``, ``comms_policy``): base class -> key -> (form, source line)."""
+    commit, bases = _stock_bases()
+    return {name: _forms(b, commit) for name, b in bases.items()}
 
 
 @lru_cache(maxsize=1)
@@ -641,6 +655,9 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
         info.publish_suffixes |= {"_ITER_GAP", "_ITER_LEN"}
+    # the forms its MOOS base classes enforce (``AppTick = .5`` is ignored in any app)
+    for base in ("CMOOSApp", *app.base_chain):
+        info.forms.update(_base_forms().get(base, {}))
     known = stock().app(name)
     if known is not None:
         _add_names(info, known)
@@ -652,9 +669,23 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         info.subscriptions_from_config = known.subscriptions_from_config
         info.observer = known.observer
         info.launched_manually = known.launched_manually
-        # the value forms its parser enforces, for the keys the copy still reads
-        info.forms = {k: f for k, f in known.forms.items() if k in info.params}
+        # the value forms MOOS-IvP's parser enforces, where the app is a copy of it: for
+        # the keys it still reads, in a copy of the file that reads them (a fork's
+        # ivp/src/uTimerScript/TS_MOOSApp.cpp; not a course's own app of a stock name)
+        paths = [tuple(os.path.normpath(f.path).split(os.sep)) for f in app.files]
+        info.forms.update(
+            (k, f) for k, f in known.forms.items() if k in info.params and _in_copy(f[1], paths)
+        )
     return info
+
+
+def _in_copy(evidence: str, paths: list[tuple[str, ...]]) -> bool:
+    """Whether one of ``paths`` (split into their parts) is a copy of the MOOS-IvP file a
+    stock fact's ``evidence`` names (``moos-ivp a2a9b716 ivp/src/uTimerScript/X.cpp:306``):
+    it ends with the file's whole path in the MOOS-IvP tree."""
+    where = evidence.rsplit(" ", 1)[-1].rsplit(":", 1)[0]
+    parts = tuple(where.split("/"))
+    return bool(where) and any(p[-len(parts) :] == parts for p in paths)
 
 
 def _fixed_name(app: AppModel) -> tuple[str, str] | None:
