@@ -1262,7 +1262,7 @@ class Evaluator:
             speed = _nmea_speed(n, args) if pf.path in self.folder.nmea_speed else None
             if pf.path in self.folder.nmea:
                 # (a part of a field, ``f.substr(0, 2)``, is not the field as written)
-                sentence = _sentence_of(n) if "sub" not in text(n) else None
+                sentence = _sentence_of(n) if not _PART_OF_TEXT.search(text(n)) else None
                 return AbstractValue(
                     unit="deg",
                     hint=True,
@@ -1759,6 +1759,8 @@ _SENTENCE_IN_TEXT = re.compile(r"\b(?:\$?[A-Z]{2})?(" + _SENTENCES + r")\b")
 #: a sentence in a function's name, in capitals (``handleMsgGPRMC``, ``parseVTG``)
 _SENTENCE_IN_NAME = re.compile(_SENTENCES)
 _FIELD_INDEX = re.compile(r"\[\s*(\d+)\s*\]|[(,]\s*(\d+)\s*[,)]")
+#: a part of a text taken (``f.substr(0, 2)``, ``s.mid(2)``), not a whole field
+_PART_OF_TEXT = re.compile(r"\b(?:substr|substring|mid)\s*\(")
 
 
 def _sentence_of(call: Any) -> str | None:
