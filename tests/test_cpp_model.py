@@ -350,3 +350,53 @@ void A::Go(double x, double y) {
     assert [places[n] for n in ("A_X", "A_Y", "A_Z")] == [(block, 0), (block, 1), (block, 3)]
     assert places["A_SPEED"] is None  # the branch of an if, not a block's statement
     assert places["A_HEADING"] is None  # part of a declaration
+
+
+def test_a_mail_branch_says_how_it_reads_the_value():
+    from moos_lint.files.source import SourceFile
+    from moos_lint.frontends.cpp.app import parse_folder
+
+    code = """
+bool Odo::OnNewMail(MOOSMSG_LIST &NewMail) {
+  MOOSMSG_LIST::iterator p;
+  for(p=NewMail.begin(); p!=NewMail.end(); p++) {
+    CMOOSMsg &msg = *p;
+    string key = msg.GetKey();
+    double dval = msg.GetDouble();
+    string sval = msg.GetString();
+    if(key == "NAV_X") m_x = dval;
+    else if(key == "DEPLOY") setBooleanOnString(m_deploy, sval);
+    else if(key == "RESET") {
+      bool reset = msg.GetDouble();
+      if(reset) m_total = 0;
+    }
+    else if(key == "RETURN") {
+      if(msg.IsDouble()) m_ret = msg.GetDouble() != 0;
+    }
+    else if(key == "PING") handlePing(msg);
+    else if(key == "POKE") m_pokes++;
+    else if(key == "SPD") m_spd = atof(sval.c_str());
+    else if(key == "NAV_Y") m_y = msg.GetDouble();
+    else if(key == "REGEN") add_vertex(m_x, m_y);
+    else if(key == "SCOPE") {
+      if(msg.IsDouble()) sval = doubleToStringX(msg.GetDouble(), 8);
+      m_scope = sval;
+    }
+  }
+  return true;
+}
+"""
+    files = parse_folder({"app/A.cpp": SourceFile("app/A.cpp", code)})
+    reads = {k.text: k.reads for f in files for k in f.mail_keys}
+    assert reads == {
+        "NAV_X": "number",
+        "DEPLOY": "text",
+        "RESET": "number",
+        "RETURN": "text",  # its type asked
+        "PING": "",  # the message handed on
+        "POKE": "",  # its value not read
+        "SPD": "text",
+        "NAV_Y": "number",
+        "REGEN": "",  # members other branches set from their own messages
+        "SCOPE": "text",
+    }

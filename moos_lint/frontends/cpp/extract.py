@@ -1622,7 +1622,50 @@ def _branch(key: MailKey, test: Any) -> MailKey:
             key.empty_branch = not any(c.type != "comment" for c in body.named_children)
         elif body is not None and body.type == "expression_statement":
             key.empty_branch = body.named_child_count == 0
+        if body is not None and key.direct:
+            key.reads = _value_read(body, stmt)
     return key
+
+
+#: a message's value read as a number, as text, or its type asked
+_AS_NUMBER = re.compile(r"\bGetDouble\s*\(")
+_AS_TEXT = re.compile(
+    r"\b(?:GetString|GetAsString|IsString|IsDouble|IsDataType|IsBinary|GetBinaryData\w*)\s*\("
+)
+#: ``double dval = msg.GetDouble();`` / ``string sval = p->GetString();``: a local declared
+#: with the value as it is (not ``sval = doubleToStringX(msg.GetDouble())``, nor a member
+#: another branch sets from its own message)
+_LOCAL_OF = re.compile(
+    r"\b(?:double|float|int|long|bool|auto|string|std::string)\s*&?\s+(\w+)\s*=\s*"
+    r"\(?\s*\*?\s*\w+\s*\)?\s*(?:\.|->)\s*(GetDouble|GetString)\s*\(\s*\)"
+)
+#: the message object a key is read from (``msg`` of ``msg.GetKey()``)
+_MESSAGE_OF = re.compile(r"\b(\w+)\s*(?:\.|->)\s*Get(?:Key|Name)\s*\(")
+
+
+def _value_read(body: Any, stmt: Any) -> str:
+    """How ``body``, the branch of ``stmt`` that one mail key guards, reads the message's
+    value (see :attr:`MailKey.reads`), with the locals its function sets from it."""
+    fn = stmt
+    while fn is not None and fn.type != "function_definition":
+        fn = fn.parent
+    scope = text(fn) if fn is not None else text(body)
+    locals_of: dict[str, str] = {}
+    for m in _LOCAL_OF.finditer(scope):  # a local that ever holds the text is read as text
+        if locals_of.get(m.group(1)) != "GetString":
+            locals_of[m.group(1)] = m.group(2)
+    said = text(body)
+    words = set(re.findall(r"\b\w+\b", said))
+    for obj in set(_MESSAGE_OF.findall(scope)):  # the message handed on whole
+        if re.search(r"[(,]\s*\*?\s*" + re.escape(obj) + r"\s*[,)]", said):
+            return ""
+    text_read = bool(_AS_TEXT.search(said)) or any(locals_of.get(w) == "GetString" for w in words)
+    if text_read:
+        return "text"
+    number_read = bool(_AS_NUMBER.search(said)) or any(
+        locals_of.get(w) == "GetDouble" for w in words
+    )
+    return "number" if number_read else ""
 
 
 #: what lies between a key's test and its ``if``: ``(key == "A") || (key == "B")``

@@ -120,6 +120,10 @@ class MailKey:
     empty_branch: bool = False
     #: the name's expression when it is not a literal (``m_moosvar_saturation``, a ``#define``)
     held_in: str = ""
+    #: how the branch the test guards reads the message's value: "number" when only as a
+    #: number (``msg.GetDouble()``, a local set from it), "text" when as text or by asking
+    #: its type, "" when it does not read it or hands the message on
+    reads: str = ""
 
 
 @dataclass(slots=True)

@@ -116,6 +116,9 @@ class AppInfo:
     moos_name: str | None = None
     #: the run's own C++ defines it (the C++ rules judge it where it is defined)
     own: bool = False
+    #: the variables its OnNewMail reads only as numbers (``msg.GetDouble()``) -> where
+    #: (``Odometry.cpp:82``): text posted to them reads as -1 (the run's own C++ only)
+    reads_number: dict[str, str] = field(default_factory=dict)
 
     def reads(self, key: str) -> bool:
         """Whether the app reads the (lower-case) configuration key."""
@@ -651,6 +654,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         provenance=f"C++ {_shown(app.folder)}",
         published_keys=_published_keys(app),
         own=True,
+        reads_number=_reads_number(app),
     )
     if any(b.startswith("AppCasting") for b in app.base_chain):
         info.publishes |= {"APPCAST", "APP_LOG"}
@@ -686,6 +690,19 @@ def _in_copy(evidence: str, paths: list[tuple[str, ...]]) -> bool:
     where = evidence.rsplit(" ", 1)[-1].rsplit(":", 1)[0]
     parts = tuple(where.split("/"))
     return bool(where) and any(p[-len(parts) :] == parts for p in paths)
+
+
+def _reads_number(app: AppModel) -> dict[str, str]:
+    """The variables every branch of the app's mail handling that reads their value reads
+    as a number, with where the first does (a file's name and line)."""
+    reads: dict[str, set[str]] = {}
+    where: dict[str, str] = {}
+    for k in app.mail_keys:
+        if not k.direct or k.prefix or k.suffix or not k.reads:
+            continue
+        reads.setdefault(k.text, set()).add(k.reads)
+        where.setdefault(k.text, f"{os.path.basename(k.span.path)}:{k.span.line}")
+    return {var: where[var] for var, how in reads.items() if how == {"number"}}
 
 
 def _fixed_name(app: AppModel) -> tuple[str, str] | None:
@@ -823,6 +840,8 @@ def _add_own(cat: Catalogue, info: AppInfo) -> AppInfo:
     other.forms = {k: f for k, f in other.forms.items() if info.forms.get(k) == f}
     for k, keys in info.published_keys.items():
         other.published_keys[k] = (*other.published_keys.get(k, ()), *keys)
+    # a variable read only as a number where both copies read it so
+    other.reads_number = {v: w for v, w in other.reads_number.items() if v in info.reads_number}
     other.provenance = f"{other.provenance}; {info.provenance}"
     return other
 
