@@ -722,6 +722,8 @@ class Extractor:
         self._ned_file: bool | None = None  # whether the file may name a NED z
         #: a block's first byte -> its statements' first bytes -> their places in it
         self._places: dict[int, dict[int, int]] = {}
+        #: a function's first byte -> how its locals hold a message's value (_value_read)
+        self._reads_in: dict[int, tuple[dict[str, str], set[str]]] = {}
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
@@ -1455,7 +1457,8 @@ class Extractor:
                 )
         elif mail_fn or re.search(r"\bkey\b|GetKey|GetName", subject_text):
             direct = not (prefix or suffix) and self._message_key(node, subject)
-            self.out.mail_keys.append(_branch(MailKey(lit, span, prefix, suffix, direct), node))
+            key = MailKey(lit, span, prefix, suffix, direct)
+            self.out.mail_keys.append(_branch(key, node, self._reads_in))
 
     def _message_key(self, at: Any, subject: Any) -> bool:
         """Whether ``subject`` is a message's own name: ``msg.GetKey()``, ``p->GetName()``,
@@ -1500,7 +1503,8 @@ class Extractor:
                     lit = string_value(strip_parens(args[0]))
                     if lit is not None:
                         span = self.pf.spans.of(args[0])
-                        self.out.mail_keys.append(_branch(MailKey(lit, span, direct=True), n))
+                        key = MailKey(lit, span, direct=True)
+                        self.out.mail_keys.append(_branch(key, n, self._reads_in))
                 if name in MAIL_COMPARES and len(args) > 1:
                     self._key_against(strip_parens(args[0]), strip_parens(args[1]))
                 if name in PEEK_MAIL and len(args) > 1:  # PeekMail(NewMail, "KEY", Msg)
@@ -1591,7 +1595,7 @@ class Extractor:
             if val is not None:
                 direct = self._message_key(other, subject)
                 key = MailKey(val, self.pf.spans.of(other), direct=direct, held_in=text(other))
-                self.out.mail_keys.append(_branch(key, other))
+                self.out.mail_keys.append(_branch(key, other, self._reads_in))
             return
 
 
@@ -1605,9 +1609,12 @@ _ATOMS = (
 )
 
 
-def _branch(key: MailKey, test: Any) -> MailKey:
+def _branch(
+    key: MailKey, test: Any, reads_in: dict[int, tuple[dict[str, str], set[str]]]
+) -> MailKey:
     """``key`` with what the ``if`` its test guards says of it: the ``||`` chain the test
-    is one alternative of, and whether the branch does nothing."""
+    is one alternative of, whether the branch does nothing, and how it reads the message's
+    value (``reads_in``: what :func:`_value_read` found of each function, kept per file)."""
     n = test
     while n.parent is not None and n.parent.type in _TEST_PARTS:
         n = n.parent
@@ -1623,7 +1630,7 @@ def _branch(key: MailKey, test: Any) -> MailKey:
         elif body is not None and body.type == "expression_statement":
             key.empty_branch = body.named_child_count == 0
         if body is not None and key.direct:
-            key.reads = _value_read(body, stmt)
+            key.reads = _value_read(body, stmt, reads_in)
     return key
 
 
@@ -1643,20 +1650,26 @@ _LOCAL_OF = re.compile(
 _MESSAGE_OF = re.compile(r"\b(\w+)\s*(?:\.|->)\s*Get(?:Key|Name)\s*\(")
 
 
-def _value_read(body: Any, stmt: Any) -> str:
+def _value_read(body: Any, stmt: Any, reads_in: dict[int, tuple[dict[str, str], set[str]]]) -> str:
     """How ``body``, the branch of ``stmt`` that one mail key guards, reads the message's
-    value (see :attr:`MailKey.reads`), with the locals its function sets from it."""
+    value (see :attr:`MailKey.reads`), with the locals its function declares from it (read
+    once per function: an OnNewMail of many keys is read once, not once per key)."""
     fn = stmt
     while fn is not None and fn.type != "function_definition":
         fn = fn.parent
-    scope = text(fn) if fn is not None else text(body)
-    locals_of: dict[str, str] = {}
-    for m in _LOCAL_OF.finditer(scope):  # a local that ever holds the text is read as text
-        if locals_of.get(m.group(1)) != "GetString":
-            locals_of[m.group(1)] = m.group(2)
+    at = fn.start_byte if fn is not None else -1 - body.start_byte
+    found = reads_in.get(at)
+    if found is None:
+        scope = text(fn) if fn is not None else text(body)
+        locals_of: dict[str, str] = {}
+        for m in _LOCAL_OF.finditer(scope):  # a local that ever holds the text is text
+            if locals_of.get(m.group(1)) != "GetString":
+                locals_of[m.group(1)] = m.group(2)
+        found = reads_in[at] = (locals_of, set(_MESSAGE_OF.findall(scope)))
+    locals_of, objects = found
     said = text(body)
     words = set(re.findall(r"\b\w+\b", said))
-    for obj in set(_MESSAGE_OF.findall(scope)):  # the message handed on whole
+    for obj in objects:  # the message handed on whole
         if re.search(r"[(,]\s*\*?\s*" + re.escape(obj) + r"\s*[,)]", said):
             return ""
     text_read = bool(_AS_TEXT.search(said)) or any(locals_of.get(w) == "GetString" for w in words)
