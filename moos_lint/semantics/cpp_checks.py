@@ -142,6 +142,11 @@ def _shown(p: Publication) -> str:
     return f"`{source}` (a name set to end in `{p.name.suffix}`)"
 
 
+def _steps(why: list[str]) -> str:
+    """The last three reasons of a chain, source first, as a parenthesis."""
+    return f" ({'; '.join(why[-3:])})" if why else ""
+
+
 def _because(v: Any) -> str:
     """The chain of reasons, source first, as a parenthesis."""
     return f" ({v.explanation})" if v is not None and v.why else ""
@@ -398,7 +403,7 @@ def speed_in_knots(app: AppModel) -> Iterator[Finding]:
         if speed is None:
             continue
         unit, why = speed
-        because = f" ({'; '.join(why[-3:])})" if why else ""
+        because = _steps(why)
         yield (
             p.value.span,  # type: ignore[union-attr]
             f"{_shown(p)} is published in {values.speed_label(unit)}{because}: MOOS speeds "
@@ -477,7 +482,7 @@ def latlong_not_decimal(app: AppModel) -> Iterator[Finding]:
         if found is None:
             continue
         sentence, why = found
-        because = f" ({'; '.join(why[-3:])})" if why else ""
+        because = _steps(why)
         yield (
             p.value.span,  # type: ignore[union-attr]
             f"{_shown(p)} is published as NMEA's {sentence} sentence writes it, degrees and "

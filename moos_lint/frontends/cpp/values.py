@@ -1142,7 +1142,9 @@ class Evaluator:
         if v.const is None and (
             abs(s - facts.RAD2DEG) < 1e-3 * facts.RAD2DEG
             or abs(s - facts.DEG2RAD) < 1e-3 * facts.DEG2RAD
-            or ((v.unit is None or v.hint) and v.pending is None and _raw_conversion(s))
+            or (
+                s != 1.0 and (v.unit is None or v.hint) and v.pending is None and _raw_conversion(s)
+            )
         ):
             v = settle(v, f"{brief(text(n))} at {_at(pf, n)}")
         elif v.const is None and s != 1.0 and v.pending is None and _speed_scaled(v, s):
