@@ -1082,7 +1082,8 @@ def _condition(text: str) -> tuple[str, str] | None:
 
 
 def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
-    """``enum_or_<number form>:a|b`` for a key's branch of this shape, else None::
+    """``enum_or_<number form>:a|b`` for a key's branch of this shape, else None (the
+    words one branch takes together, which the app stores alike, in :data:`_SAME_WORDS`)::
 
         string str = tolower(value);            // optional
         if((str == "a") || (str == "b")) ...    // one or more branches of words
@@ -1100,6 +1101,7 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
     if m:
         lowered, value, k = m.group(1), m.group(2), 1
     words: list[str] = []
+    groups: list[list[str]] = []
     number = None
 
     def skip_body(after: str, k: int) -> int | None:
@@ -1127,6 +1129,7 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
                 return None
             number = _NUMBER_FORMS[(num.group(2), num.group(4))]
         else:
+            groups.append([])
             for part in test.split("||"):
                 w = _WORD_TEST.match(part.strip())
                 if not w:
@@ -1141,6 +1144,7 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
                 if w.group(3) != w.group(3).lower() or "|" in w.group(3):
                     return None
                 words.append(w.group(3))
+                groups[-1].append(w.group(3))
         nxt = skip_body(after, k)
         if nxt is None:
             return None
@@ -1156,7 +1160,17 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
         return None
     if not _REJECT.match(reject) or k >= len(code) or code[k] != "}":
         return None
-    return f"enum_or_{number}:" + "|".join(dict.fromkeys(words))
+    form = f"enum_or_{number}:" + "|".join(dict.fromkeys(words))
+    same = [list(dict.fromkeys(g)) for g in groups if len(set(g)) > 1]
+    if same:
+        _SAME_WORDS[(id(lines), n)] = same
+    return form
+
+
+#: (the file's lines, line) -> the groups of words one branch of a key's parser takes
+#: together (uTimerScript's ``if((str == "end") || (str == "all-posted")) m_reset_time =
+#: 0;``): the app stores the words of a group alike, so two lines giving two of them agree
+_SAME_WORDS: dict[tuple[int, int], list[list[str]]] = {}
 
 
 _ATOF_LOCAL = re.compile(
@@ -1287,6 +1301,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
         if prev and prev["form"] != form:
             bad.add(key)
         out[key] = {"form": form, "at": f"{_rel(cf.path, src)}:{n}"}
+        if form.startswith("enum_or_") and (id(lines), n) in _SAME_WORDS:
+            out[key]["same"] = _SAME_WORDS[(id(lines), n)]
     return {k: v for k, v in out.items() if k not in bad}
 
 

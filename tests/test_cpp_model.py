@@ -192,15 +192,27 @@ def test_discovery_leaves_nsplugs_output_beside_its_template(tmp_path):
     for name in ("meta_vehicle.moos", "meta_vehicle.bhv", "targ_alpha.moos", "targ_alpha.bhv"):
         (missions / name).write_text("ServerPort = 9000\n")
     (missions / "worked_targ_alpha.moos").write_text("ServerPort = 9000\n")  # a kept copy
-    archive = tmp_path / "archive"  # targ files kept without their template
+    archive = tmp_path / "archive"  # an output kept away from its template, with results
     archive.mkdir()
     (archive / "targ_alpha.moos").write_text("ServerPort = 9000\n")
-    found = discover([tmp_path], [], str(tmp_path)).files
-    assert [os.path.relpath(f, tmp_path) for f in found] == [
-        os.path.join("archive", "targ_alpha.moos"),
+    runs = tmp_path / "runs"  # an output that a launch script beside it runs: the mission
+    runs.mkdir()
+    (runs / "targ_bravo.moos").write_text("ServerPort = 9000\n")
+    (runs / "launch.sh").write_text("pAntler targ_bravo.moos\n")
+    named_so = tmp_path / "named_so"  # a template named like an output: it is linted
+    named_so.mkdir()
+    (named_so / "targ_charlie.moos").write_text('ServerPort = 9000\n#include "plug_x.moos"\n')
+    discovered = discover([tmp_path], [], str(tmp_path))
+    assert [os.path.relpath(f, tmp_path) for f in discovered.files] == [
         os.path.join("missions", "meta_vehicle.bhv"),
         os.path.join("missions", "meta_vehicle.moos"),
+        os.path.join("named_so", "targ_charlie.moos"),
+        os.path.join("runs", "targ_bravo.moos"),
     ]
+    # the files whose text decided are stamped with the listing, as the ignore files are
+    decided = [os.path.relpath(f, tmp_path) for f in discovered.ignore_files]
+    assert os.path.join("archive", "targ_alpha.moos") in decided
+    assert os.path.join("named_so", "targ_charlie.moos") in decided
     # named on the command line (a pre-commit hook on a committed targ file), it is linted
     named = discover([missions / "targ_alpha.moos"], [], str(tmp_path)).files
     assert [os.path.basename(f) for f in named] == ["targ_alpha.moos"]

@@ -62,6 +62,7 @@ def repo(tmp_path: Path) -> Path:
     (root / "alpha" / "targ_alpha.moos").write_text(MISSION)
     (root / "alpha" / "targ_alpha.bhv").write_text(BEHAVIORS)
     (root / "alpha" / "meta.bhv").write_text(BEHAVIORS)
+    (root / "alpha" / "launch.sh").write_text("pAntler targ_alpha.moos\n")
     (root / "generated" / "out.moos").write_text(MISSION)
     (root / ".gitignore").write_text("targ_*.moos\ntarg_*.bhv\ngenerated/\n")
     _git(root, "init", "-q")
@@ -117,6 +118,7 @@ def test_outside_git_only_dot_ignore_counts(tmp_path: Path):
     root.mkdir()
     (root / "a.moos").write_text(MISSION)
     (root / "targ_a.moos").write_text(MISSION)
+    (root / "launch.sh").write_text("pAntler targ_a.moos\n")
     (root / ".gitignore").write_text("targ_*.moos\n")
     assert _lint(root) == ["a.moos", "targ_a.moos"]
     (root / ".ignore").write_text("targ_*.moos\n")

@@ -6,6 +6,7 @@ import subprocess
 import sys
 
 from moos_lint.files.launch import (
+    antler_overrides,
     made_by_scripts,
     patch_launches,
     script_launches,
@@ -74,6 +75,25 @@ def test_programs_a_script_or_a_patch_starts_with_the_mission(tmp_path):
     mission = str(tmp_path / "meta_shoreside.moos")
     assert script_launches(str(tmp_path), mission) == {"pantler", "ptrafficmanager", "umac"}
     assert patch_launches(str(tmp_path)) == {"plogger", "utimerscript", "utimerscript_ping"}
+
+
+def test_keys_a_script_gives_pantler_for_the_mission(tmp_path):
+    (tmp_path / "launch_alpha.sh").write_text(
+        'COMMUNITY="alpha"\npAntler $COMMUNITY.moos --MOOSTimeWarp=$TIME_WARP >& /dev/null &\n'
+    )
+    (tmp_path / "launch_shore.sh").write_text(
+        "$BIN/pAntler targ_shoreside.moos --LatOrigin=43.8 --LongOrigin=-70.3 &\n"
+        "uMAC targ_shoreside.moos --MOOSTimeWarp=2\n"  # not pAntler: no copy is made
+    )
+    folder = str(tmp_path)
+    assert antler_overrides(folder, str(tmp_path / "alpha.moos")) == {"moostimewarp"}
+    assert antler_overrides(folder, str(tmp_path / "meta_shoreside.moos")) == {
+        "moostimewarp",  # `$COMMUNITY.moos` may be any mission of the folder
+        "latorigin",
+        "longorigin",
+    }
+    (tmp_path / "launch_alpha.sh").write_text("pAntler alpha.moos >& /dev/null &\n")
+    assert antler_overrides(folder, str(tmp_path / "shoreside.moos")) == set()
 
 
 def test_programs_a_cmake_harness_starts_with_the_mission(tmp_path):

@@ -73,7 +73,8 @@ class Discovered:
     stat'ed: a file added while the walk goes on changes its folder's time after
     that, so a list kept with these times is never taken for the newer listing), and
     the ignore files (``.gitignore``, ...) that decided, present or not
-    (:mod:`moos_lint.files.gitignore`)."""
+    (:mod:`moos_lint.files.gitignore`), with the files whose own text decided whether
+    they are linted (a ``targ_`` file on its own)."""
 
     __slots__ = ("files", "folders", "ignore_files", "missing")
 
@@ -124,17 +125,19 @@ def discover(
 
     A ``mission.moos++`` is pAntler's expanded copy of a mission it launched, and a
     ``targ_*.moos`` (``targ_*.bhv``) beside a ``meta_*.moos`` (``meta_*.bhv``) is what the
-    launch script made of the template with nsplug: neither is linted a second time. With
-    ``respect_gitignore``, what git ignores is not linted (see
-    :mod:`moos_lint.files.gitignore`). A file named on the command line is linted even when
-    git ignores it, as ruff does; a folder named there is walked, and what is
-    ignored below it is left out.
+    launch script made of the template with nsplug: neither is linted a second time, nor
+    is a ``targ_`` file kept where no launch script runs it
+    (:func:`_generated_beside_template`). With ``respect_gitignore``, what git ignores is
+    not linted (see :mod:`moos_lint.files.gitignore`). A file named on the command line is
+    linted even when git ignores it, as ruff does; a folder named there is walked, and
+    what is ignored below it is left out.
     """
     patterns = [*DEFAULT_EXCLUDE, *exclude]
     ignorer = Ignorer(root) if respect_gitignore else None
     files: set[str] = set()
     missing: list[str] = []
     folders: dict[str, int | None] = {}
+    decided: list[str] = []  # files whose text decided whether they are linted
     for given in paths:
         p = os.path.abspath(given)
         if not os.path.isdir(p):  # a file given by name: its folder tells whether it exists
@@ -198,8 +201,12 @@ def discover(
                     continue
                 if f.endswith("++"):
                     continue  # pAntler's copy of a mission it launched (``clean.sh`` removes it)
-                if _generated_beside_template(f, present):
-                    continue  # nsplug's output of the template beside it
+                made = _generated_beside_template(f, present)
+                if made is None:  # a ``targ_`` file on its own: its text decides
+                    decided.append(os.path.join(dirpath, f))
+                    made = not _holds_directives(os.path.join(dirpath, f))
+                if made:
+                    continue  # nsplug's output of a template
                 if f.lower().endswith(".def") and module_definition(os.path.join(dirpath, f)):
                     continue  # a Windows DLL's exports (``proj.def``), not nsplug definitions
                 rel = prefix + f
@@ -209,20 +216,43 @@ def discover(
                 if active is not None and ignored(active, full, False):
                     continue
                 files.add(full)
-    inputs = sorted(ignorer.inputs) if ignorer is not None else []
+    inputs = sorted({*ignorer.inputs, *decided} if ignorer is not None else decided)
     return Discovered(sorted(files), missing, folders, inputs)
 
 
-def _generated_beside_template(name: str, present: set[str]) -> bool:
-    """Whether ``name`` is a ``targ_`` file that nsplug made from a ``meta_`` template of the
-    same suffix in its folder (``present``: the folder's file names): MOOS-IvP's launch
-    scripts write ``nsplug meta_vehicle.moos targ_$VNAME.moos``; the findings are the
-    template's, reported there. A kept copy of one (``worked_targ_NOSTROMO.moos``) is
-    one too."""
+def _generated_beside_template(name: str, present: set[str]) -> bool | None:
+    """Whether ``name`` is a ``targ_`` file that nsplug made (``present``: its folder's file
+    names); None when its text decides. MOOS-IvP's launch scripts write ``nsplug
+    meta_vehicle.moos targ_$VNAME.moos``:
+
+    - beside a ``meta_`` template of the same suffix, the findings are the template's,
+      reported there. A kept copy of one (``worked_targ_NOSTROMO.moos``) is one too;
+    - beside a launch script (``*.sh``) and no template, it is the mission that folder
+      runs, and is linted;
+    - with neither (None), it is an output kept away from its mission (with a run's
+      results, ``logs/.../dstarlite/targ_artemis.moos``), unless it still holds nsplug's
+      directives (:func:`_holds_directives`): what the template's ``#ifdef`` branches
+      left out of that one expansion (the blocks of the planners it did not launch) is
+      no mistake of its own."""
     if not (name.startswith("targ_") or "_targ_" in name):
         return False
     suffix = os.path.splitext(name)[1]
-    return any(p.startswith("meta_") and p.endswith(suffix) for p in present)
+    if any(p.startswith("meta_") and p.endswith(suffix) for p in present):
+        return True
+    if any(p.endswith(".sh") for p in present):
+        return False
+    return None
+
+
+#: an nsplug directive at the start of a line, which nsplug's output never holds
+_DIRECTIVE = re.compile(rb"^[ \t]*#(?:include|define|ifdef|ifndef|elseifdef|else|endif)\b", re.M)
+
+
+def _holds_directives(path: str) -> bool:
+    """Whether a ``targ_`` file still holds nsplug directives: a template named like an
+    output, not one. A file that cannot be read is linted, to say so."""
+    head = read_head(path, 1 << 20)
+    return head is None or _DIRECTIVE.search(head) is not None
 
 
 #: the statements of a Windows module-definition file (a DLL's ``.def``: ``LIBRARY iMatlab``,

@@ -320,6 +320,57 @@ def script_launches(folder: str, mission: str) -> frozenset[str]:
     return frozenset(p for p, arg in started if _names_mission(arg, name))
 
 
+def antler_overrides(folder: str, mission: str) -> frozenset[str]:
+    """The lower-case keys the shell scripts of ``folder`` give pAntler on its command line
+    when they launch ``mission`` (``pAntler $COMMUNITY.moos --MOOSTimeWarp=$TIME_WARP``):
+    pAntler writes a copy of the mission with each ``--KEY=value`` line in place of the
+    file's own (``mission.moos++``, MOOSFileReader's MakeOverloadedCopy), so what the file
+    says of those keys is not what runs. A ``.moos`` argument built from a shell variable
+    may name the mission. Read as text, never run."""
+    name = os.path.basename(mission)
+    return frozenset(
+        key for arg, key in _antler_overloads(shell_scripts(folder)) if _may_name(arg, name)
+    )
+
+
+#: a ``--KEY=value`` word of a command line
+_OVERLOAD = re.compile(r"(?:^|\s)--([A-Za-z]\w*)=")
+
+
+@functools.lru_cache(maxsize=256)
+def _antler_overloads(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+    """``(mission argument, key)`` of each ``--KEY=value`` a script gives pAntler."""
+    out: set[tuple[str, str]] = set()
+    for _path, text in scripts:
+        for m in _STARTS_MISSION.finditer(text):
+            if _program_name(m.group(1)) != "pantler":
+                continue
+            args = m.group(2)
+            mission = _mission_arg(args)
+            if mission is not None:
+                out.update((mission, k.lower()) for k in _OVERLOAD.findall(args))
+    return tuple(sorted(out))
+
+
+#: a shell variable in a word (``$COMMUNITY``, ``${VNAME}``, ``$(VNAME)``)
+_SHELL_VAR = re.compile(r"\$(?:\{\w+\}|\(\w+\)|\w+)")
+
+
+def _may_name(arg: str, mission: str) -> bool:
+    """Whether a script's ``.moos`` argument is, or may be (a part of it a shell variable),
+    ``mission`` or nsplug's output of it."""
+    if _names_mission(arg, mission):
+        return True
+    base = os.path.basename(arg)
+    if "$" not in base:
+        return False
+    pattern = ".*".join(re.escape(part) for part in _SHELL_VAR.split(base))
+    if re.fullmatch(pattern, mission):
+        return True
+    stem = mission[len("meta_") :] if mission.startswith("meta_") else None
+    return stem is not None and re.fullmatch(pattern, "targ_" + stem) is not None
+
+
 def cmake_scripts(folder: str) -> tuple[tuple[str, str], ...]:
     """``(path, text)`` of each CMake file of ``folder`` (``*.cmake``, ``CMakeLists.txt``):
     a test harness may start a program with a mission (MOOS-IvP's nightly tests run

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 #: the words ``setBooleanOnString`` accepts (lower-cased first by most callers)
 BOOLEAN_WORDS = frozenset({"true", "false", "on", "off", "yes", "no", "toggle"})
+#: the words it stores alike: true, and false (MBUtils.cpp, setBooleanOnString)
+BOOLEAN_GROUPS = (frozenset({"true", "on", "yes"}), frozenset({"false", "off", "no"}))
 
 
 def strip_blank_ends(s: str) -> str:

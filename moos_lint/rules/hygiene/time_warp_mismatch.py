@@ -21,6 +21,10 @@ community runs correctly on its own.
 Deliberately not reported:
 - a warp holding a macro (`$(WARP)`), or given in `#ifdef` branches: unknown
   here;
+- a mission that a shell script beside it launches with its own warp
+  (`pAntler $COMMUNITY.moos --MOOSTimeWarp=$TIME_WARP`, MOOS-IvP's usual
+  launch line): pAntler runs a copy of the file with that line in place of
+  the file's (`mission.moos++`), so the file's warp is not the one that runs;
 - a pShare block no Run line starts (`//Run = pShare`): it shares nothing;
 - ties made at run time by uFldNodeBroker and uFldShoreBroker, whose routes
   the brokers exchange while the missions run;
@@ -59,6 +63,7 @@ from __future__ import annotations
 import os
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.launch import antler_overrides
 from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
@@ -88,6 +93,13 @@ def _time_warp(moos):
     return (warp, first) if warp > 0 else None
 
 
+def _warped_at_launch(path: str) -> bool:
+    """Whether a launch script beside the mission gives pAntler its own warp
+    (``pAntler $COMMUNITY.moos --MOOSTimeWarp=$TIME_WARP``): the file's is not the one
+    that runs."""
+    return "moostimewarp" in antler_overrides(os.path.dirname(path), path)
+
+
 @rule(
     code="H006",
     name="time-warp-mismatch",
@@ -97,12 +109,12 @@ def _time_warp(moos):
 )
 def check(ctx):
     mine = time_warp(ctx.moos)
-    if mine is None:
+    if mine is None or _warped_at_launch(ctx.path):
         return
     other_warps: list[str] = []
     for path, other, route in share_partners(ctx.run, ctx.path, ctx.moos):
         theirs = time_warp(other)
-        if theirs is not None and theirs[0] != mine[0]:
+        if theirs is not None and theirs[0] != mine[0] and not _warped_at_launch(path):
             other_warps.append(
                 f"`{os.path.basename(path)}` ({theirs[1].value.strip()}, route `{route}`)"
             )

@@ -21,7 +21,9 @@ The message says which line holds:
   (ProcessConfigReader.cpp): the second line is ignored;
 - an app's own parser and a behavior's `setParam` take the block's lines
   in turn, each setting the same member: the last line wins, and the first
-  does nothing.
+  does nothing. A line whose value the parser refuses (`reset_max = no_limit`,
+  where uTimerScript takes `nolimit`) sets nothing: the line before it holds,
+  and invalid-parameter-value reports the refused one.
 
 ## Why is this bad?
 Only one of the two values is used, without a word, and it is often not the
@@ -45,8 +47,10 @@ Keep one line, with the value meant.
 None.
 
 MOOS-IvP caveats, deliberately not reported: lines in different branches of
-an nsplug `#ifdef`, a value holding a macro, a boolean `toggle`, and two
-lines with the same value.
+an nsplug `#ifdef`, a value holding a macro, a boolean `toggle`, two lines
+with the same value, and two words one branch of the parser takes alike
+(uTimerScript's `reset_time = end` and `reset_time = all-posted` both set it
+to 0, TS_MOOSApp.cpp: the catalogue records such words with the key's form).
 """
 
 from __future__ import annotations
@@ -58,8 +62,10 @@ from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup
+from moos_lint.rules.mission.invalid_parameter_value import problem
 from moos_lint.rules.mission.unknown_parameter import block_apps
 from moos_lint.semantics.catalogue import FIRST_LINE_AT, catalogue_for, single_valued
+from moos_lint.semantics.mbutil import BOOLEAN_GROUPS
 
 
 @rule(
@@ -70,20 +76,21 @@ from moos_lint.semantics.catalogue import FIRST_LINE_AT, catalogue_for, single_v
     kinds=(Kind.MOOS, Kind.BHV),
 )
 def check(ctx):
+    cat = catalogue_for(ctx.run)
     if ctx.moos is not None:
-        commit = catalogue_for(ctx.run).source.get("commit", "")[:8]
+        commit = cat.source.get("commit", "")[:8]
         first_at = f"moos-ivp {commit} {FIRST_LINE_AT}"
         for block, app in block_apps(ctx):
-            yield from _repeats(ctx, block.params, app.name, app.forms, {}, first_at)
+            yield from _repeats(ctx, block.params, app.name, app.forms, {}, first_at, cat)
     if ctx.bhv is not None:
-        single = catalogue_for(ctx.run).single_behavior_params
+        single = cat.single_behavior_params
         for bhv in ctx.bhv.behaviors:
             info, _known = lookup(ctx, bhv.kind.strip())
             if info is not None:
-                yield from _repeats(ctx, bhv.params, info.name, info.forms, single, "")
+                yield from _repeats(ctx, bhv.params, info.name, info.forms, single, "", cat)
 
 
-def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str):
+def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str, cat):
     """A finding for each later line of a one-value key that differs from the first."""
     first: dict[str, Any] = {}
     for p in params:
@@ -93,13 +100,19 @@ def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str):
         value = p.value.strip()
         if holds is None or has_macro(value) or has_macro(p.key) or value.lower() == "toggle":
             continue
+        if holds == "last" and form is not None and _rejected(form[0], value):
+            continue  # the parser refuses it and keeps what it had (invalid-parameter-value)
         earlier = first.get(key)
         if earlier is None:
             first[key] = p
             continue
         before = earlier.value.strip()
-        if before == value or (form and form[0] == "bool" and before.lower() == value.lower()):
-            continue
+        if before == value or (
+            form and form[0] == "bool" and _alike(BOOLEAN_GROUPS, before, value)
+        ):
+            continue  # (`true`, `True` and `yes` set a boolean alike)
+        if form and _alike(cat.same_values.get(form[1], ()), before, value):
+            continue  # two words the parser stores alike (`end`, `all-posted`)
         if earlier.line.excludes(p.line):
             continue  # two branches of one #ifdef
         where = f"line {earlier.line.lineno}"
@@ -119,3 +132,16 @@ def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str):
                 "nothing"
             )
         yield ctx.report(p.value_span, msg, line=p.line, subject=Subject(app=owner, key=key))
+
+
+def _alike(groups, a: str, b: str) -> bool:
+    """Whether two values are words of one group the parser stores alike (it compares
+    them lower-cased)."""
+    return any(a.lower() in g and b.lower() in g for g in groups)
+
+
+def _rejected(form: str, value: str) -> bool:
+    """Whether a parser that sets the member line by line refuses ``value`` and leaves the
+    member as it was (uTimerScript's `reset_max = no_limit` after `reset_max = 5000`: the
+    5000 holds). A number beyond a ``clip:`` bound is taken, as the bound."""
+    return not form.startswith("clip:") and problem(form, value) is not None

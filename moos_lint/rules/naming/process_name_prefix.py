@@ -13,6 +13,8 @@ followed by an upper-case letter or a digit (`iGPS`, `pHelmIvP`, `uXMS`,
   name (it is reported there once, on its `Run` line). In a mission, a block
   that no `Run` line launches runs under no name: unlaunched-process-config
   reports it (or keeps quiet when its `Run` line is commented out on purpose).
+  A header with its `{` on the same line (`ProcessConfig = MyApp {`) names no
+  process either: MOOS never finds that block, which brace-on-header reports.
 
 `Run` lines with `InhibitMOOSParams = true` are skipped: pAntler passes that
 program neither the mission file nor a MOOS name, as it does for a program that
@@ -161,6 +163,8 @@ def check(ctx):
         low = name.lower()
         if not name or has_macro(name) or low in launched or low in elsewhere_launched:
             continue  # judged on its Run line
+        if block.brace_on_header:
+            continue  # MOOS never finds the block: it names no process (brace-on-header)
         if not check_aliases and (low in aliases or low in elsewhere_aliases):
             continue
         if not conforms(name, exempt):

@@ -59,6 +59,12 @@ def check(ctx):
                 line,
                 "`#` does not start a comment in a .moos file: MOOS reads this line (use `//`)",
             )
+        elif text.lstrip().startswith("/*"):
+            yield ctx.at_line(
+                line,
+                "`/*` does not start a comment in a .moos file: MOOS reads this line "
+                "(use `//` on each line)",
+            )
         else:
             yield ctx.at_line(
                 line,

@@ -34,6 +34,9 @@ Deliberately not reported:
   included by another linted file;
 - missions that launch no app that reads the origin (a bare MOOSDB with
   pLogger and uXMS needs no origin);
+- a missing origin that a shell script beside the mission gives pAntler on
+  its command line (`pAntler alpha.moos --LatOrigin=43.8 --LongOrigin=-70.3`):
+  pAntler runs a copy of the file with those lines added;
 - `LatOrigin = 0, LongOrigin = 0`, a common "no geodesy" choice in simulation.
 
 ## Example
@@ -75,6 +78,7 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.launch import antler_overrides
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.catalogue import catalogue_for
@@ -176,6 +180,11 @@ def _missing(ctx, lats, lons):
     if lats and lons:
         return
     if ctx.expansion.incomplete or ctx.unit.path in ctx.run.included_elsewhere:
+        return
+    at_launch = antler_overrides(os.path.dirname(ctx.unit.path), ctx.unit.path)
+    lats = lats or "latorigin" in at_launch  # (`pAntler x.moos --LatOrigin=43.8`)
+    lons = lons or "longorigin" in at_launch
+    if lats and lons:
         return
     given = ctx.options.get("needs-origin")
     if isinstance(given, str):

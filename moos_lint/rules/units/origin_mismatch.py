@@ -25,6 +25,9 @@ Deliberately not reported:
   `#ifdef` branches: unknown here (latlong-origin, U004, judges the lines
   themselves);
 - `LatOrigin = 0, LongOrigin = 0`, the "no geodesy" choice of simulations;
+- a mission that a shell script beside it launches with its own origin
+  (`pAntler alpha.moos --LatOrigin=43.8 --LongOrigin=-70.3`): pAntler runs a
+  copy of the file with those lines in place of the file's;
 - a pShare block no Run line starts (`//Run = pShare`): it shares nothing;
 - ties made at run time by uFldNodeBroker and uFldShoreBroker, whose routes
   the brokers exchange while the missions run;
@@ -67,6 +70,7 @@ import math
 import os
 
 from moos_lint.files.diagnostics import Severity
+from moos_lint.files.launch import antler_overrides
 from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
@@ -109,6 +113,14 @@ def _told(metres: float) -> str:
     return f"{metres / 1000:.0f} km" if metres >= 10_000 else f"{metres:.0f} m"
 
 
+def _moved_at_launch(path: str) -> bool:
+    """Whether a launch script beside the mission gives pAntler its own origin
+    (``pAntler alpha.moos --LatOrigin=43.8 --LongOrigin=-70.3``): pAntler runs a copy of
+    the file with those lines in place of the file's."""
+    given = antler_overrides(os.path.dirname(path), path)
+    return "latorigin" in given or "longorigin" in given
+
+
 @rule(
     code="U006",
     name="origin-mismatch",
@@ -119,7 +131,7 @@ def _told(metres: float) -> str:
 )
 def check(ctx):
     mine = origin(ctx.moos)
-    if mine is None:
+    if mine is None or _moved_at_launch(ctx.path):
         return
     try:
         least = float(ctx.options.get("min-distance", 10))
@@ -128,7 +140,7 @@ def check(ctx):
     far: list[tuple[str, tuple, float, str]] = []
     for path, other, route in share_partners(ctx.run, ctx.path, ctx.moos):
         theirs = origin(other)
-        if theirs is None:
+        if theirs is None or _moved_at_launch(path):
             continue
         metres = apart(mine[:2], theirs[:2])
         if metres > least:

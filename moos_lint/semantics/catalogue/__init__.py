@@ -187,6 +187,9 @@ class Catalogue:
         #: IvPBehavior's keys that set one member (lower case) -> the MOOS-IvP lines that
         #: set it (``updates``: a second line replaces the first)
         self.single_behavior_params: dict[str, str] = {}
+        #: a value form's MOOS-IvP lines (the second of a form's pair) -> the groups of
+        #: words its parser stores alike (uTimerScript's `reset_time`: `end`, `all-posted`)
+        self.same_values: dict[str, tuple[frozenset[str], ...]] = {}
         #: "apps" / "behaviors" -> name (lower case) -> key (lower case) -> the older
         #: MOOS-IvP (``retired.json``'s label: ``August 2019``) that last read it
         self.retired: dict[str, dict[str, dict[str, str]]] = {}
@@ -266,6 +269,7 @@ class Catalogue:
         c.executables = dict(self.executables)
         c.generic_behavior_params = set(self.generic_behavior_params)
         c.single_behavior_params = dict(self.single_behavior_params)
+        c.same_values = self.same_values
         c.retired = self.retired
         c.source = dict(self.source)
         return c
@@ -326,6 +330,19 @@ def _forms(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
     return out
 
 
+def _same_values(data: dict[str, Any], commit: str) -> dict[str, tuple[frozenset[str], ...]]:
+    """The words each stock value form's parser stores alike (``same`` in ``stock.json``),
+    by the form's MOOS-IvP lines as :func:`_forms` names them."""
+    out: dict[str, tuple[frozenset[str], ...]] = {}
+    for section in ("apps", "behaviors", "base_classes"):
+        for d in (data.get(section) or {}).values():
+            for f in (d.get("param_forms") or {}).values():
+                if isinstance(f, dict) and f.get("same") and f.get("at"):
+                    groups = tuple(frozenset(w.lower() for w in g) for g in f["same"])
+                    out[f"moos-ivp {commit[:8]} {f['at']}"] = groups
+    return out
+
+
 #: value forms read as a list or a shape, which a repeated line may add to
 #: (uFldNodeBroker's ``bridge`` routes, pObstacleMgr's ``given_obstacle`` polygons)
 _LISTED_FORMS = ("fields:", "convex_polygon", "waypoints", "point", "timer_event")
@@ -369,6 +386,7 @@ def stock() -> Catalogue:
     commit = data.get("source", {}).get("commit", "")
     cat.source = dict(data.get("source", {}))
     bases = data.get("base_classes", {})
+    cat.same_values = _same_values(data, commit)
     for name, d in data.get("apps", {}).items():
         cat.add_app(_stock_app(name, d, bases, commit))
     for name, d in data.get("programs", {}).items():
