@@ -12,7 +12,11 @@ block only right after a header; elsewhere it is a line MOOS drops
 MOOS reads on past the end of the intended block: the next
 `ProcessConfig = Y` line becomes a parameter of this block, and the next
 block's parameters are read by this app. The next app may never find its own
-block. MOOS prints at most an easily missed `missing "}"` message.
+block. MOOS prints at most an easily missed `missing "}"` message. The last
+block of a file, left open, is lost whole: MOOS's reader reaches the end of
+the file still looking for the `}` and answers that there is no block, so
+the app runs on its defaults (pLogger logs nothing it was told to; an
+AppCasting app warns `No mission config block found`).
 
 ## Example
 ```moos
@@ -42,8 +46,24 @@ def check(ctx):
     for block in ctx.moos.unclosed_blocks:
         line = block.header or block.open
         what = f"block `{block.name}`" if block.name else "block"
-        yield ctx.report(
-            line.span(),
-            f"{what} is never closed by `}}`: MOOS reads the following lines into it",
-            line=line,
-        )
+        if _runs_to_the_end(ctx.moos, block, line):
+            effect = (
+                "MOOS reads to the end of the file looking for it, and then takes the "
+                "block for missing: the app runs without its configuration"
+            )
+        else:
+            effect = "MOOS reads the following lines into it"
+        yield ctx.report(line.span(), f"{what} is never closed by `}}`: {effect}", line=line)
+
+
+def _runs_to_the_end(moos, block, line) -> bool:
+    """Whether no block opens after ``block``: its lines run to the end of the file, where
+    MOOS's reader, still looking for the `}`, returns no block at all
+    (ProcessConfigReader.cpp, GetConfiguration)."""
+    if not moos.blocks or moos.blocks[-1] is not block:
+        return False
+    if not moos.orphan_blocks:
+        return True
+    index = {id(x): i for i, x in enumerate(moos.lines)}
+    at = index.get(id(line), -1)
+    return all(index.get(id(o.open), -1) < at for o in moos.orphan_blocks)
