@@ -1081,9 +1081,10 @@ def _condition(text: str) -> tuple[str, str] | None:
     return (text[m.end() : i - 1].strip(), text[i:].strip()) if not depth else None
 
 
-def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
-    """``enum_or_<number form>:a|b`` for a key's branch of this shape, else None (the
-    words one branch takes together, which the app stores alike, in :data:`_SAME_WORDS`)::
+def _words_or_number(lines: list[str], n: int, rest: str) -> tuple[str, list[list[str]]] | None:
+    """``enum_or_<number form>:a|b`` for a key's branch of this shape, with the groups of
+    words one branch takes together (``if((str == "end") || (str == "all-posted"))``: the
+    app stores them alike), else None::
 
         string str = tolower(value);            // optional
         if((str == "a") || (str == "b")) ...    // one or more branches of words
@@ -1161,16 +1162,7 @@ def _words_or_number(lines: list[str], n: int, rest: str) -> str | None:
     if not _REJECT.match(reject) or k >= len(code) or code[k] != "}":
         return None
     form = f"enum_or_{number}:" + "|".join(dict.fromkeys(words))
-    same = [list(dict.fromkeys(g)) for g in groups if len(set(g)) > 1]
-    if same:
-        _SAME_WORDS[(id(lines), n)] = same
-    return form
-
-
-#: (the file's lines, line) -> the groups of words one branch of a key's parser takes
-#: together (uTimerScript's ``if((str == "end") || (str == "all-posted")) m_reset_time =
-#: 0;``): the app stores the words of a group alike, so two lines giving two of them agree
-_SAME_WORDS: dict[tuple[int, int], list[list[str]]] = {}
+    return form, [list(dict.fromkeys(g)) for g in groups if len(set(g)) > 1]
 
 
 _ATOF_LOCAL = re.compile(
@@ -1290,8 +1282,11 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
             form = _inline_form(lines, n, rest)
             if form is not None:
                 form = _clipped(lines, n) or form
+        same: list[list[str]] = []
         if form is None:
-            form = _words_or_number(lines, n, rest)
+            got = _words_or_number(lines, n, rest)
+            if got is not None:
+                form, same = got
         if form is None:
             form = _guard_form(lines, n, rest)
         if form is None:
@@ -1301,8 +1296,8 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
         if prev and prev["form"] != form:
             bad.add(key)
         out[key] = {"form": form, "at": f"{_rel(cf.path, src)}:{n}"}
-        if form.startswith("enum_or_") and (id(lines), n) in _SAME_WORDS:
-            out[key]["same"] = _SAME_WORDS[(id(lines), n)]
+        if same:
+            out[key]["same"] = same
     return {k: v for k, v in out.items() if k not in bad}
 
 

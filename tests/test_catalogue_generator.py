@@ -34,9 +34,14 @@ RETRACTIONS = """\
 """
 
 
-def form_of(text: str) -> str | None:
+def read(text: str) -> tuple[str, list[list[str]]] | None:
     lines = text.splitlines()
     return _words_or_number(lines, 1, lines[0][lines[0].index('")') + 1 :])
+
+
+def form_of(text: str) -> str | None:
+    got = read(text)
+    return None if got is None else got[0]
 
 
 def test_words_then_a_number_then_a_rejection():
@@ -44,6 +49,15 @@ def test_words_then_a_number_then_a_rejection():
     assert form_of(RETRACTIONS) == "enum_or_number:true|false"
     positive = RESET_MAX.replace("atoi(value.c_str()) >= 0", "atof(value.c_str()) > 0")
     assert form_of(positive) == "enum_or_positive:any|unlimited|nolimit"
+
+
+def test_words_one_branch_takes_together_are_stored_alike():
+    # one branch's `||` of words sets one value; words in branches of their own may not
+    assert read(RESET_MAX) == (
+        "enum_or_uint:any|unlimited|nolimit",
+        [["any", "unlimited", "nolimit"]],
+    )
+    assert read(RETRACTIONS) == ("enum_or_number:true|false", [])
 
 
 @pytest.mark.parametrize(

@@ -131,7 +131,7 @@ def _moved_at_launch(path: str) -> bool:
 )
 def check(ctx):
     mine = origin(ctx.moos)
-    if mine is None or _moved_at_launch(ctx.path):
+    if mine is None:
         return
     try:
         least = float(ctx.options.get("min-distance", 10))
@@ -140,13 +140,13 @@ def check(ctx):
     far: list[tuple[str, tuple, float, str]] = []
     for path, other, route in share_partners(ctx.run, ctx.path, ctx.moos):
         theirs = origin(other)
-        if theirs is None or _moved_at_launch(path):
+        if theirs is None:
             continue
         metres = apart(mine[:2], theirs[:2])
-        if metres > least:
+        if metres > least and not _moved_at_launch(path):
             far.append((os.path.basename(path), theirs, metres, route))
-    if not far:
-        return
+    if not far or _moved_at_launch(ctx.path):
+        return  # (the scripts are read only for a mismatch the files show)
     others = "; ".join(
         f"`{name}` ({theirs[3]}), {_told(metres)} away (route `{route}`)"
         for name, theirs, metres, route in far[:3]
