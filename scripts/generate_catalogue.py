@@ -600,6 +600,15 @@ PROGRAMS: dict[str, dict] = {
         "its MOOSNAME parameter, iMatlab by default "
         "(MOOS_Jul2724/MOOSMatlab/iMatlab/iMatlab.cpp:352-385)",
     },
+    "iRemote": {
+        "needs_process_config": False,
+        "launched_manually": True,
+        "why": "core MOOS's keyboard remote control, started by hand in a terminal with the "
+        "mission file (`iRemoteLite mission.moos`): it runs as iRemote and reads its keys "
+        "with MOOSGetch "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Console/iRemoteLite/iRemoteLiteMain.cpp:42-52, "
+        "MOOSRemoteLite.cpp:232)",
+    },
     "uPoke": {
         "needs_process_config": False,
         "launched_manually": True,

@@ -61,6 +61,17 @@ ANGLE_WORDS = (
     "|[Pp]si|PSI|[Aa]ng|ANG|[Bb]ear|BEAR|[Cc]ourse|COURSE|[Cc]og|COG|[Aa]zim|AZIM|[Dd]eg|DEG"
     "|[Rr]ad|RAD"
 )
+#: a number that is a quarter, half, three-quarter or whole turn in degrees (``90``,
+#: ``180.0``, ``360.f``): added to or taken from an angle in radians, it can only be a turn
+#: written in the wrong unit (mixed-angle-units)
+DEGREE_TURNS = r"^(90|180|270|360)([.]0*)?[fFlL]?$"
+#: what each of those numbers is, in degrees
+TURN_NAMES = {
+    90: ("a quarter turn", "π/2"),
+    180: ("a half turn", "π"),
+    270: ("three quarter turns", "3π/2"),
+    360: ("a whole turn", "2π"),
+}
 #: C++'s sine, cosine and tangent (``std::`` or not; float and long double forms): radians in
 TRIG = {f"{f}{s}" for f in ("sin", "cos", "tan") for s in ("", "f", "l")}
 STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
@@ -195,6 +206,22 @@ def strip_parens(n: Any) -> Any:
     while n is not None and n.type == "parenthesized_expression" and n.named_child_count == 1:
         n = n.named_children[0]
     return n
+
+
+def _radians_call(n: Any) -> bool:
+    """Whether ``n`` is a call that gives radians whatever its argument: an inverse
+    trigonometric function or a conversion to radians (``MOOSDeg2Rad(h)``)."""
+    from moos_lint.frontends.cpp import facts
+    from moos_lint.frontends.cpp.names import callee_name
+
+    n = strip_parens(n)
+    if n is None or n.type != "call_expression":
+        return False
+    name = re.sub(r"^std::", "", callee_name(n.child_by_field_name("function")))
+    if name.rstrip("f") in facts.INVERSE_TRIG:
+        return True
+    helper = facts.HELPERS.get(name)
+    return (helper is not None and helper[1] == "rad") or bool(re.match(facts.DEG2RAD_NAME, name))
 
 
 def nodes_under(n: Any) -> Iterator[Any]:
@@ -382,6 +409,8 @@ class ParsedFile:
         self.calls: list[tuple[Any, Any, Any]] = []
         self.cmps: list[tuple[Any, Any, Any]] = []
         self.mixes: list[tuple[Any, Any, Any]] = []
+        #: a sum or difference of a turn in degrees (``90``) and another value
+        self.turns: list[tuple[Any, Any, Any]] = []
         self.asgs: list[_Asg] = []
         self.inits: list[tuple[str, Any]] = []
         self.defines: list[tuple[str, str]] = []
@@ -409,6 +438,8 @@ class ParsedFile:
                 self.cmps.append((caps["cmp"][0], caps["cmp.l"][0], caps["cmp.r"][0]))
             elif "mix" in caps:
                 self.mixes.append((caps["mix"][0], caps["mix.l"][0], caps["mix.r"][0]))
+            elif "turn" in caps:
+                self.turns.append((caps["turn"][0], caps["turn.angle"][0], caps["turn.n"][0]))
             elif "asg" in caps:
                 node = caps["asg"][0]
                 op = "="
@@ -1069,6 +1100,8 @@ class Extractor:
             self._comparison(cmp, left, right)
         for node, left, right in pf.mixes:
             self._unit_mix(node, left, right)
+        for node, angle, number in pf.turns:
+            self._turn_mix(node, angle, number)
         for a in pf.asgs:
             if a.rhs.type == "argument_list" and a.node.type == "init_declarator":
                 decl = a.node.parent
@@ -1238,6 +1271,30 @@ class Extractor:
         rv = self.evaluator.of(self.pf, right)
         if {lv.unit, rv.unit} != {"deg", "rad"} or rv.hint or in_if0(node):
             return
+        a, b = self.value(left), self.value(right)
+        a.abstract, b.abstract = lv, rv
+        op = text(node.child_by_field_name("operator"))
+        self.out.unit_mixes.append(UnitMix(op, a, b, self.pf.spans.of(node), self._fn_of(node)))
+
+    def _turn_mix(self, node: Any, angle: Any, number: Any) -> None:
+        """``atan2(dy, dx) + 90``: a turn written in degrees added to or taken from an angle
+        known to be in radians (mixed-angle-units). 90 radians is no turn at all: the sum
+        is meant as degrees, and the conversion of the other side was forgotten."""
+        if self.evaluator is None or self.pf.function_of(node) is None or in_if0(node):
+            return
+        av = self.evaluator.of(self.pf, angle)
+        if av.unit != "rad" or av.hint or av.pending is not None:
+            return
+        if av.range is None and not _radians_call(angle):
+            # (a sum with a value of unknown unit keeps the unit of its known side, with
+            # no range: ``m_heading + m_away`` is no certain radian angle)
+            return
+        turn = round(float(text(number).rstrip("fFlL")))
+        deg = self.evaluator.in_degrees(
+            turn, f"{TURN_NAMES[turn][0]} in degrees, {TURN_NAMES[turn][1]} in radians"
+        )
+        lv, rv = (av, deg) if angle.start_byte < number.start_byte else (deg, av)
+        left, right = (angle, number) if angle.start_byte < number.start_byte else (number, angle)
         a, b = self.value(left), self.value(right)
         a.abstract, b.abstract = lv, rv
         op = text(node.child_by_field_name("operator"))

@@ -9,7 +9,7 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Any
 
-from moos_lint.frontends.cpp.extract import ANGLE_WORDS, CALLED
+from moos_lint.frontends.cpp.extract import ANGLE_WORDS, CALLED, DEGREE_TURNS
 
 QUERY_TEMPLATE = r"""
 (class_specifier name: (_) @cls.name (base_class_clause) @cls.bases) @cls
@@ -25,6 +25,10 @@ QUERY_TEMPLATE = r"""
   right: [(identifier) (field_expression) (qualified_identifier) (subscript_expression)
           (call_expression)] @mix.r
   (#match? @mix.l "ANGLE_WORDS") (#match? @mix.r "ANGLE_WORDS")) @mix
+[(binary_expression left: (_) @turn.angle operator: ["+" "-"]
+   right: (number_literal) @turn.n (#match? @turn.n "TURNS"))
+ (binary_expression left: (number_literal) @turn.n operator: ["+" "-"]
+   right: (_) @turn.angle (#match? @turn.n "TURNS"))] @turn
 (init_declarator declarator: (_) @asg.l value: (_) @asg.r) @asg
 (assignment_expression left: (_) @asg.l right: (_) @asg.r) @asg
 (field_declaration declarator: (_) @asg.l default_value: (_) @asg.r) @asg
@@ -40,8 +44,10 @@ QUERY_TEMPLATE = r"""
 
 #: Only calls whose function's text holds a name the extractor looks at are captured (the
 #: name it takes, ``callee()``, is always part of that text): most calls never leave C.
-QUERY = QUERY_TEMPLATE.replace("CALLEES", "|".join(sorted(CALLED))).replace(
-    "ANGLE_WORDS", ANGLE_WORDS
+QUERY = (
+    QUERY_TEMPLATE.replace("CALLEES", "|".join(sorted(CALLED)))
+    .replace("ANGLE_WORDS", ANGLE_WORDS)
+    .replace("TURNS", DEGREE_TURNS)
 )
 
 #: Patterns are matched only on nodes at most this deep in the syntax tree.

@@ -973,6 +973,11 @@ class Evaluator:
         #: writes is looked for where the repository writes it (:func:`_field_pending`)
         self.library = library
 
+    @staticmethod
+    def in_degrees(value: float, why: str) -> AbstractValue:
+        """A number written in degrees, for the reason given (a turn: ``90``)."""
+        return AbstractValue(unit="deg", const=float(value), why=(why,))
+
     def of(self, pf: Any, node: Any, depth: int = 0) -> AbstractValue:
         try:
             v = settle(self._eval(pf, node, depth))

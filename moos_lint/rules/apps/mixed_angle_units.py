@@ -13,6 +13,12 @@ element or a call, and whose text may hold an angle (heading, yaw, pitch,
 roll, theta, phi, psi, angle, bearing, course, azimuth, a `deg` or `rad` in
 the name), are looked at, and a unit that only a name suggests is not trusted.
 
+It also reports a turn written in degrees (`90`, `180`, `270` or `360`, as a
+number) added to or taken from an angle known to be in radians:
+`atan2(dy, dx) + 90`, `90 - atan2(dx, dy)`. In radians such a number is no
+turn at all (90 radians is 14 turns and a third of a radian); the sum is meant
+in degrees, and the conversion of the other side was forgotten.
+
 ## Why is this bad?
 A comparison of 0.6 radians with 35 degrees is always decided by the unit,
 not by the angles: a test of a transmission angle against its limit never
@@ -27,12 +33,22 @@ if(m_theta_0 > m_theta_max)
   Notify("PATH_FOUND", "false");
 ```
 
+```cpp
+// a heading from two antennas: the baseline's angle turned a quarter turn
+m_heading = atan2(m_right_y - m_left_y, m_right_x - m_left_x) + 90;
+```
+
 ## How to fix
 ```cpp
 m_theta_max = acos(c0 / c_bottom);               // keep both in radians
 m_theta_0   = acos(c0 / (g * m_radius));
 if(m_theta_0 > m_theta_max)
   Notify("PATH_FOUND", "false");
+```
+
+```cpp
+// convert the angle before the turn is added (or add M_PI/2 in radians)
+m_heading = MOOSRad2Deg(atan2(m_right_y - m_left_y, m_right_x - m_left_x)) + 90;
 ```
 
 ## Options

@@ -50,7 +50,8 @@ suppress the finding on the header line.
   app catalogue says; their block is read although no Run line starts them.
   By default the catalogue decides: uXMS, uMAC, uMACView, uPokeDB, uQueryDB,
   uMayFinish, uTermCommand and uHelmScope (each documents
-  `Usage: APP file.moos`), the uMS scope, and the apps a user catalogue
+  `Usage: APP file.moos`), the uMS scope, core MOOS's keyboard remote control
+  iRemote (`iRemoteLite mission.moos` in a terminal), and the apps a user catalogue
   declares `launched_manually = true`. A block whose name *starts with* one of
   these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
 - `commented-runs` (boolean, default false): also report a block whose Run
