@@ -12,6 +12,7 @@ from moos_lint.files.launch import (
     script_launches,
     script_names,
     scripts_beside,
+    vehicle_names,
 )
 
 
@@ -94,6 +95,20 @@ def test_keys_a_script_gives_pantler_for_the_mission(tmp_path):
     }
     (tmp_path / "launch_alpha.sh").write_text("pAntler alpha.moos >& /dev/null &\n")
     assert antler_overrides(folder, str(tmp_path / "shoreside.moos")) == set()
+
+
+def test_vehicle_names_a_script_sets(tmp_path):
+    (tmp_path / "launch.sh").write_text(
+        'VNAME1="henry"   # the first vehicle\n'
+        "  export VNAME2=gilda\n"
+        "SHORE_VNAME='shoreside';\n"
+        "VNAME=$1\n"  # a name given at run time: none known
+        'VNAME="${ARGI#--vname=}"\n'
+        'VNAME3="two words"\n'
+        "nsplug meta_vehicle.moos targ_$VNAME1.moos VNAME=$VNAME1\n"
+    )
+    (tmp_path / "notes.txt").write_text('VNAME="not_a_script"\n')
+    assert vehicle_names(str(tmp_path)) == {"henry", "gilda", "shoreside"}
 
 
 def test_programs_a_cmake_harness_starts_with_the_mission(tmp_path):

@@ -92,7 +92,7 @@ async def test_diagnostics_on_open_carry_code_link_and_source(client, mission):
     await wait_for(lambda: client.diagnostics.get(uri))
     diags = client.diagnostics[uri]
     found = codes(client, uri)
-    # R007 on `#Run`, R003 on the header with `{`, L001 on the unused suppression,
+    # R007 on `#output`, R003 on the header with `{`, L001 on the unused suppression,
     # and the fragment's R003 shown on the `#include` line that pulls it in.
     assert found == [(12, "R007"), (15, "R003"), (20, "R003"), (24, "L001")]
     r003 = next(d for d in diags if d.code == "R003" and d.range.start.line == 15)
@@ -190,7 +190,7 @@ async def test_code_actions_fix_and_suppress(client, mission):
     )
     (suppress,) = [a for a in actions if a.title.startswith("Suppress R007")]
     (edit,) = suppress.edit.changes[uri]
-    # `#Run ...` is a `#` line: the comment goes on its own line above it.
+    # `#output ...` is a `#` line: the comment goes on its own line above it.
     assert edit.range.start == lsp.Position(12, 0)
     assert edit.new_text == "  // moos-lint: ignore[R007]\n"
     # Applying it silences the finding.

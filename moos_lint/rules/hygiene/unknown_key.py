@@ -67,8 +67,9 @@ MOOS-IvP caveats, deliberately not reported:
   are not judged either;
 - keys holding an unexpanded `$(X)` macro, `define:` lines and `[section]`
   keys;
-- a key starting with `#` or a single `/` while the not-a-comment rule (R007)
-  is enabled: that rule reports the line already (`#Run = pX`);
+- a key starting with `#` or a single `/` (`#Run = pX`, `#LatOrigin = 43.8`):
+  MOOS reads the line, but nothing asks for that key, so the line does what a
+  comment does, as its writer meant;
 - a key between the markers of a C block comment (`/*` and `*/` on lines of
   their own): its author meant it switched off, and MOOS ignores an unknown
   top-of-file key anyway; malformed-line names the markers when the lines
@@ -168,7 +169,6 @@ def _norm(key: str) -> str:
 )
 def check(ctx):
     moos = ctx.moos
-    r007 = ctx.runs("R007")
     globals_known = [*GLOBALS, *(str(k) for k in ctx.options.get("extra-globals", []))]
     globals_known += sorted(repo_globals(ctx.run))
     if any(b.text_format for b in moos.blocks) or any(
@@ -184,7 +184,7 @@ def check(ctx):
         top = _by_lower(globals_known)
         for p in moos.globals:
             if id(p.line) not in off:
-                yield from _judge(ctx, p, top, "top-of-file", r007, _APP_KEYS_LOWER, built)
+                yield from _judge(ctx, p, top, "top-of-file", _APP_KEYS_LOWER, built)
     for block in moos.antler_blocks:
         # a global key (`LatOrigin`) is read wherever it sits, blocks included (MOOS's
         # file reader scans every line for it): global-key-in-block (R009) reports the place
@@ -202,7 +202,7 @@ def check(ctx):
                 # a console configuration (`pSPConfig = -geometry,80x20+0+0,-bg,green`) or
                 # a list of arguments, kept for a Run line that names it (or once did)
                 continue
-            yield from _judge(ctx, p, by_lower, "ANTLER-block", r007, present=present)
+            yield from _judge(ctx, p, by_lower, "ANTLER-block", present=present)
 
 
 def _by_lower(keys: Iterable[str]) -> dict[str, str]:
@@ -218,7 +218,6 @@ def _judge(
     p,
     by_lower: dict[str, str],
     where: str,
-    r007: bool,
     in_block: Mapping[str, str] = MappingProxyType({}),
     built: BuiltKeys | None = None,
     present: frozenset[str] = frozenset(),
@@ -250,17 +249,8 @@ def _judge(
             line=p.line,
         )
         return
-    commented = looks_commented(key)
-    if commented and r007:
-        return  # not-a-comment reports this line
-    if commented:
-        yield ctx.report(
-            p.key_span,
-            f"`{key}` is not a comment: MOOS reads it as the key `{key}`, which it ignores "
-            "(comment lines out with `//`)",
-            line=p.line,
-        )
-        return
+    if looks_commented(key):
+        return  # `#Run = X`: no one asks for the key, so the line does what a comment does
     close = difflib.get_close_matches(lkey, list(by_lower), n=3, cutoff=0.75)
     names = [by_lower[c] for c in close]
     if not names:  # a misspelt block key at the top of the file

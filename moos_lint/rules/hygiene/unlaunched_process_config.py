@@ -57,8 +57,7 @@ suppress the finding on the header line.
 - `commented-runs` (boolean, default false): also report a block whose Run
   line is commented out in the ANTLER block (`//Run = uTimerScript ...`; also
   `#Run = ...`, `/Run = ...` and `/* Run = ... */`, which MOOS does not take
-  for comments but which launch nothing all the same: not-a-comment, R007,
-  reports their spelling).
+  for comments but which launch nothing all the same).
   Commenting a Run line out while keeping its block is how MOOS users switch a
   process off for a while (a simulator for field runs, a logger, a timer
   script; 4 of the 8 such blocks in MOOS-IvP's own missions), so by default
@@ -101,8 +100,18 @@ MOOS-IvP caveats, deliberately not reported:
   it, and brace-on-header (R003) reports that line;
 - a block of a fragment that several missions include (one `plug_uTimerScript.moos`
   for the vehicle and the shoreside), when another mission of the lint run that
-  includes the fragment launches it: the block is read there, and deleting it
-  would break that mission.
+  includes the fragment launches it (the block is read there, and deleting it
+  would break that mission) or has its Run line commented out (switched off
+  there on purpose);
+- a block that three or more missions of the lint run configure while none
+  launches it, not even in a commented-out Run line: the project starts that
+  program another way (a tool started by hand, `iKST targ_alpha.moos`), or the
+  missions pick from a shared set of configurations; two copies of a mission
+  are no such sign, and their block is reported;
+- a block whose name holds, between underscores, the stem of a launched script
+  moos-lint cannot read (`heron_realtime_reachability` for
+  `Run = ../falcon/heron/realtime_reachability.py`): such a script connects
+  under the name it chooses, often its package's name joined to its own.
 """
 
 import os
@@ -117,9 +126,9 @@ from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for
 
-#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS
-#: (not-a-comment, R007, reports them), but a Run line its author meant to switch off
-#: all the same
+#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS,
+#: but a Run line its author meant to switch off all the same (pAntler launches only the
+#: lines whose key is `Run`)
 _COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*\S", re.I)
 
 
@@ -173,12 +182,15 @@ def check(ctx):
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
-        if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat):
+        switched = not ctx.options.get("commented-runs")
+        if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat, switched):
             continue  # a shared fragment: another mission that includes it launches it
+        if switched and _started_elsewhere(ctx.run, block.lname, cat):
+            continue  # configured across the project, launched by no mission: by hand
         if scripts is None:
             scripts = _script_words(ctx.path, moos)
         quoted, unread = scripts
-        if block.lname in quoted or _extends(block.lname, unread):
+        if block.lname in quoted or _extends(block.lname, unread) or _holds(block.lname, unread):
             continue  # a launched script names it (or may): it reads it its own way
         if patched is None:
             folder = os.path.dirname(os.path.abspath(ctx.path))
@@ -236,26 +248,70 @@ def _reads_other(runs, reads) -> dict[str, str]:
     return found
 
 
-def _launched_by_includer(run, block, cat) -> bool:
+def _launched_by_includer(run, block, cat, switched: bool) -> bool:
     """Whether a mission of the run that includes the fragment holding ``block`` launches
-    a process of its name."""
-    names = per_run(run, "names-by-fragment", lambda units: _names_by_fragment(units, cat))
+    a process of its name (or, ``switched``, has its Run line commented out: switched off
+    there on purpose)."""
+    key = "switched-by-fragment" if switched else "names-by-fragment"
+    names = per_run(run, key, lambda units: _names_by_fragment(units, cat, switched))
     return any(names_match(name, block.name) for name in names.get(block.header.path, ()))
 
 
-def _names_by_fragment(units, cat) -> dict[str, set[str]]:
+def _names_by_fragment(units, cat, switched: bool) -> dict[str, set[str]]:
     """Every included file of the missions -> the process names (names of the blocks
-    their Run lines read) launched by the missions that include it."""
+    their Run lines read) launched by the missions that include it, with ``switched``
+    those of their commented-out Run lines too."""
     found: dict[str, set[str]] = {}
     for unit in units:
         moos = unit.moos
         if moos is None or not moos.runs:
             continue
         launched = {name for r in moos.runs for name in cat.block_names(r)}
-        for path in unit.expansion.sources:
-            if path != unit.path:
-                found.setdefault(path, set()).update(launched)
+        included = [path for path in unit.expansion.sources if path != unit.path]
+        if switched and included:
+            launched |= set(_commented_runs(moos, cat, unit.path)[0])
+        for path in included:
+            found.setdefault(path, set()).update(launched)
     return found
+
+
+#: a block that at least this many missions of the run configure, and none launches
+#: (not even in a commented-out Run line), is taken as started another way
+_CONFIGURED_ACROSS = 3
+
+
+def _started_elsewhere(run, lname: str, cat) -> bool:
+    """Whether block ``lname`` is configured by several missions of the run and launched by
+    none of them, not even in a commented-out Run line: a tool the project starts another
+    way (by hand in a terminal, `iKST targ.moos`; from a script outside the missions), or a
+    shared set of configurations the missions pick from. The block is kept on purpose."""
+    configured, launched, macros = per_run(
+        run, "blocks-across-missions", lambda units: _across(units, cat)
+    )
+    if configured.get(lname, 0) < _CONFIGURED_ACROSS or lname in launched:
+        return False
+    return not any(names_match(name, lname) for name in macros)
+
+
+def _across(units, cat) -> tuple[dict[str, int], set[str], set[str]]:
+    """How many missions of the run configure each block (by lower-case name), the
+    lower-case names the missions launch or have commented out, and the launched names
+    that hold a macro (any name may match them)."""
+    configured: dict[str, int] = {}
+    launched: set[str] = set()
+    macros: set[str] = set()
+    for unit in units:
+        moos = unit.moos
+        if moos is None or not moos.is_mission:
+            continue
+        for name in {b.lname for b in moos.blocks if b.header is not None and b.name}:
+            configured[name] = configured.get(name, 0) + 1
+        for r in moos.runs:
+            if has_macro(r.name):
+                macros.add(r.name)
+            launched.update(name.lower() for name in cat.block_names(r))
+        launched.update(_commented_runs(moos, cat, unit.path)[0])
+    return configured, launched, macros
 
 
 def _script_words(mission: str, moos) -> tuple[frozenset[str], dict[str, str]]:
@@ -281,6 +337,17 @@ def _extends(name: str, names) -> str | None:
     for other in names:
         if len(other) > len(name) and other.startswith(name) and other[len(name)].isalnum():
             return names[other]
+    return None
+
+
+def _holds(name: str, unread: dict[str, str]) -> str | None:
+    """What ``unread`` holds for a script whose stem is a part of block ``name`` between
+    underscores (``heron_realtime_reachability`` for ``realtime_reachability.py``): a
+    script moos-lint cannot read connects under the name it chooses, often its package's
+    name joined to its own."""
+    for stem, program in unread.items():
+        if re.search(rf"(?:^|_){re.escape(stem)}(?:_|$)", name):
+            return program
     return None
 
 

@@ -39,7 +39,13 @@ lists) is not reported: the vehicle's name decides its case, not the writer.
 Nor is a name whose upper-case prefix the same file also ends with a macro
 (`GOTO_UPDATES_nostromo` where a line names `GOTO_UPDATES_$(VNAME3)`, and a
 launch script sets `VNAME3="nostromo"`): the name is the one that macro
-builds for one vehicle.
+builds for one vehicle. Nor is an upper-case name joined to the name of a
+vehicle of the mission's folder, as that vehicle is named: its community
+(`Community = alpha` in `alpha.moos` beside the shoreside's `alpha_WPT_UPDATE`)
+or the `VNAME` a launch script of the folder sets (`VNAME1="henry"` for
+`RETURN_henry`). Such a name is one vehicle's copy of a variable, and the other
+end writes it the same way; unless the mission publishes it in upper case
+(`ALPHA_REPORT`), when the name as written reads nothing and is reported.
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
 more than 5000 variable names they configure. Two kinds of exceptions
@@ -94,6 +100,7 @@ old name). If a value was meant to be a value, quote it or fix its separators.
 from __future__ import annotations
 
 import fnmatch
+import os
 import re
 
 from moos_lint.files.diagnostics import Severity, Subject
@@ -134,6 +141,8 @@ def check(ctx):
             continue
         if _built_by_app(ctx, bare) or _built_by_macro(ctx, bare):
             continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
+        if _named_for_vehicle(ctx, bare):
+            continue  # `henry_REFUEL_START`: one vehicle's copy of a variable, as it is named
         where = f"{ref.app} `{ref.param}`"
         if not ref.wildcard and _UPPER_WILD.fullmatch(bare):
             message = (
@@ -199,6 +208,51 @@ def _built_by_macro(ctx, name: str) -> bool:
 def _macro_ended(lines) -> frozenset[str]:
     """The upper-case prefixes the lines end with a macro, as written."""
     return frozenset(m.group(1) for line in lines for m in _MACRO_SUFFIX.finditer(line.raw))
+
+
+def _named_for_vehicle(ctx, name: str) -> bool:
+    """Whether ``name`` is an upper-case name joined to the name of a vehicle of the
+    mission's folder, as that vehicle is named (``henry_REFUEL_START``,
+    ``RETURN_aux``): its community, or what the folder's launch scripts give ``VNAME``.
+    Unless the mission publishes it in upper case (a consumer that upper-cases the
+    vehicle's name, as uFldShoreBroker's ``DEPLOY_<VNAME>`` does, never sees it)."""
+    vehicles = _vehicles_beside(ctx)
+    if not vehicles:
+        return False
+    for i, ch in enumerate(name):
+        if ch != "_":
+            continue
+        head, tail = name[:i], name[i + 1 :]
+        if (head in vehicles and _UPPER.fullmatch(tail)) or (
+            tail in vehicles and _UPPER.fullmatch(head)
+        ):
+            return not _posted_in_upper_case(ctx, name)
+    return False
+
+
+def _vehicles_beside(ctx) -> frozenset[str]:
+    """The names of the vehicles of the unit's folder that are not upper case: the
+    communities of its missions, and the ``VNAME`` its launch scripts set."""
+    from moos_lint.files.launch import vehicle_names
+
+    folder = os.path.dirname(os.path.abspath(ctx.path))
+    communities = per_run(ctx.run, "communities-by-folder", _communities)
+    found = communities.get(folder, frozenset()) | vehicle_names(folder)
+    return frozenset(v for v in found if not _UPPER.fullmatch(v))
+
+
+def _communities(units) -> dict[str, frozenset[str]]:
+    """Every folder of the run's missions -> the communities they name, as written."""
+    found: dict[str, set[str]] = {}
+    for unit in units:
+        moos = unit.moos
+        if moos is None or not moos.is_mission:
+            continue
+        folder = os.path.dirname(os.path.abspath(unit.path))
+        for p in moos.global_values("Community"):
+            if p.value and "$" not in p.value:
+                found.setdefault(folder, set()).add(p.value.strip())
+    return {k: frozenset(v) for k, v in found.items()}
 
 
 def _posted_in_upper_case(ctx, name: str) -> str:

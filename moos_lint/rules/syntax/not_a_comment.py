@@ -1,30 +1,37 @@
-"""A line that looks like a comment but is not one to MOOS.
+"""A line that looks like a comment but that MOOS hands to an app.
 
 ## What it does
 Reports a line starting with `#` that is not an nsplug directive, and a line
-starting with a single `/`, when MOOS reads it: when it holds `=` (or a `[`,
-`]` or brace, which MOOS also keeps). In a `.moos` file only `//` starts a
-comment.
+starting with a single `/` or with `/*`, inside a process's configuration
+block, when MOOS reads it: when it holds `=` (or a `[` or `]`, which MOOS also
+keeps). In a `.moos` file only `//` starts a comment. A line holding a brace
+is reported wherever it is: `#}` does not close a block.
 
 ## Why is this bad?
-MOOS reads `#Run = pFoo` as a live line whose key is `#Run`: the Run line is
-not a Run line any more, so the process silently never launches, and
-`#LatOrigin = 43.8` silently drops the origin. Inside a block the line is
-handed to the app, and an AppCasting app reports `#share = ...` as an
-unhandled configuration line. A line without `=` (a `/--------` banner, the
-lines of a `/* ... */` comment) is dropped by MOOS unread, as a comment would
-be, so it is not reported (`ProcessConfigReader::GetConfiguration` keeps only
-`key=value` lines and lines with `[` or `]`); so is `#//Run = pFoo`, since MOOS
-first cuts a line at its `//` (`MOOSFileReader::GetNextValidLine`), leaving `#`.
-Inside a block that an app reads as protobuf text (goby's pAcommsHandler), `#`
-does start a comment, and such lines are not reported.
+MOOS hands `#share = [NAV_X] -> ...` to the app as a live line whose key is
+`#share`: an AppCasting app reports it as an unhandled configuration line, an
+app that refuses unknown keys fails to start, and one that reads keys by
+their start may take it for another. `#}` or `/}` is not a closing brace: the
+block runs on into the next one, whose header becomes a parameter of this one.
+
+Deliberately not reported: a `#` or `/` line at the top of the file or inside
+the ANTLER block. MOOS reads it, but nothing ever asks for its key (`#Run` is
+not `Run`, `#LatOrigin` not `LatOrigin`: pAntler launches only Run lines, and
+an app looks a top-level key up by its whole name), so the line does what a
+comment would: `#Run = pLogger` launches nothing, as its writer meant. A line
+without `=` (a `/--------` banner, the lines of a `/* ... */` comment) is
+dropped by MOOS unread, as a comment would be (`ProcessConfigReader::GetConfiguration`
+keeps only `key=value` lines and lines with `[` or `]`); so is `#//x = 1`,
+since MOOS first cuts a line at its `//` (`MOOSFileReader::GetNextValidLine`),
+leaving `#`. Inside a block that an app reads as protobuf text (goby's
+pAcommsHandler), `#` does start a comment, and such lines are not reported.
 
 ## Example
 ```moos
-ProcessConfig = ANTLER
+ProcessConfig = pShare
 {
-  Run = MOOSDB @ NewConsole = false
-  #Run = pLogger @ NewConsole = false
+  input = route = localhost:9301
+  #output = src_name=NAV_X, route=localhost:9300
 }
 ```
 
@@ -48,28 +55,31 @@ def check(ctx):
         if p.kind in ("unknown-directive", "malformed-directive")
     }
     protobuf = _text_format_lines(ctx.moos)
+    read: dict[int, str] | None = None
     for line in ctx.moos.lines:
         text = line.text
         if not looks_commented(text) or not _kept(text) or (line.path, line.lineno) in flagged:
             continue
         if id(line) in protobuf:
             continue  # protobuf text: `#` starts a comment there
-        if text.lstrip().startswith("#"):
-            yield ctx.at_line(
-                line,
-                "`#` does not start a comment in a .moos file: MOOS reads this line (use `//`)",
-            )
-        elif text.lstrip().startswith("/*"):
-            yield ctx.at_line(
-                line,
-                "`/*` does not start a comment in a .moos file: MOOS reads this line "
-                "(use `//` on each line)",
-            )
+        if read is None:
+            read = _read_by_apps(ctx.moos)
+        app = read.get(id(line))
+        brace = any(c in _before_comment(text) for c in "{}")
+        if app is None and not brace:
+            continue  # at the top or in the ANTLER block: no one asks for its key
+        stripped = text.lstrip()
+        if stripped.startswith("/*"):
+            what, fix = "`/*` does not start a comment in a .moos file", "use `//` on each line"
+        elif stripped.startswith("#"):
+            what, fix = "`#` does not start a comment in a .moos file", "use `//`"
         else:
-            yield ctx.at_line(
-                line,
-                "a single `/` does not start a comment: MOOS reads this line (use `//`)",
-            )
+            what, fix = "a single `/` does not start a comment", "use `//`"
+        if brace:
+            does = "MOOS reads its brace as text, not as one that opens or closes a block"
+        else:
+            does = f"MOOS hands this line to `{app}` as a parameter"
+        yield ctx.at_line(line, f"{what}: {does} ({fix})")
 
 
 def _text_format_lines(moos) -> set[int]:
@@ -87,11 +97,31 @@ def _text_format_lines(moos) -> set[int]:
     return out
 
 
+def _read_by_apps(moos) -> dict[int, str]:
+    """The ids of the lines inside the blocks MOOS hands to an app, with the block's name:
+    a block under its header (``{`` on the line after it), ANTLER's aside (pAntler reads
+    only its Run lines and settings by name); an unclosed block runs to the end of the
+    file."""
+    out: dict[int, str] = {}
+    index = {id(line): i for i, line in enumerate(moos.lines)}
+    for b in moos.blocks:
+        if b.header is None or b.open is None or b.brace_on_header or b.lname == "antler":
+            continue
+        start = index.get(id(b.open))
+        end = index.get(id(b.close)) if b.close is not None else len(moos.lines) - 1
+        if start is not None and end is not None:
+            out.update((id(line), b.name) for line in moos.lines[start + 1 : end])
+    return out
+
+
+def _before_comment(text: str) -> str:
+    """The line as MOOS keeps it: up to its ``//``, unless a quote comes first."""
+    cut = text.find("//")
+    return text[:cut] if cut >= 0 and '"' not in text[:cut] else text
+
+
 def _kept(text: str) -> bool:
     """Whether MOOS keeps the line: a line without ``=``, ``[``, ``]`` or a brace before
     its ``//`` is dropped unread, like a comment (``#//Run = pFoo``: MOOS cuts a line at
     ``//``, unless a quote comes first, MOOSFileReader::GetNextValidLine)."""
-    cut = text.find("//")
-    if cut >= 0 and '"' not in text[:cut]:
-        text = text[:cut]
-    return any(c in text for c in "=[]{}")
+    return any(c in _before_comment(text) for c in "=[]{}")

@@ -23,10 +23,10 @@ still shadows the real one.
 ## How to fix
 Restore the header, or delete the whole block.
 
-A header hidden behind something MOOS does not take for a comment
-(`#ProcessConfig = pLogger`, `/*ProcessConfig = pLogger`: `.moos` files have no
-`/* */` comments) is reported once, by not-a-comment (R007), when that rule is
-enabled: the block below it is then not reported again.
+A block under a header hidden behind something MOOS does not take for a
+comment (`#ProcessConfig = pLogger`, `/*ProcessConfig = pLogger`: `.moos` files
+have no `/* */` comments) is not reported: MOOS reads neither the header as one
+nor the block, which is what its writer meant by hiding the header.
 
 ## Options
 None.
@@ -44,13 +44,12 @@ def check(ctx):
     orphans = ctx.moos.orphan_blocks
     if not orphans:
         return
-    r007 = ctx.runs("R007")
     lines = ctx.moos.lines
     index = {id(line): i for i, line in enumerate(lines)}
     for block in orphans:
         at = index.get(id(block.open))
-        if r007 and _hidden_header(lines, at):
-            continue  # not-a-comment reports the header line
+        if _hidden_header(lines, at):
+            continue  # `#ProcessConfig = pX`: the block is switched off, as its writer meant
         message = "block without a `ProcessConfig = NAME` header: no app reads it"
         if _behavior_header(lines, at):
             message += (
