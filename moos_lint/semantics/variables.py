@@ -564,6 +564,28 @@ SUBSCRIBED_AS: dict[tuple[str, str], tuple[str, ...]] = {
 }
 
 
+#: ``bridge = src=X_$V, alias=X``: the ``$V`` of a uFldShoreBroker bridge
+_SHORE_BRIDGE_V = re.compile(r"src\s*=\s*([A-Za-z0-9_]+_)\$V\b")
+
+
+def upper_vehicle_prefixes(mf: MoosFile) -> frozenset[str]:
+    """The prefixes ``X_`` of the mission's uFldShoreBroker bridges that it reads with the
+    vehicle's name upper-cased: ``qbridge = X`` bridges ``X_$V``, and the broker replaces
+    ``$V`` with ``toupper(community)`` (``$v`` keeps the name as it is) (ShoreBroker.cpp:
+    546-547, 644-646). A name ``X_abe`` of such a mission is never bridged: the broker
+    reads ``X_ABE``."""
+    out: set[str] = set()
+    for block in mf.blocks:
+        if app_of(block.name) != "ufldshorebroker":
+            continue
+        for p in block.params:
+            if p.lkey == "qbridge":
+                out.update(f"{v.strip()}_" for v in p.value.split(",") if v.strip())
+            elif p.lkey == "bridge":
+                out.update(m.group(1) for m in _SHORE_BRIDGE_V.finditer(p.value))
+    return frozenset(out)
+
+
 #: pEchoVar ``flip:N = source_variable = X`` / ``flip:N = dest_variable = Y``: a flipper
 #: reads X and posts Y (EchoVar.cpp:300-342)
 _FLIP = keyed({"source_variable": SUBSCRIBE, "dest_variable": PUBLISH})

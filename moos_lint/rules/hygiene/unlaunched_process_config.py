@@ -103,11 +103,13 @@ MOOS-IvP caveats, deliberately not reported:
   includes the fragment launches it (the block is read there, and deleting it
   would break that mission) or has its Run line commented out (switched off
   there on purpose);
-- a block that three or more missions of the lint run configure while none
-  launches it, not even in a commented-out Run line: the project starts that
-  program another way (a tool started by hand, `iKST targ_alpha.moos`), or the
-  missions pick from a shared set of configurations; two copies of a mission
-  are no such sign, and their block is reported;
+- a block of a program that is not one of MOOS's or MOOS-IvP's, which three or
+  more missions of the lint run configure while none launches it, not even in a
+  commented-out Run line: the project starts that program another way (a tool
+  started by hand, `iKST targ_alpha.moos`), or the missions pick from a shared
+  set of configurations; two copies of a mission are no such sign, and their
+  block is reported, nor is a stock app's (the catalogue knows which of those
+  are started by hand);
 - a block whose name holds, between underscores, the stem of a launched script
   moos-lint cannot read (`heron_realtime_reachability` for
   `Run = ../falcon/heron/realtime_reachability.py`): such a script connects
@@ -124,7 +126,7 @@ from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
-from moos_lint.semantics.catalogue import catalogue_for
+from moos_lint.semantics.catalogue import catalogue_for, stock
 
 #: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS,
 #: but a Run line its author meant to switch off all the same (pAntler launches only the
@@ -284,7 +286,11 @@ def _started_elsewhere(run, lname: str, cat) -> bool:
     """Whether block ``lname`` is configured by several missions of the run and launched by
     none of them, not even in a commented-out Run line: a tool the project starts another
     way (by hand in a terminal, `iKST targ.moos`; from a script outside the missions), or a
-    shared set of configurations the missions pick from. The block is kept on purpose."""
+    shared set of configurations the missions pick from. The block is kept on purpose.
+    Not for an app of MOOS or MOOS-IvP: the catalogue knows which of those are started by
+    hand, and the others are launched by pAntler."""
+    if lname in stock().apps or lname in stock().programs:
+        return False
     configured, launched, macros = per_run(
         run, "blocks-across-missions", lambda units: _across(units, cat)
     )

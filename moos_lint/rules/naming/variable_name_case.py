@@ -45,7 +45,10 @@ vehicle of the mission's folder, as that vehicle is named: its community
 or the `VNAME` a launch script of the folder sets (`VNAME1="henry"` for
 `RETURN_henry`). Such a name is one vehicle's copy of a variable, and the other
 end writes it the same way; unless the mission publishes it in upper case
-(`ALPHA_REPORT`), when the name as written reads nothing and is reported.
+(`ALPHA_REPORT`), or its uFldShoreBroker bridges it in upper case (`qbridge =
+DEPLOY` bridges `DEPLOY_$V`, and the broker puts the community upper-cased in
+place of `$V`, ShoreBroker.cpp:546, 644-646: `DEPLOY_abe` is never bridged),
+when the name as written reads nothing and is reported, saying so.
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
 more than 5000 variable names they configure. Two kinds of exceptions
@@ -107,7 +110,7 @@ from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.frontends.nsplug import derived
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
-from moos_lint.semantics.variables import bare_name, unit_variables
+from moos_lint.semantics.variables import bare_name, unit_variables, upper_vehicle_prefixes
 
 _UPPER = re.compile(r"[A-Z0-9_]*")
 _UPPER_WILD = re.compile(r"[A-Z0-9_*?]*")
@@ -128,6 +131,7 @@ def check(ctx):
     allow = [str(a) for a in ctx.options.get("allow", [])]
     seen: set[tuple[int, str]] = set()
     found: dict[str, list[tuple]] = {}  # name -> (ref, message, subject) at each place
+    vehicles: frozenset[str] | None = None  # the folder's vehicles, read when first needed
     for ref in unit_variables(ctx.moos, ctx.bhv):
         bare = bare_name(ref.name)
         if bare is None:
@@ -141,7 +145,9 @@ def check(ctx):
             continue
         if _built_by_app(ctx, bare) or _built_by_macro(ctx, bare):
             continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
-        if _named_for_vehicle(ctx, bare):
+        if vehicles is None:
+            vehicles = _vehicles_beside(ctx)
+        if vehicles and _named_for_vehicle(ctx, bare, vehicles):
             continue  # `henry_REFUEL_START`: one vehicle's copy of a variable, as it is named
         where = f"{ref.app} `{ref.param}`"
         if not ref.wildcard and _UPPER_WILD.fullmatch(bare):
@@ -151,7 +157,7 @@ def check(ctx):
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
-            message += _posted_in_upper_case(ctx, ref.name)
+            message += _posted_in_upper_case(ctx, ref.name) or _bridged_in_upper_case(ctx, ref.name)
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
         seen.add((ref.span.line, ref.name))
         found.setdefault(ref.name, []).append((ref, message, subject))
@@ -210,24 +216,46 @@ def _macro_ended(lines) -> frozenset[str]:
     return frozenset(m.group(1) for line in lines for m in _MACRO_SUFFIX.finditer(line.raw))
 
 
-def _named_for_vehicle(ctx, name: str) -> bool:
-    """Whether ``name`` is an upper-case name joined to the name of a vehicle of the
-    mission's folder, as that vehicle is named (``henry_REFUEL_START``,
-    ``RETURN_aux``): its community, or what the folder's launch scripts give ``VNAME``.
-    Unless the mission publishes it in upper case (a consumer that upper-cases the
-    vehicle's name, as uFldShoreBroker's ``DEPLOY_<VNAME>`` does, never sees it)."""
-    vehicles = _vehicles_beside(ctx)
-    if not vehicles:
-        return False
+def _named_for_vehicle(ctx, name: str, vehicles: frozenset[str]) -> bool:
+    """Whether ``name`` is an upper-case name joined to the name of one of ``vehicles``
+    (the vehicles of the mission's folder, :func:`_vehicles_beside`) as that vehicle is
+    named (``henry_REFUEL_START``, ``RETURN_aux``). Not when the mission publishes the
+    name in upper case, or its uFldShoreBroker bridges it so (``DEPLOY_<VNAME>``): the
+    name as written then reads nothing."""
     for i, ch in enumerate(name):
         if ch != "_":
             continue
         head, tail = name[:i], name[i + 1 :]
-        if (head in vehicles and _UPPER.fullmatch(tail)) or (
-            tail in vehicles and _UPPER.fullmatch(head)
-        ):
+        if head in vehicles and _UPPER.fullmatch(tail):
+            return not _posted_in_upper_case(ctx, name)
+        if tail in vehicles and _UPPER.fullmatch(head):
+            if name[: i + 1] in _upper_prefixes(ctx):
+                return False  # uFldShoreBroker bridges `DEPLOY_ABE`, not `DEPLOY_abe`
             return not _posted_in_upper_case(ctx, name)
     return False
+
+
+def _bridged_in_upper_case(ctx, name: str) -> str:
+    """In a mission with a uFldShoreBroker: the name it bridges instead, for a name of one
+    of its ``qbridge`` prefixes with a vehicle's name in another case (``DEPLOY_abe``)."""
+    if ctx.moos is None or not ctx.moos.is_mission:
+        return ""
+    for prefix in _upper_prefixes(ctx):
+        rest = name[len(prefix) :]
+        if name.startswith(prefix) and rest and rest != rest.upper() and "$" not in rest:
+            return (
+                f": uFldShoreBroker bridges `{prefix}{rest.upper()}`, upper-casing the "
+                "vehicle's name, and MOOS names are case-sensitive"
+            )
+    return ""
+
+
+def _upper_prefixes(ctx) -> frozenset[str]:
+    """:func:`upper_vehicle_prefixes` of the unit's mission, worked out once per file."""
+    moos = ctx.moos
+    if moos is None:
+        return frozenset()
+    return derived(moos.expansion, "upper-vehicle-prefixes", lambda: upper_vehicle_prefixes(moos))
 
 
 def _vehicles_beside(ctx) -> frozenset[str]:
