@@ -157,7 +157,9 @@ def check(ctx):
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
-            message += _posted_in_upper_case(ctx, ref.name) or _bridged_in_upper_case(ctx, ref.name)
+            message += _posted_in_upper_case(ctx, ref.name) or _bridged_in_upper_case(
+                ctx, ref.name, vehicles or frozenset()
+            )
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
         seen.add((ref.span.line, ref.name))
         found.setdefault(ref.name, []).append((ref, message, subject))
@@ -235,14 +237,15 @@ def _named_for_vehicle(ctx, name: str, vehicles: frozenset[str]) -> bool:
     return False
 
 
-def _bridged_in_upper_case(ctx, name: str) -> str:
+def _bridged_in_upper_case(ctx, name: str, vehicles: frozenset[str]) -> str:
     """In a mission with a uFldShoreBroker: the name it bridges instead, for a name of one
-    of its ``qbridge`` prefixes with a vehicle's name in another case (``DEPLOY_abe``)."""
-    if ctx.moos is None or not ctx.moos.is_mission:
+    of its ``qbridge`` prefixes joined to one of ``vehicles`` (the vehicles of the
+    mission's folder) in another case (``DEPLOY_abe``)."""
+    if ctx.moos is None or not ctx.moos.is_mission or not vehicles:
         return ""
     for prefix in _upper_prefixes(ctx):
         rest = name[len(prefix) :]
-        if name.startswith(prefix) and rest and rest != rest.upper() and "$" not in rest:
+        if name.startswith(prefix) and rest in vehicles:
             return (
                 f": uFldShoreBroker bridges `{prefix}{rest.upper()}`, upper-casing the "
                 "vehicle's name, and MOOS names are case-sensitive"
