@@ -15,7 +15,12 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Span
 from moos_lint.frontends.cpp import branches
-from moos_lint.frontends.cpp.facts import GEODESY_ARGUMENTS
+from moos_lint.frontends.cpp.facts import (
+    DEG2RAD_NAME,
+    GEODESY_ARGUMENTS,
+    HELPERS,
+    INVERSE_TRIG,
+)
 from moos_lint.frontends.cpp.model import (
     Assignment,
     ConfigParam,
@@ -37,6 +42,7 @@ from moos_lint.frontends.cpp.model import (
 from moos_lint.frontends.cpp.names import (
     MAIL_COMPARES,
     WORD_BYTES,
+    callee_name,
     function_declarator,
     key_literal,
     mail_key_of,
@@ -211,17 +217,14 @@ def strip_parens(n: Any) -> Any:
 def _radians_call(n: Any) -> bool:
     """Whether ``n`` is a call that gives radians whatever its argument: an inverse
     trigonometric function or a conversion to radians (``MOOSDeg2Rad(h)``)."""
-    from moos_lint.frontends.cpp import facts
-    from moos_lint.frontends.cpp.names import callee_name
-
     n = strip_parens(n)
     if n is None or n.type != "call_expression":
         return False
     name = re.sub(r"^std::", "", callee_name(n.child_by_field_name("function")))
-    if name.rstrip("f") in facts.INVERSE_TRIG:
+    if name.rstrip("f") in INVERSE_TRIG:
         return True
-    helper = facts.HELPERS.get(name)
-    return (helper is not None and helper[1] == "rad") or bool(re.match(facts.DEG2RAD_NAME, name))
+    helper = HELPERS.get(name)
+    return (helper is not None and helper[1] == "rad") or bool(re.match(DEG2RAD_NAME, name))
 
 
 def nodes_under(n: Any) -> Iterator[Any]:
@@ -1293,10 +1296,10 @@ class Extractor:
         deg = self.evaluator.in_degrees(
             turn, f"{TURN_NAMES[turn][0]} in degrees, {TURN_NAMES[turn][1]} in radians"
         )
-        lv, rv = (av, deg) if angle.start_byte < number.start_byte else (deg, av)
-        left, right = (angle, number) if angle.start_byte < number.start_byte else (number, angle)
-        a, b = self.value(left), self.value(right)
-        a.abstract, b.abstract = lv, rv
+        a, b = self.value(angle), self.value(number)
+        a.abstract, b.abstract = av, deg
+        if number.start_byte < angle.start_byte:  # `90 - atan2(...)`: as written
+            a, b = b, a
         op = text(node.child_by_field_name("operator"))
         self.out.unit_mixes.append(UnitMix(op, a, b, self.pf.spans.of(node), self._fn_of(node)))
 

@@ -167,7 +167,7 @@ def check(ctx):
         else:
             for name in reads[id(run)]:
                 by_name.setdefault(name.lower(), []).append(run)
-    commented: tuple[dict[str, str], dict[str, str]] | None = None
+    switched = not ctx.options.get("commented-runs")  # a commented Run line switches off
     scripts: tuple[frozenset[str], dict[str, str]] | None = None  # what launched scripts quote
     patched: frozenset[str] | None = None  # what the nspatch patches beside it launch
     blockless: list[str] | None = None  # what launched processes read that has no block
@@ -184,7 +184,6 @@ def check(ctx):
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
-        switched = not ctx.options.get("commented-runs")
         if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat, switched):
             continue  # a shared fragment: another mission that includes it launches it
         if switched and _started_elsewhere(ctx.run, block.lname, cat):
@@ -203,11 +202,9 @@ def check(ctx):
         advice = "rename the block"
         near = None
         if why is None:
-            if commented is None:
-                commented = _commented_runs(moos, cat, ctx.path)
-            lines, unknown = commented
+            lines, unknown = _commented(ctx.run, moos, cat, ctx.path)
             hint = lines.get(block.lname) or _extends(block.lname, unknown)
-            if hint and not ctx.options.get("commented-runs"):
+            if hint and switched:
                 continue  # switched off on purpose
             why = f"its Run line is commented out at {hint}" if hint else "no Run line starts it"
             advice = "launch it or delete the block"
@@ -255,11 +252,11 @@ def _launched_by_includer(run, block, cat, switched: bool) -> bool:
     a process of its name (or, ``switched``, has its Run line commented out: switched off
     there on purpose)."""
     key = "switched-by-fragment" if switched else "names-by-fragment"
-    names = per_run(run, key, lambda units: _names_by_fragment(units, cat, switched))
+    names = per_run(run, key, lambda units: _names_by_fragment(run, units, cat, switched))
     return any(names_match(name, block.name) for name in names.get(block.header.path, ()))
 
 
-def _names_by_fragment(units, cat, switched: bool) -> dict[str, set[str]]:
+def _names_by_fragment(run, units, cat, switched: bool) -> dict[str, set[str]]:
     """Every included file of the missions -> the process names (names of the blocks
     their Run lines read) launched by the missions that include it, with ``switched``
     those of their commented-out Run lines too."""
@@ -271,7 +268,7 @@ def _names_by_fragment(units, cat, switched: bool) -> dict[str, set[str]]:
         launched = {name for r in moos.runs for name in cat.block_names(r)}
         included = [path for path in unit.expansion.sources if path != unit.path]
         if switched and included:
-            launched |= set(_commented_runs(moos, cat, unit.path)[0])
+            launched |= set(_commented(run, moos, cat, unit.path)[0])
         for path in included:
             found.setdefault(path, set()).update(launched)
     return found
@@ -292,14 +289,14 @@ def _started_elsewhere(run, lname: str, cat) -> bool:
     if lname in stock().apps or lname in stock().programs:
         return False
     configured, launched, macros = per_run(
-        run, "blocks-across-missions", lambda units: _across(units, cat)
+        run, "blocks-across-missions", lambda units: _across(run, units, cat)
     )
     if configured.get(lname, 0) < _CONFIGURED_ACROSS or lname in launched:
         return False
     return not any(names_match(name, lname) for name in macros)
 
 
-def _across(units, cat) -> tuple[dict[str, int], set[str], set[str]]:
+def _across(run, units, cat) -> tuple[dict[str, int], set[str], set[str]]:
     """How many missions of the run configure each block (by lower-case name), the
     lower-case names the missions launch or have commented out, and the launched names
     that hold a macro (any name may match them)."""
@@ -316,7 +313,7 @@ def _across(units, cat) -> tuple[dict[str, int], set[str], set[str]]:
             if has_macro(r.name):
                 macros.add(r.name)
             launched.update(name.lower() for name in cat.block_names(r))
-        launched.update(_commented_runs(moos, cat, unit.path)[0])
+        launched.update(_commented(run, moos, cat, unit.path)[0])
     return configured, launched, macros
 
 
@@ -355,6 +352,18 @@ def _holds(name: str, unread: dict[str, str]) -> str | None:
         if re.search(rf"(?:^|_){re.escape(stem)}(?:_|$)", name):
             return program
     return None
+
+
+def _commented(run, moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
+    """:func:`_commented_runs` of a mission, worked out once per run (the check of the
+    mission and the facts gathered across the missions both ask for it)."""
+    memo: dict[str, tuple[dict[str, str], dict[str, str]]] = per_run(
+        run, "commented-runs", lambda units: {}
+    )
+    found = memo.get(mission)
+    if found is None:
+        found = memo[mission] = _commented_runs(moos, cat, mission)
+    return found
 
 
 def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:

@@ -157,9 +157,14 @@ def check(ctx):
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
-            message += _posted_in_upper_case(ctx, ref.name) or _bridged_in_upper_case(
-                ctx, ref.name, vehicles or frozenset()
-            )
+            reason = _posted_in_upper_case(ctx, ref.name)
+            bridged = None if reason else _bridged_as(ctx, ref.name, vehicles or frozenset())
+            if bridged:
+                reason = (
+                    f": uFldShoreBroker bridges `{bridged}`, upper-casing the vehicle's name, "
+                    "and MOOS names are case-sensitive"
+                )
+            message += reason
         subject = Subject(variable=ref.name, app=ref.app, key=ref.param)
         seen.add((ref.span.line, ref.name))
         found.setdefault(ref.name, []).append((ref, message, subject))
@@ -228,37 +233,28 @@ def _named_for_vehicle(ctx, name: str, vehicles: frozenset[str]) -> bool:
         if ch != "_":
             continue
         head, tail = name[:i], name[i + 1 :]
-        if head in vehicles and _UPPER.fullmatch(tail):
-            return not _posted_in_upper_case(ctx, name)
-        if tail in vehicles and _UPPER.fullmatch(head):
-            if name[: i + 1] in _upper_prefixes(ctx):
-                return False  # uFldShoreBroker bridges `DEPLOY_ABE`, not `DEPLOY_abe`
-            return not _posted_in_upper_case(ctx, name)
+        if (head in vehicles and _UPPER.fullmatch(tail)) or (
+            tail in vehicles and _UPPER.fullmatch(head)
+        ):
+            return not (_bridged_as(ctx, name, vehicles) or _posted_in_upper_case(ctx, name))
     return False
 
 
-def _bridged_in_upper_case(ctx, name: str, vehicles: frozenset[str]) -> str:
-    """In a mission with a uFldShoreBroker: the name it bridges instead, for a name of one
-    of its ``qbridge`` prefixes joined to one of ``vehicles`` (the vehicles of the
-    mission's folder) in another case (``DEPLOY_abe``)."""
-    if ctx.moos is None or not ctx.moos.is_mission or not vehicles:
-        return ""
-    for prefix in _upper_prefixes(ctx):
+def _bridged_as(ctx, name: str, vehicles: frozenset[str]) -> str | None:
+    """The name the unit's uFldShoreBroker bridges instead of ``name``, a name of one of its
+    upper-casing prefixes (:func:`upper_vehicle_prefixes`) joined to one of ``vehicles`` in
+    another case: `DEPLOY_ABE` for `DEPLOY_abe`."""
+    moos = ctx.moos
+    if moos is None or not vehicles:
+        return None
+    prefixes = derived(
+        moos.expansion, "upper-vehicle-prefixes", lambda: upper_vehicle_prefixes(moos)
+    )
+    for prefix in prefixes:
         rest = name[len(prefix) :]
         if name.startswith(prefix) and rest in vehicles:
-            return (
-                f": uFldShoreBroker bridges `{prefix}{rest.upper()}`, upper-casing the "
-                "vehicle's name, and MOOS names are case-sensitive"
-            )
-    return ""
-
-
-def _upper_prefixes(ctx) -> frozenset[str]:
-    """:func:`upper_vehicle_prefixes` of the unit's mission, worked out once per file."""
-    moos = ctx.moos
-    if moos is None:
-        return frozenset()
-    return derived(moos.expansion, "upper-vehicle-prefixes", lambda: upper_vehicle_prefixes(moos))
+            return prefix + rest.upper()
+    return None
 
 
 def _vehicles_beside(ctx) -> frozenset[str]:
