@@ -115,3 +115,38 @@ def test_bare_name():
     assert bare_name("RETURN_$[UP_VNAME_CLOSEST]") == "RETURN_"
     assert bare_name("NEAR_MISS_$UP_V1") == "NEAR_MISS_"
     assert bare_name("NODE_REPORT_$(VNAME)") is None
+
+
+def test_test_code_is_left_alone_unless_asked(tmp_path):
+    (tmp_path / "tests").mkdir()
+    assert _lint(tmp_path, "tests/m.moos", MISSION, "N001") == []
+    found = _lint(tmp_path, "tests/m.moos", MISSION, "N001", {"check-tests": True})
+    assert [line for line, _ in found] == [4]
+    assert [line for line, _ in _lint(tmp_path, "m.moos", MISSION, "N001")] == [4]
+
+
+def test_test_code_is_told_by_its_folder_or_name():
+    from moos_lint.files.test_code import is_test_code
+
+    root = "/r"
+    for path in (
+        "MOOS/Core/libMOOS/testing/QueueTest.cpp",
+        "src/pShare/pshare_test_scripts/pShareTest.moos",
+        "tests/alpha.moos",
+        "src/test/pvehicle/vehicle.h",
+    ):
+        assert is_test_code(f"{root}/{path}", root), path
+    for path in (
+        "missions/alpha/alpha.moos",
+        "missions/euRathlon/test_waypoints/alpha.moos",
+        "src/pContest/Contest.cpp",
+        "missions/latest/latest.moos",
+        "missions/testing.moos",
+        # named for a test, but by its own name: most often a mission run in the field
+        "missions/sonar_test/sonar_test.moos",
+        "missions/IMUTest/IMUTest.moos",
+        "src/iDVL/test_nav_stub.moos",
+    ):
+        assert not is_test_code(f"{root}/{path}", root), path
+    # only the folders below the project's root count
+    assert not is_test_code("/home/tests/project/missions/alpha.moos", "/home/tests/project")

@@ -424,6 +424,14 @@ def alternative_starts(text: str, at: int = 0) -> set[int]:
     return found
 
 
+def one_alternative(ref: VarRef) -> bool:
+    """Whether the condition of ``ref`` names it only on one side of an ``or``."""
+    # (the helm reads `,` as `=`: same offsets; both readers cut a line at its `//`)
+    text = ref.line.text.split("//", 1)[0].replace(",", "=")
+    start = text.find("=") + 1
+    return start > 0 and ref.start in alternative_starts(text[start:], start)
+
+
 def condition(commas_are_equals: bool = False) -> Syntax:
     """A lib_logic condition (the helm turns ``,`` into ``=`` before parsing)."""
 

@@ -110,7 +110,7 @@ from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
 from moos_lint.semantics.shares import input_routes, received
-from moos_lint.semantics.variables import alternative_starts, bare_name
+from moos_lint.semantics.variables import bare_name, one_alternative
 
 
 def _gaps(model, unknown_kinds: list[str]) -> list[str]:
@@ -170,7 +170,7 @@ def check(ctx):
         if model.published_by(name) or name in posted:
             continue
         meant = None
-        if _one_alternative(ref):
+        if one_alternative(ref):
             # one side of an `or`: the condition may hold without it, so it is not waited
             # for; a misspelling of a posted name still leaves that side dead
             meant = _misspelt(name, model)
@@ -254,14 +254,6 @@ def _misspelt(name: str, model) -> str | None:
     if len(name) <= 4:
         return None
     return misspelling_of(name, model.publishers, MAX_TYPOS)
-
-
-def _one_alternative(ref) -> bool:
-    """Whether the condition names ``ref`` only on one side of an ``or``."""
-    # (the helm reads `,` as `=`: same offsets; both readers cut a line at its `//`)
-    text = ref.line.text.split("//", 1)[0].replace(",", "=")
-    start = text.find("=") + 1
-    return start > 0 and ref.start in alternative_starts(text[start:], start)
 
 
 def _named_after(name: str, prefixes: set[str]) -> bool:

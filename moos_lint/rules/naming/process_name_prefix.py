@@ -58,8 +58,8 @@ tells one kind from another. MOOS-IvP follows it everywhere: every program
 launched in its missions has a prefix except `MOOSDB`, and its aliases keep
 the program's prefix (`uTimerScript_PING`, `pXRelay_APPLES`,
 `--alias=pHelmIvP_Standby`). The only names without one are the aliases
-`ShareA` / `ShareB` of a pShare test script in MOOS core, and they are
-reported.
+`ShareA` / `ShareB` of a pShare test script in MOOS core and the MOOSDB test
+program `app_test`: test code, which the rule leaves alone (`check-tests`).
 
 MOOS-IvP departs from the 2007 document in *what* the prefixes mean
 (`u` apps such as uSimMarine run during missions, `p` apps such as pLogger and
@@ -88,12 +88,19 @@ Rename the program, or choose an alias that keeps the program's prefix
 - `check-aliases` (bool, default `true`): also check `~` aliases,
   `--alias=` names and the `ProcessConfig` blocks of aliases. With `false`,
   only program names and blocks that are not an alias are checked.
+- `check-tests` (bool, default `false`): also check test programs and test
+  missions: files in a `test`, `tests` or `testing` folder (or `testcases`,
+  `unittests`, a `*_test_scripts` folder). Their names are picked to exercise code:
+  core MOOS builds a MOOSDB test as `app_test` and its pShare test mission
+  launches `pShare ~ ShareA`. A file named for a test outside such a folder
+  (`sonar_test.moos`) is most often a mission run in the field, and is checked.
 """
 
 from __future__ import annotations
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.suffixes import script_stem
+from moos_lint.files.test_code import is_test_code
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -115,9 +122,13 @@ def conforms(name: str, exempt: set[str]) -> bool:
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.CPP),
-    options={"exempt": list(INFRASTRUCTURE), "check-aliases": True},
+    options={"exempt": list(INFRASTRUCTURE), "check-aliases": True, "check-tests": False},
 )
 def check(ctx):
+    if not ctx.options.get("check-tests", False) and is_test_code(
+        ctx.path, ctx.settings.project_root
+    ):
+        return
     if ctx.unit.kind is Kind.CPP:
         yield from cpp_check(ctx)
         return

@@ -50,12 +50,17 @@ DEPLOY` bridges `DEPLOY_$V`, and the broker puts the community upper-cased in
 place of `$V`, ShoreBroker.cpp:546, 644-646: `DEPLOY_abe` is never bridged),
 when the name as written reads nothing and is reported, saying so.
 
+Nor is a name on one side of an `or` in a condition that nothing of the run
+posts, as written or in upper case (no mission, behavior file, catalogued app
+or behavior, nor an app of the linted C++): `condition = ((DEPLOY = true) or
+(alpha = one)) or (bravo = two)`, as MOOS-IvP's `s8_hotel` mission writes it, is a
+never-true placeholder beside the side that holds, whose case changes
+nothing. `(Deploy = true) or (RETURN = true)` beside a button that posts
+`DEPLOY` is still reported, and says who posts `DEPLOY`.
+
 MOOS-IvP's own missions follow the convention in all but a handful of the
-more than 5000 variable names they configure. Two kinds of exceptions
-remain, and both are reported:
-- A few missions post the condition `(alpha = one) or (bravo = two)` as a
-  never-true placeholder; `alpha` and `bravo` are still variables the helm
-  subscribes to.
+more than 5000 variable names they configure. One exception remains, and is
+reported:
 - `button_seven = REFINE:N # CONTACT_INFO_ALL = name=avdcol # use_refinery=false`
   (`m2_berta`): pMarineViewer splits button values on `#`, so this button
   posts a second variable named `use_refinery` instead of one
@@ -98,6 +103,13 @@ old name). If a value was meant to be a value, quote it or fix its separators.
 ## Options
 - `allow` (list of strings, default `[]`): names (shell-style globs) that may
   be in any case, for apps outside your control.
+- `check-tests` (bool, default `false`): also check test programs and test
+  missions: files in a `test`, `tests` or `testing` folder (or `testcases`,
+  `unittests`, a `*_test_scripts` folder). Their names are picked to exercise
+  code: core MOOS's `testing/QueueTest.cpp` registers for `la`, `di` and `da`
+  because its help text tells the tester to post them. A file named for a test
+  outside such a folder (`sonar_test.moos`) is most often a mission run in the
+  field, and is checked.
 """
 
 from __future__ import annotations
@@ -107,10 +119,19 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity, Subject
+from moos_lint.files.test_code import is_test_code
 from moos_lint.frontends.nsplug import derived
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
-from moos_lint.semantics.variables import bare_name, unit_variables, upper_vehicle_prefixes
+from moos_lint.semantics.variables import (
+    PUBLISH,
+    bare_name,
+    bhv_variables,
+    moos_variables,
+    one_alternative,
+    unit_variables,
+    upper_vehicle_prefixes,
+)
 
 _UPPER = re.compile(r"[A-Z0-9_]*")
 _UPPER_WILD = re.compile(r"[A-Z0-9_*?]*")
@@ -122,9 +143,13 @@ _UPPER_WILD = re.compile(r"[A-Z0-9_*?]*")
     severity=Severity.WARNING,
     scope=Scope.FILE,
     kinds=(Kind.MOOS, Kind.BHV, Kind.CPP),
-    options={"allow": []},
+    options={"allow": [], "check-tests": False},
 )
 def check(ctx):
+    if not ctx.options.get("check-tests", False) and is_test_code(
+        ctx.path, ctx.settings.project_root
+    ):
+        return
     if ctx.unit.kind is Kind.CPP:
         yield from cpp_check(ctx)
         return
@@ -145,6 +170,8 @@ def check(ctx):
             continue
         if _built_by_app(ctx, bare) or _built_by_macro(ctx, bare):
             continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
+        if ref.param.endswith("condition") and one_alternative(ref) and not _posted(ctx, bare):
+            continue  # `(DEPLOY = true) or (alpha = one)`: an alternative nothing posts
         if vehicles is None:
             vehicles = _vehicles_beside(ctx)
         if vehicles and _named_for_vehicle(ctx, bare, vehicles):
@@ -202,6 +229,28 @@ def _built_by_app(ctx, name: str) -> bool:
 
 #: an upper-case prefix ended by an nsplug macro or a run-time placeholder, as written
 _MACRO_SUFFIX = re.compile(r"\b([A-Z][A-Z0-9_]*_)[$%][({\[]")
+
+
+def _posted(ctx, name: str) -> bool:
+    """Whether anything of the run posts ``name``, as written or in upper case: a
+    mission's or behavior file's configuration, or an app or behavior of the catalogue
+    (MOOS-IvP's and the repository's own)."""
+
+    def gather(units) -> frozenset[str]:
+        from moos_lint.semantics.catalogue import catalogue_for
+
+        cat = catalogue_for(ctx.run)
+        found = {v for a in cat.apps.values() for v in a.publishes}
+        found |= {v for b in cat.behaviors.values() for v in b.posts}
+        for unit in units:
+            if unit.moos is not None:
+                found.update(r.name for r in moos_variables(unit.moos) if r.role == PUBLISH)
+            if unit.bhv is not None:
+                found.update(r.name for r in bhv_variables(unit.bhv) if r.role == PUBLISH)
+        return frozenset(found)
+
+    posted = per_run(ctx.run, "posted-names", gather)
+    return name in posted or name.upper() in posted
 
 
 def _built_by_macro(ctx, name: str) -> bool:
