@@ -110,6 +110,13 @@ MOOS-IvP caveats, deliberately not reported:
   set of configurations; two copies of a mission are no such sign, and their
   block is reported, nor is a stock app's (the catalogue knows which of those
   are started by hand);
+- a block that reaches the mission through a file of `#include` lines alone
+  (three or more, and comments), other than the mission itself: a library of
+  per-app configuration files that every mission includes whole
+  (`#include "common/includes.moos"`, which includes `processes/pTrustGPS.moos`,
+  `processes/pMarinePID.moos`, ...), each mission launching the apps it needs. The
+  mission chose the library, not the block. A fragment the mission (or a plug
+  file that also holds blocks) includes by itself is still judged;
 - a block whose name holds, between underscores, the stem of a launched script
   moos-lint cannot read (`heron_realtime_reachability` for
   `Run = ../falcon/heron/realtime_reachability.py`): such a script connects
@@ -121,6 +128,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
+from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
@@ -186,6 +194,8 @@ def check(ctx):
             continue
         if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat, switched):
             continue  # a shared fragment: another mission that includes it launches it
+        if _from_library(ctx.expansion, ctx.path, block):
+            continue  # one entry of a configuration library the mission includes whole
         if switched and _started_elsewhere(ctx.run, block.lname, cat):
             continue  # configured across the project, launched by no mission: by hand
         if scripts is None:
@@ -272,6 +282,40 @@ def _names_by_fragment(run, units, cat, switched: bool) -> dict[str, set[str]]:
         for path in included:
             found.setdefault(path, set()).update(launched)
     return found
+
+
+#: a file of at least this many `#include` lines and nothing else is a library's index
+_LIBRARY_INCLUDES = 3
+
+
+def _from_library(exp, mission: str, block) -> bool:
+    """Whether ``block`` reaches the mission through a file of `#include` lines alone
+    (:func:`_includes_only`) other than the mission: the mission took a whole library of
+    per-app configurations (``#include "common/includes.moos"``), not this block."""
+    return any(
+        site.path != mission and _includes_only(exp, site.path) for site in block.header.chain
+    )
+
+
+def _includes_only(exp, path: str) -> bool:
+    """Whether the file at ``path`` holds at least :data:`_LIBRARY_INCLUDES` `#include`
+    lines and nothing else but comments and blank lines."""
+    source = exp.sources.get(path)
+    if source is None:
+        return False
+
+    def read() -> bool:
+        count = 0
+        for raw in source.text.splitlines():
+            text = raw.strip()
+            if not text or text.startswith("//"):
+                continue
+            if not text.startswith("#include"):
+                return False
+            count += 1
+        return count >= _LIBRARY_INCLUDES
+
+    return derived(exp, f"includes-only:{path}", read)
 
 
 #: a block that at least this many missions of the run configure, and none launches
