@@ -54,9 +54,10 @@ def test_engine_rules_on_the_corpus_match_hand_review():
     # `#BUTTON_FOUR = ...` is a live key, not a comment and not a directive.
     assert found[("ivp/missions/u6_alpha/meta_shoreside.moos", "R007")] == 1
     assert found[("ivp/missions/u6_alpha/meta_shoreside.moos", "P003")] == 0
-    # nsplug's own test file documents directives; nsplug rejects it as written.
-    assert found[("ivp/src/app_nsplug/testcases/meta_vehicle.bhv", "P004")] == 4
-    assert found[("ivp/src/app_nsplug/testcases/meta_vehicle.bhv", "P003")] == 1
+    # nsplug's own test file documents its directives in prose; nothing in it is shaped
+    # like a behavior file's line, and no helm loads it: the nsplug rules leave it alone.
+    notes = "ivp/src/app_nsplug/testcases/meta_vehicle.bhv"
+    assert [k for k in found if k[0] == notes] == []
     # No flagship mission has a structural error.
     flagship = [k for k in found if k[0].startswith("ivp/missions/s1_alpha/")]
     assert flagship == []

@@ -923,6 +923,13 @@ class Preprocessor:
             self._problem(exp, "include-not-found", here, f"included file `{target}` {src.message}")
             return None
         if tag is not None and not any("<tag>" in ln and tag_of(ln) == tag for ln in src.lines):
+            own = self.cache.get(exp.path) if here.path == exp.path else None
+            if isinstance(own, SourceFile) and any(
+                "<tag>" in ln and tag_of(ln) == tag for ln in own.lines
+            ):
+                # the top file holds that section itself, and nsplug writes every section
+                # of the top file in every mode: the block is there, the include is idle
+                return None
             self._problem(
                 exp,
                 "unknown-include-tag",

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
+from collections.abc import Iterable
 
 from moos_lint.frontends.nsplug import Expansion, Line
 from moos_lint.frontends.parsers.nodes import (
@@ -34,6 +35,18 @@ _SET = re.compile(r"^set\s+(\S+?)\s*=\s*(.*)$", re.IGNORECASE)
 
 _BHV_HEADER = re.compile(r"^\s*(?:behavior\s*=|set\s+\S+\s*=|initialize_?\s)", re.IGNORECASE)
 _PROCESS_CONFIG = re.compile(r"^\s*processconfig\s*=", re.IGNORECASE)
+
+
+#: a line shaped like one of a behavior file: a brace, a `Behavior`/`Behaviour` header,
+#: `initialize`, `set`, or `key = value`
+_SHAPED = re.compile(r"\s*(?:[{}]|behav|initiali|set\s|[\w.]+\s*=)", re.IGNORECASE)
+
+
+def shaped_like_behaviors(texts: Iterable[str]) -> bool:
+    """Whether any of the lines ``texts`` is shaped like a line of a behavior file. A
+    `.bhv` file with nothing of the kind is none (nsplug's test inputs, notes on its
+    directives): no helm loads it."""
+    return any(_SHAPED.match(text) for text in texts)
 
 
 def is_behavior_fragment(expansion: Expansion) -> bool:

@@ -8,6 +8,12 @@ file included many times at many levels), or macros that grow a line past a
 mebibyte or the file past 16 MiB. moos-lint stops reading such a file at the
 line that ran over.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug does not catch include loops: it recurses until it crashes with a
 segmentation fault, and no mission file is written. An include tree that

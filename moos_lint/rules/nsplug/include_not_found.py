@@ -27,6 +27,12 @@ names a file of the machine the mission runs on (the vehicle's own
 configuration), which the machine that lints need not have. The mission is
 then taken as incomplete, as for a macro in the path.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug stops with an error and writes no mission file, so the launch script
 fails; with `--force` in a script the old generated file is used instead.

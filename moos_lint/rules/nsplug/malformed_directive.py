@@ -4,6 +4,12 @@
 Reports `#define`, `#include`, `#ifdef` or `#ifndef` with nothing after
 it.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug stops with an error (`A #define line must have an argument`) or
 evaluates an empty condition.

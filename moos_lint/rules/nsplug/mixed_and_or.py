@@ -3,6 +3,12 @@
 ## What it does
 Reports an `#ifdef` / `#elseifdef` condition using both `||` and `&&`.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug does not support mixed conditions: it prints a warning and evaluates
 the condition as false (with `--strict` it exits).

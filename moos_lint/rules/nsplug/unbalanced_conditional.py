@@ -5,6 +5,12 @@ Reports `#else`, `#elseifdef` or `#endif` with no open `#ifdef`, a second
 `#else`, a branch after `#else`, and `#elseifdef` after `#ifndef` (which
 nsplug rejects as dangling).
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug stops with an error and writes no file.
 

@@ -3,6 +3,12 @@
 ## What it does
 Reports an `#ifdef` / `#ifndef` still open at the end of its file.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug does not report it: when the condition is false, every line after it
 is silently dropped from the generated mission, and the launch goes ahead

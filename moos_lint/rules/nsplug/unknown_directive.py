@@ -5,6 +5,12 @@ Reports lines such as `#fidef X`, `# ifdef X`, `#Include file` or
 `#elseifndef X`: nsplug recognises only `#ifdef`, `#ifndef`, `#elseifdef`,
 `#else`, `#endif`, `#include` and `#define`, spelled exactly so.
 
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
+
 ## Why is this bad?
 nsplug copies an unknown directive to the output as a normal line. The
 conditional it was meant to open or close is not there, so the wrong lines are

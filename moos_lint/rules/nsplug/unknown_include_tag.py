@@ -2,7 +2,17 @@
 
 ## What it does
 Reports `#include plugs.moos <name>` when `plugs.moos` has no
-`<tag><name>` section.
+`<tag><name>` section. Not when the file that holds the `#include` is the one
+nsplug expands and has a `<tag><name>` section itself (the block was moved into
+the mission, the include left behind): nsplug writes every section of the file
+it expands, whatever its mode (Expander.cpp, `expandFile` with no tag), so the
+block is there.
+
+Like every nsplug rule, it leaves alone a `.bhv` file in which no line, as
+written, is shaped like a behavior file's (a `Behavior` header, `initialize`,
+`set`, a brace or `key = value`): nsplug's own test inputs and notes on its
+directives (MOOS-IvP's `app_nsplug/testcases/meta_vehicle.bhv`), which no
+helm loads.
 
 ## Why is this bad?
 nsplug includes nothing and says nothing: the block the author meant to

@@ -54,11 +54,9 @@ import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.nsplug import written_for_cpp
+from moos_lint.frontends.parsers.bhv import shaped_like_behaviors
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 
-#: a line shaped like one of a behavior file: a brace, a `Behavior`/`Behaviour` header,
-#: `initialize`, `set`, or `key = value`
-_SHAPED = re.compile(r"\s*(?:[{}]|behav|initiali|set\s|[\w.]+\s*=)", re.IGNORECASE)
 #: a line that is one placeholder of a template generator: `###Path_1###`, `@X@`, `{{x}}`
 _PLACEHOLDER = re.compile(
     r"\s*(?:#{3}[A-Za-z_][\w.-]*#{3}|@[A-Za-z_][\w.-]*@|\{\{[\w.-]+\}\}|%%[A-Za-z_][\w.-]*%%)\s*"
@@ -74,8 +72,8 @@ _PLACEHOLDER = re.compile(
 )
 def check(ctx):
     bhv = ctx.bhv
-    if not (bhv.behaviors or bhv.initializes or bhv.sets) and not any(
-        _SHAPED.match(line.text) for line in bhv.lines
+    if not (bhv.behaviors or bhv.initializes or bhv.sets) and not shaped_like_behaviors(
+        line.text for line in bhv.lines
     ):
         return  # nothing shaped like a behavior file's lines: not one
     if written_for_cpp(line.text for line in bhv.lines):

@@ -25,7 +25,11 @@ Set these keys once, outside every block. To give one app a different time
 warp use its `moos_time_warp` parameter.
 
 A fragment that a mission of the run includes is judged there, where the lines
-before it are known (its own file alone would say its line comes first).
+before it are known (its own file alone would say its line comes first). A file
+that is no mission (no ANTLER block, no key outside a block) and that no mission
+of the run includes is an app's example configuration (`src/iGPS/iGPS.moos`,
+whose app reads `LatOrigin` itself): there is no mission whose apps would read
+its line, and it is left alone.
 
 ## Options
 None.
@@ -40,8 +44,11 @@ from moos_lint.rules.kit.declare import Scope, rule
 
 @rule(code="R009", name="global-key-in-block", severity=Severity.ERROR, scope=Scope.FILE)
 def check(ctx):
-    if ctx.unit.path in ctx.run.included_elsewhere and not ctx.moos.is_mission:
-        return  # a fragment: judged in the missions that include it, after their lines
+    if not ctx.moos.is_mission:
+        if ctx.unit.path in ctx.run.included_elsewhere:
+            return  # a fragment: judged in the missions that include it, after their lines
+        if not ctx.moos.globals:
+            return  # an app's example block, alone in its file: no mission to misread
     order = {id(line): i for i, line in enumerate(ctx.moos.lines)}
     first: dict[str, tuple[int, Param]] = {}  # key -> the first line MOOS finds it on
     lines: dict[str, int] = {}  # key -> how many lines set it
