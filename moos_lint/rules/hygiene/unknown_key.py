@@ -4,8 +4,10 @@
 Reports a key outside every ProcessConfig block (a "global") that no MOOS or
 MOOS-IvP program reads, and a key in the ANTLER block that pAntler does not
 read. When the key is a misspelling of a known one it says which (`did you
-mean ...?`, compared without regard to case), and when exactly one known key is
-close it offers a fix that respells the key.
+mean ...?`, compared without regard to case, three typos at most: a key a
+whole word away, `SONAR_SERIAL_PORT` beside `MODEM_SERIAL_PORT`, names another
+thing), and when exactly one known key is close it offers a fix that respells
+the key.
 
 Known globals: `ServerHost`, `ServerPort`, `Community`, `MOOSTimeWarp`,
 `LatOrigin`, `LongOrigin` (every app, the MOOSDB, pAntler); `UseMOOSComms`
@@ -108,6 +110,7 @@ from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.file_wide import BuiltKeys, built_keys, repo_globals
+from moos_lint.rules.kit.spelling import typos
 from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
 ANTLER_KEYS = [
@@ -260,6 +263,9 @@ def _judge(
         return  # one of the repository's apps reads a name it is handed: maybe this one
     if not names and where == "top-of-file" and _IDENT.fullmatch(key) and _unknown_program(ctx):
         return  # a program moos-lint cannot see may read it with GetValue
+    # a name a word apart (`SONAR_SERIAL_PORT` beside `MODEM_SERIAL_PORT`) is another
+    # device's key, not the one meant: only names a few typos away are offered
+    names = [n for n in names if typos(key, n) <= _MOST_TYPOS]
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
         return
@@ -279,6 +285,10 @@ def _judge(
         line=p.line,
         fix=fix,
     )
+
+
+#: the most typos between a key and a known one it is offered as the spelling meant
+_MOST_TYPOS = 3
 
 
 #: a key an app may ask for by name (``GetValue("VEHICLE_CONFIG_FILE_PATH", ...)``); not
