@@ -56,7 +56,8 @@ or behavior, nor an app of the linted C++): `condition = ((DEPLOY = true) or
 (alpha = one)) or (bravo = two)`, as MOOS-IvP's `s8_hotel` mission writes it, is a
 never-true placeholder beside the side that holds, whose case changes
 nothing. `(Deploy = true) or (RETURN = true)` beside a button that posts
-`DEPLOY` is still reported, and says who posts `DEPLOY`.
+`DEPLOY` is still reported (in a mission file, the finding says who posts
+`DEPLOY`).
 
 MOOS-IvP's own missions follow the convention in all but a handful of the
 more than 5000 variable names they configure. One exception remains, and is
