@@ -79,6 +79,11 @@ _MACRO_DEFAULT = re.compile(r"([$%])\(([^()=:$%]+?)(:?=)([^()]*)\)")
 _MACRO_REF = re.compile(r"[$%]\(([^()]*)\)")
 
 
+def _has_tag(src: SourceFile, tag: str) -> bool:
+    """Whether the file has a ``<tag><tag>`` section."""
+    return any("<tag>" in ln and tag_of(ln) == tag for ln in src.lines)
+
+
 def tag_of(raw: str) -> str | None:
     """The section a ``<tag>`` line opens (``<tag><iM300>`` and ``<tag> iM300`` alike), or
     None for any other line. nsplug reads every line that starts with ``<tag>`` so, and
@@ -922,11 +927,9 @@ class Preprocessor:
             exp.incomplete = True
             self._problem(exp, "include-not-found", here, f"included file `{target}` {src.message}")
             return None
-        if tag is not None and not any("<tag>" in ln and tag_of(ln) == tag for ln in src.lines):
+        if tag is not None and not _has_tag(src, tag):
             own = self.cache.get(exp.path) if here.path == exp.path else None
-            if isinstance(own, SourceFile) and any(
-                "<tag>" in ln and tag_of(ln) == tag for ln in own.lines
-            ):
+            if isinstance(own, SourceFile) and _has_tag(own, tag):
                 # the top file holds that section itself, and nsplug writes every section
                 # of the top file in every mode: the block is there, the include is idle
                 return None

@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from moos_lint.files.diagnostics import Diagnostic
+from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.bhv import shaped_like_behaviors
 
 
@@ -13,14 +14,18 @@ def problem_findings(ctx, kind: str) -> Iterator[Diagnostic]:
     """Report the preprocessor's problems of one kind; none in a `.bhv` file that holds
     nothing shaped like a behavior file's line (nsplug's own test inputs and notes on
     its directives, which no helm loads)."""
-    if ctx.bhv is not None and not _written_as_behaviors(ctx):
+    problems = [prob for prob in ctx.expansion.problems if prob.kind == kind]
+    if not problems:
+        return
+    if ctx.bhv is not None and not derived(
+        ctx.expansion, "written-as-behaviors", lambda: _written_as_behaviors(ctx)
+    ):
         return
     fragment = ctx.unit.path in ctx.run.included_elsewhere
-    for prob in ctx.expansion.problems:
-        if prob.kind == kind:
-            if fragment and kind == "include-not-found":
-                continue  # judged where nsplug really runs: in the files that include it
-            yield ctx.report(prob.span, prob.message, chain=prob.chain)
+    for prob in problems:
+        if fragment and kind == "include-not-found":
+            continue  # judged where nsplug really runs: in the files that include it
+        yield ctx.report(prob.span, prob.message, chain=prob.chain)
 
 
 def _written_as_behaviors(ctx) -> bool:
