@@ -9,6 +9,13 @@ MOOS uses the first block it finds and silently ignores the later one: edits
 to the second block have no effect. Through nsplug `#include`s this is easy to
 do by accident. Blocks in mutually exclusive `#ifdef` branches are fine.
 
+An app's example configuration is left alone: a file named after the app
+(`src/iSonar/iSonar.moos`) that lists presets of its block ("360 scan, low
+resolution", "sector scan", ...) for the reader to copy one of, when the file
+is no mission (no ANTLER block, no key outside a block) and no mission of the
+run includes it. A fragment of other blocks, linted without the mission that
+includes it (a pre-commit run on it alone), is still checked.
+
 ## Example
 ```moos
 ProcessConfig = pLogger
@@ -33,10 +40,13 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.rules.syntax._shared import example_file
 
 
 @rule(code="R011", name="duplicate-process-config", severity=Severity.ERROR, scope=Scope.FILE)
 def check(ctx):
+    # an app's presets, side by side for the reader in the file named after it
+    presets = _stem(ctx.unit.path) if example_file(ctx) else None
     # Per name, the first block of each distinct set of ``#ifdef`` branches, in order:
     # a block's first compatible predecessor is among them. Blocks outside any branch
     # are compatible with all, so none after the first such block is kept, and a file
@@ -47,12 +57,16 @@ def check(ctx):
         header = block.header
         kept = firsts.setdefault(block.lname, {})
         first = next((b for b in kept.values() if not b.header.excludes(header)), None)
-        if first is not None:
+        if first is not None and block.lname != presets:
             yield ctx.report(block.name_span, _message(block, first), line=header)
         if block.lname not in closed and header.branches not in kept:
             kept[header.branches] = block
             if not header.branches:
                 closed.add(block.lname)
+
+
+def _stem(path: str) -> str:
+    return os.path.splitext(os.path.basename(path))[0].lower()
 
 
 def _message(block, first) -> str:

@@ -40,6 +40,7 @@ import os
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import GLOBAL_KEYS, Param
 from moos_lint.rules.kit.declare import Scope, rule
+from moos_lint.rules.syntax._shared import example_file
 
 
 @rule(code="R009", name="global-key-in-block", severity=Severity.ERROR, scope=Scope.FILE)
@@ -47,7 +48,7 @@ def check(ctx):
     if not ctx.moos.is_mission:
         if ctx.unit.path in ctx.run.included_elsewhere:
             return  # a fragment: judged in the missions that include it, after their lines
-        if not ctx.moos.globals:
+        if example_file(ctx):
             return  # an app's example block, alone in its file: no mission to misread
     order = {id(line): i for i, line in enumerate(ctx.moos.lines)}
     first: dict[str, tuple[int, Param]] = {}  # key -> the first line MOOS finds it on
