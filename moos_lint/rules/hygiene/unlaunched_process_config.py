@@ -67,6 +67,12 @@ suppress the finding on the header line.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
+- in a mission whose ANTLER block starts the MOOSDB alone (an app's bench
+  file, `iYellowSubDAQ.moos` beside its source), the block of an app that is
+  not one of MOOS's or MOOS-IvP's: the project's driver is started by hand
+  with the file while it is tested (`iYellowSubDAQ iYellowSubDAQ.moos`). A
+  stock app's block there is reported (pAntler launches those, and the
+  catalogue knows the few started by hand);
 - a block a launched script reads: a script started by a Run line
   (`Run = ./iSonar.py`) connects under the name it chooses and reads its
   configuration its own way, so its stem's block (`iSonar`) and any block
@@ -155,6 +161,8 @@ def check(ctx):
         return
     if any(b.macro_lines for b in moos.antler_blocks):
         return  # a line the launch script gives (`$(RUN)`) may launch any block's process
+    # pAntler starts the MOOSDB alone: the project's own apps are started by hand
+    db_alone = all(run.program.lower() == "moosdb" for run in moos.runs)
     given = ctx.options.get("manual-apps")
     if isinstance(given, str):
         given = [given]
@@ -192,6 +200,8 @@ def check(ctx):
             for run in (*by_name.get(block.name.lower(), ()), *any_name)
         ):
             continue
+        if db_alone and not _of_stock_app(block.lname):
+            continue  # a driver on the bench, started with the file (`iGPS_Hover nostromo.moos`)
         if block.header.path != ctx.path and _launched_by_includer(ctx.run, block, cat, switched):
             continue  # a shared fragment: another mission that includes it launches it
         if _from_library(ctx.expansion, ctx.path, block):
@@ -316,6 +326,13 @@ def _includes_only(exp, path: str) -> bool:
         return count >= _LIBRARY_INCLUDES
 
     return derived(exp, f"includes-only:{path}", read)
+
+
+def _of_stock_app(lname: str) -> bool:
+    """Whether block ``lname`` is a MOOS or MOOS-IvP app's, under its name or an alias
+    that starts with it (`uTimerScript_PING`)."""
+    cat = stock()
+    return any(lname.startswith(name) for name in (*cat.apps, *cat.programs))
 
 
 #: a block that at least this many missions of the run configure, and none launches
