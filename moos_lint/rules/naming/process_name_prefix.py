@@ -15,6 +15,9 @@ followed by an upper-case letter or a digit (`iGPS`, `pHelmIvP`, `uXMS`,
   reports it (or keeps quiet when its `Run` line is commented out on purpose).
   A header with its `{` on the same line (`ProcessConfig = MyApp {`) names no
   process either: MOOS never finds that block, which brace-on-header reports.
+  Nor does an empty block (`ProcessConfig = somethingElse {}` after an app's
+  sample block, a sentinel for a parser that reads up to the next header): it
+  configures nothing.
 
 `Run` lines with `InhibitMOOSParams = true` are skipped: pAntler passes that
 program neither the mission file nor a MOOS name, as it does for a program that
@@ -176,6 +179,8 @@ def check(ctx):
             continue  # judged on its Run line
         if block.brace_on_header:
             continue  # MOOS never finds the block: it names no process (brace-on-header)
+        if not block.params:
+            continue  # configures nothing: a sentinel that ends the block before it
         if not check_aliases and (low in aliases or low in elsewhere_aliases):
             continue
         if not conforms(name, exempt):
