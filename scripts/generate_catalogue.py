@@ -577,6 +577,9 @@ PROGRAMS: dict[str, dict] = {
         "launched_manually": True,
         "why": "the MOOS scope GUI, started by hand; it asks for the server to watch "
         "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uMS/uMS.cpp:139)",
+        # its poke dialog posts a variable of any name the user types
+        "posts_any": "what its user pokes (the MOOS scope's poke dialog, "
+        "MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uMS/ScopeGrid.cpp:257-285)",
     },
     "uPlayback": {
         "needs_process_config": False,
@@ -584,6 +587,8 @@ PROGRAMS: dict[str, dict] = {
         "why": "the alog playback GUI, started by hand: its main only opens the window, and it "
         "reads no mission file "
         "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uPlayBack/uPlayBackMain.cpp:45-55)",
+        "posts_any": "the variables of the log it replays "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uPlayBack/PlaybackWindow.cpp:505-516)",
     },
     "uIndexedPlayback": {
         "needs_process_config": False,
@@ -591,6 +596,8 @@ PROGRAMS: dict[str, dict] = {
         "why": "the indexed alog playback GUI, started by hand: its main only opens the "
         "window, and it reads no mission file "
         "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uIndexedPlayBack/uPlayBackMain.cpp:45-54)",
+        "posts_any": "the variables of the log it replays "
+        "(MOOS_Jul2724/MOOSToolsUI/Tools/Graphical/uIndexedPlayBack/PlaybackWindow.cpp:523-534)",
     },
     "iMatlab": {
         "needs_process_config": False,

@@ -48,7 +48,9 @@ When the mission launches apps that the catalogue does not know, uses
 behaviors it does not describe whose C++ is not in the project (or posts
 under names held in variables), or names behavior files the model cannot
 find, the finding is an `info` that says the check was incomplete, and names
-what was not known.
+what was not known. So it is when the mission launches a program that posts
+variables of any name: the uMS scope (what its user pokes in its poke
+dialog), uPlayback (the variables of the log it replays).
 
 ## Why is this bad?
 A condition on a variable that is never posted never becomes true: the
@@ -114,15 +116,20 @@ from moos_lint.semantics.variables import bare_name, one_alternative
 
 
 def _gaps(model, unknown_kinds: list[str]) -> list[str]:
-    out = [
-        f"`{p.name}`"
-        + (f" ({p.binary})" if p.binary != p.name else "")
-        + " is not in the catalogue"
-        for p in model.unknown_apps
-    ]
+    out = [_unknown_app(model, p) for p in model.unknown_apps]
     out += [f"behavior file `{b}` was not found" for b in model.unresolved_behaviors]
     out += [f"behavior `{k}` is not in the catalogue" for k in unknown_kinds]
     return out
+
+
+def _unknown_app(model, p) -> str:
+    """Why a launched program leaves the check incomplete: one whose posts have any name
+    (the uMS scope's pokes, a playback's log), or one the catalogue does not know."""
+    named = f"`{p.name}`" + (f" ({p.binary})" if p.binary != p.name else "")
+    program = model.catalogue.programs.get(p.binary.lower())
+    if program is not None and program.posts_any:
+        return f"{named} posts {program.posts_any.split(' (', 1)[0]}"
+    return named + " is not in the catalogue"
 
 
 def _unknown_kinds(model) -> list[str]:

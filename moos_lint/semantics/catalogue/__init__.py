@@ -169,6 +169,9 @@ class ProgramInfo:
     provenance: str = ""
     #: the variables it posts itself (the MOOSDB's ``DB_*``)
     publishes: frozenset[str] = frozenset()
+    #: what it posts when it posts variables of any name, then its evidence in the MOOS
+    #: sources in parentheses ("what its user pokes (... ScopeGrid.cpp:257-285)"), or ""
+    posts_any: str = ""
 
 
 class Catalogue:
@@ -396,6 +399,7 @@ def stock() -> Catalogue:
             launched_manually=bool(d.get("launched_manually")),
             provenance=f"moos-ivp {commit[:8]}: {d.get('why', '')}",
             publishes=frozenset(d.get("publishes", ())),
+            posts_any=str(d.get("posts_any", "")),
         )
     extra = {k.lower() for k in data.get("behavior_extra_params", {})}
     cat.generic_behavior_params = set(extra)
