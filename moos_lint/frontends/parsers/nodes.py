@@ -24,6 +24,11 @@ GLOBAL_KEYS = {
     "longorigin": "LongOrigin",
 }
 
+#: Keys CMOOSApp::Run read in MOOS before v10 (``GetValue("SIMULATOR")`` set
+#: IsSimulateMode(), ``GetValue("PLAYBACK")`` the playback mode), ignored since but still
+#: set by MOOS-IvP's own missions (x1_alpha, m5_hunter, m8_hugo): harmless, and known.
+LEGACY_GLOBALS = ("Simulator", "Playback")
+
 #: Every key MOOS, pAntler and the MOOS apps read at the top of a mission file: the keys
 #: above and those only some programs read.
 MOOS_GLOBALS = [
@@ -38,11 +43,7 @@ MOOS_GLOBALS = [
     "GlobalLogPath",
     "CircuitName",
     "MagneticOffset",
-    # read by CMOOSApp::Run in MOOS before v10 (``GetValue("SIMULATOR")`` sets
-    # IsSimulateMode(), ``GetValue("PLAYBACK")`` the playback mode), and still set by
-    # MOOS-IvP's own missions (x1_alpha, m5_hunter, m8_hugo)
-    "Simulator",
-    "Playback",
+    *LEGACY_GLOBALS,
     "ProcessConfig",
 ]
 

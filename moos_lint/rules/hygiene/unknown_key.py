@@ -96,7 +96,14 @@ top-of-file keys those apps read into their configuration (`log`, `log_path`,
 (the simulate and playback modes), and MOOS-IvP's own missions still set
 `Simulator = true`. Today's MOOS ignores them, but the line is harmless, and
 reporting it on every mission copied from MOOS-IvP's examples would bury the
-misspellings this rule is for.
+misspellings this rule is for. A key whose nearest known spelling is one of
+them (`Simulate = true`, `Simulation = false`) is as idle as the key meant, and
+is not reported either, unless one of the project's apps reads that key from
+its own block: the line then says so.
+
+A top-of-file key that one of the project's apps (linted C++) reads from its
+own ProcessConfig block only (`GetConfigurationParam`) is reported as such:
+the line never reaches the app; move it into the app's block.
 """
 
 import difflib
@@ -106,8 +113,8 @@ from types import MappingProxyType
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.moos import block_comments, looks_commented
+from moos_lint.frontends.parsers.nodes import LEGACY_GLOBALS, has_macro
 from moos_lint.frontends.parsers.nodes import MOOS_GLOBALS as GLOBALS
-from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.file_wide import BuiltKeys, built_keys, repo_globals
 from moos_lint.rules.kit.spelling import typos
@@ -241,6 +248,15 @@ def _judge(
             line=p.line,
         )
         return
+    reader = _own_block_reader(ctx, lkey) if where == "top-of-file" else None
+    if reader is not None:
+        yield ctx.report(
+            p.key_span,
+            f"`{key}` at the top of the file is ignored: {reader} reads it from its own "
+            "ProcessConfig block only",
+            line=p.line,
+        )
+        return
     first = key.split()[0] if key.split() else ""
     if first != key.strip() and first.lower() in by_lower:
         # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing
@@ -266,6 +282,8 @@ def _judge(
     # a name a word apart (`SONAR_SERIAL_PORT` beside `MODEM_SERIAL_PORT`) is another
     # device's key, not the one meant: only names a few typos away are offered
     names = [n for n in names if typos(key, n) <= _MOST_TYPOS]
+    if names and all(n in LEGACY_GLOBALS for n in names):
+        return  # `Simulate = true`: as idle as the `Simulator` meant, which MOOS ignores too
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
         return
@@ -285,6 +303,15 @@ def _judge(
         line=p.line,
         fix=fix,
     )
+
+
+def _own_block_reader(ctx, lkey: str) -> str | None:
+    """The project's app that reads ``lkey`` from its block (``GetConfigurationParam``),
+    where a top-of-file line never reaches it (`Simulate = true` for iCV100)."""
+    for info in catalogue_for(ctx.run).apps.values():
+        if info.own and lkey in info.params:
+            return f"`{info.name}`"
+    return None
 
 
 #: the most typos between a key and a known one it is offered as the spelling meant
