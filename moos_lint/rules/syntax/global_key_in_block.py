@@ -29,7 +29,9 @@ before it are known (its own file alone would say its line comes first). A file
 that is no mission (no ANTLER block, no key outside a block) and that no mission
 of the run includes is an app's example configuration (`src/iGPS/iGPS.moos`,
 whose app reads `LatOrigin` itself): there is no mission whose apps would read
-its line, and it is left alone.
+its line, and it is left alone. In a mission with an `#include` that could
+not be followed (a missing file, a macro in its path), a block's line is not
+said to be the one every app reads: the missing file may set the key first.
 
 ## Options
 None.
@@ -64,6 +66,8 @@ def check(ctx):
             if p.lkey not in GLOBAL_KEYS:
                 continue
             winner = first[p.lkey][1]
+            if winner is p and ctx.expansion.incomplete:
+                continue  # an include nsplug could not follow may set the key before it
             if winner is p and lines[p.lkey] == 1:
                 why = "is read by every app in the mission, as if it stood at the top of the file"
             elif winner is p:
