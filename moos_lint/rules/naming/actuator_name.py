@@ -56,8 +56,11 @@ with its own option (pMarinePIDV22 `output_suffix`).
 ## Options
 - `actuator-words` (list of strings, default
   `["THROTTLE", "STEERING", "STEER", "MOTOR", "MOTORS", "PROPELLER", "PROP", "SERVO",
-  "SERVOS", "ESC", "PWM", "AILERON", "FLAP", "FIN", "FINS"]`):
-  words that name an actuator another way.
+  "SERVOS", "ESC", "PWM", "FIN", "FINS"]`): words that name one of the three
+  actuators another way (a vehicle's fins are its rudder and elevator). A
+  control surface the three do not cover (an aileron that rolls a glider or
+  an aircraft, a trim flap) has no conventional name, and `DESIRED_AILERON`
+  is not reported; add the word to report it.
 - `allow` (list of strings, default `[]`): names (shell-style globs) that are fine.
 """
 
@@ -175,8 +178,6 @@ def actuator_word(name: str, words: set[str], any_shape: bool = False) -> str | 
             "MOTORS",
             "SERVOS",
             "PWM",
-            "AILERON",
-            "FLAP",
             "FIN",
             "FINS",
         ],
