@@ -28,14 +28,6 @@ comment (`#ProcessConfig = pLogger`, `/*ProcessConfig = pLogger`: `.moos` files
 have no `/* */` comments) is not reported: MOOS reads neither the header as one
 nor the block, which is what its writer meant by hiding the header.
 
-The example kept beside an app's or a behavior's source is left alone: a file
-named after its folder (`src/uFldHazardSensor/uFldHazardSensor.moos` under a
-banner, `BHV_WaypointSpd/BHV_WaypointSpd.moos` under `Behavior =
-BHV_WaypointSpd`) that is no mission (no ANTLER block, no key outside a block)
-and that no mission of the run includes. It is a page for the reader, which no
-app reads whole or in part. A plug file linted without the mission that
-includes it (`plug_pLogger.moos` in a pre-commit run) is still checked.
-
 ## Options
 None.
 """
@@ -45,14 +37,13 @@ import re
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.moos import looks_commented
 from moos_lint.rules.kit.declare import Scope, rule
-from moos_lint.rules.syntax._shared import source_page
 
 
 @rule(code="R004", name="orphan-block", severity=Severity.WARNING, scope=Scope.FILE)
 def check(ctx):
     orphans = ctx.moos.orphan_blocks
-    if not orphans or source_page(ctx):
-        return  # the example kept beside an app's or a behavior's source: see the page
+    if not orphans:
+        return
     lines = ctx.moos.lines
     index = {id(line): i for i, line in enumerate(lines)}
     for block in orphans:
