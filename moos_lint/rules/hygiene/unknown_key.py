@@ -97,9 +97,9 @@ top-of-file keys those apps read into their configuration (`log`, `log_path`,
 `Simulator = true`. Today's MOOS ignores them, but the line is harmless, and
 reporting it on every mission copied from MOOS-IvP's examples would bury the
 misspellings this rule is for. A key whose nearest known spelling is one of
-them (`Simulate = true`, `Simulation = false`) is as idle as the key meant, and
-is not reported either, unless one of the project's apps reads that key from
-its own block: the line then says so.
+them (`Simulate = true`, `Simulation = false`) is reported as read by nothing,
+without the hint and the respelling: the key meant is as idle. When one of the
+project's apps reads that key from its own block, the finding says so.
 
 A top-of-file key that one of the project's apps (linted C++) reads from its
 own ProcessConfig block only (`GetConfigurationParam`) is reported as such:
@@ -283,7 +283,15 @@ def _judge(
     # device's key, not the one meant: only names a few typos away are offered
     names = [n for n in names if typos(key, n) <= _MOST_TYPOS]
     if names and all(n in LEGACY_GLOBALS for n in names):
-        return  # `Simulate = true`: as idle as the `Simulator` meant, which MOOS ignores too
+        # `Simulate = true`: the `Simulator` meant is as idle (no hint, no respelling)
+        meant = " or ".join(f"`{n}`" for n in names)
+        yield ctx.report(
+            p.key_span,
+            f"unknown {where} key `{key}`: {who}, nor the {meant} it may mean, which MOOS "
+            "has ignored since v10",
+            line=p.line,
+        )
+        return
     if not names:
         yield ctx.report(p.key_span, f"unknown {where} key `{key}`: {who}", line=p.line)
         return
