@@ -98,6 +98,12 @@ BASE_PARAMS = {
                 "form": "moos_double",
                 "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:265",
             },
+            # GetConfigurationParam(int) takes any value, through atoi: `four` is 0 (and the
+            # comms client then ticks at 1 Hz, MOOSCommClient.cpp:416-417)
+            "commstick": {
+                "form": "moos_int",
+                "at": "MOOS_Jul2724/MOOSCore/Core/libMOOS/Utils/ProcessConfigReader.cpp:366-376",
+            },
         },
     },
     "AppCastingMOOSApp": {
@@ -143,6 +149,26 @@ BEHAVIOR_SINGLE_PARAMS = {
     "perpetual": "ivp/src/lib_behaviors/IvPBehavior.cpp:278-281",
     "duration": "ivp/src/lib_behaviors/IvPBehavior.cpp:285-295",
     "updates": "ivp/src/lib_behaviors/IvPBehavior.cpp:311-316",
+}
+
+#: The value forms of IvPBehavior's own parameters, which every behavior takes: the helm
+#: hands each line to ``IvPBehavior::setParam`` first (BehaviorSet.cpp:399-405), and a
+#: line it refuses, which no stock behavior's own setParam takes, fails the behavior.
+_IVPBEHAVIOR = "ivp/src/lib_behaviors/IvPBehavior.cpp"
+BEHAVIOR_GENERIC_FORMS = {
+    **{
+        key: {"form": "nonneg", "at": _IVPBEHAVIOR + ":192-199"}
+        for key in ("pwt", "priwt", "priority")
+    },
+    "comms_policy": {"form": "enum:open|lean|dire", "at": _IVPBEHAVIOR + ":210-217"},
+    "duration_idle_decay": {"form": "bool", "at": _IVPBEHAVIOR + ":231-234"},
+    # any word but `true` (in any case) sets it false, without a warning
+    "perpetual": {"form": "true_word", "at": _IVPBEHAVIOR + ":278-282"},
+    "duration": {
+        "form": "enum_or_nonneg:no-time-limit|-1",
+        "at": _IVPBEHAVIOR + ":285-295",
+        "same": [["no-time-limit", "-1"]],
+    },
 }
 
 #: Hand corrections: app -> fields to add, and why.
@@ -865,6 +891,7 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             entry.setdefault("corrected", []).append(corr["why"])
 
     behaviors: dict[str, dict] = {}
+    class_forms["IvPBehavior"] = {**class_forms.get("IvPBehavior", {}), **BEHAVIOR_GENERIC_FORMS}
     for cls, path in sorted(class_file.items()):
         if not cls.startswith("BHV_"):
             continue

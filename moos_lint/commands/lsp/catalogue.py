@@ -77,6 +77,8 @@ FORM_TEXT = {
     "posuint": "a whole number, 1 or more",
     "int": "a whole number",
     "moos_double": "a number starting with a digit or `-` (`0.5`, not `.5`)",
+    "moos_int": "a whole number (read with atoi: `2.5` is 2, a word is 0)",
+    "true_word": "`true` or `false`: any other word is taken as false",
     "fields:src": "`key=value` fields, `src=` required",
     "convex_polygon": "a convex polygon of 3 or more vertices (`x,y : x,y : x,y`)",
     "waypoints": "a point list (`x,y : x,y`), a polygon, `empty` or `start`",

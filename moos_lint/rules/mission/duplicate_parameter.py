@@ -111,6 +111,12 @@ def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str, 
             form and form[0] == "bool" and _alike(BOOLEAN_GROUPS, before, value)
         ):
             continue  # (`true`, `True` and `yes` set a boolean alike)
+        if (
+            form
+            and form[0] == "true_word"
+            and (before.lower() == "true") == (value.lower() == "true")
+        ):
+            continue  # (`true` and `TRUE` set it alike, and so do `false` and `no`)
         if form and _alike(cat.same_values.get(form[1], ()), before, value):
             continue  # two words the parser stores alike (`end`, `all-posted`)
         if earlier.line.excludes(p.line):
@@ -144,4 +150,6 @@ def _rejected(form: str, value: str) -> bool:
     """Whether a parser that sets the member line by line refuses ``value`` and leaves the
     member as it was (uTimerScript's `reset_max = no_limit` after `reset_max = 5000`: the
     5000 holds). A number beyond a ``clip:`` bound is taken, as the bound."""
-    return not form.startswith("clip:") and problem(form, value) is not None
+    if form.startswith("clip:") or form == "true_word":
+        return False  # taken: as the bound, or as false (`perpetual = yes`)
+    return problem(form, value) is not None

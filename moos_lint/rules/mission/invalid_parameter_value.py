@@ -71,7 +71,16 @@ as recorded in the catalogue with the source line that enforces it:
   them;
 - `AppTick` and `MaxAppTick` (every MOOS app) are read with
   `GetConfigurationParam(double)`, which ignores a value that does not start
-  with a digit or `-`: `AppTick = .5` or `+4` leaves the default.
+  with a digit or `-`: `AppTick = .5` or `+4` leaves the default;
+  `CommsTick` with `GetConfigurationParam(int)`, through `atoi`: a value
+  that does not start with a digit or a sign (`CommsTick = four`) is 0, and
+  the comms client then ticks at 1 Hz;
+- IvPBehavior's own parameters, which every behavior takes: `pwt` (also
+  `priwt`, `priority`) must be a number 0 or more and `duration` too (or
+  `no-time-limit`), `comms_policy` one of `open`, `lean`, `dire`, and
+  `duration_idle_decay` a boolean, or the helm fails the behavior;
+  `perpetual` takes any word, but only `true` (any case) sets it:
+  `perpetual = ture` or `yes` is read as false, without a warning.
 
 The message names the parser's source line in moos-ivp. A repository that
 carries its own copy of a MOOS-IvP app (a fork of MOOS-IvP, or the MOOS-IvP
@@ -142,6 +151,8 @@ from moos_lint.semantics.mbutil import BOOLEAN_WORDS, is_number, var_data_pair
 from moos_lint.semantics.variables import is_flag_param
 
 _MOOS_DOUBLE = re.compile(r"^[0-9-]")
+#: what ``atoi`` reads a number from (the value's blanks are gone)
+_MOOS_INT = re.compile(r"^[+-]?[0-9]")
 
 
 def _atof(s: str) -> float:
@@ -218,6 +229,14 @@ def problem(form: str, value: str) -> str | None:
         if not _MOOS_DOUBLE.match(value):
             return "does not start with a digit or `-`"
         return None
+    if form == "moos_int":
+        if not _MOOS_INT.match(value):
+            return "does not start with a digit or a sign"
+        return None
+    if form == "true_word":
+        if value.lower() not in ("true", "false"):
+            return "is neither `true` nor `false`"
+        return None
     if form.startswith("clip:"):
         # a number, taken as the nearest bound when beyond one: `clip:0,` clips at 0
         if not is_number(value):
@@ -259,10 +278,16 @@ def problem(form: str, value: str) -> str | None:
 def check(ctx):
     if ctx.moos is not None:
         for _block, app in block_apps(ctx):
+            read: dict[str, list] = {}
             for p in _block.params:
                 got = app.forms.get(p.lkey)
                 if got is None:
                     continue
+                if got[0].startswith("moos_"):
+                    earlier = read.setdefault(p.lkey, [])
+                    if any(not e.line.excludes(p.line) for e in earlier):
+                        continue  # CMOOSApp reads the first line only (duplicate-parameter)
+                    earlier.append(p)
                 value = "".join(p.value.split())  # MOOS drops every blank of a config line
                 yield from _judge(ctx, p, value, got, app.name)
         yield from _text_enums(ctx)
@@ -412,6 +437,14 @@ def _timer_event(value: str) -> str | None:
     return None
 
 
+#: what a parser that does not reject a value of the wrong form does with it
+_EFFECTS = {
+    "moos_double": "ignores it and keeps its default",
+    "moos_int": "reads it with atoi, as 0",
+    "true_word": "takes it as false",
+}
+
+
 def _judge(ctx, p, value, got, owner):
     form, at = got
     if not value or has_macro(value) or has_macro(p.key):
@@ -420,7 +453,7 @@ def _judge(ctx, p, value, got, owner):
     if why is None:
         return
     where = f" ({at})" if at else ""
-    effect = "ignores it and keeps its default" if form == "moos_double" else "rejects it"
+    effect = _EFFECTS.get(form, "rejects it")
     if why.startswith(_UNKNOWN_FIELD):
         effect = "warns about that field and skips it"
     got = clipped(form, value) if form.startswith("clip:") and is_number(value) else None
