@@ -54,7 +54,9 @@ PUBLISH = {"Notify"}
 #: (then ``m_Comms.Post(Msg)``, or handed back in a task's message list)
 NOTIFY_MSG = "CMOOSMsg"
 NOTIFY_KINDS = ("MOOS_NOTIFY", "'N'")
-SUBSCRIBE = {"Register"}
+#: ``Register``, and pHelmIvP's wrapper round it (HelmIvP.cpp:1182-1190), through which
+#: the helm registers for ``MOOS_MANUAL_OVERRIDE`` and its old spelling ``_OVERIDE``
+SUBSCRIBE = {"Register", "registerSingleVariable"}
 CONFIG_CALLS = {"GetConfigurationParam", "GetConfigurationParamNoCase", "GetConfiguration"}
 #: ``m_MissionReader.GetValue("LatOrigin", lat)``: a top-of-file key of the mission
 GLOBAL_VALUE = "GetValue"

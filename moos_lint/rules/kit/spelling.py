@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 
 
@@ -30,6 +31,57 @@ def misspelling_of(name: str, candidates: Iterable[str], most: int) -> str | Non
         if c != name and "*" not in c and abs(len(c) - len(name)) <= most and typos(c, name) <= most
     ]
     return near[0] if len(near) == 1 else None
+
+
+_DIGITS = re.compile(r"[0-9]+")
+
+
+class VariableSpeller:
+    """Finds the MOOS variable of a set that a name is a typo from (:meth:`meant`),
+    through an index by the words the two names share, so that many names are
+    checked against many candidates in time linear in both."""
+
+    def __init__(self, candidates: Iterable[str]) -> None:
+        self._index: dict[tuple[int, int, tuple[str, ...]], list[str]] = {}
+        for c in candidates:
+            if len(c) > 4:
+                for key in self._keys(c):
+                    self._index.setdefault(key, []).append(c)
+
+    @staticmethod
+    def _keys(name: str) -> list[tuple[int, int, tuple[str, ...]]]:
+        w = name.upper().split("_")
+        return [(len(w), i, tuple(w[:i] + w[i + 1 :])) for i in range(len(w))]
+
+    def meant(self, name: str) -> str | None:
+        """The one candidate ``name`` is a typo from, if any: the names have the same
+        ``_``-separated words but one, and that word has a letter left out, added,
+        changed or two swapped (``RETRUN``, ``MOOS_MANUAL_OVERIDE``), or its letters in
+        another order (``SBR_RANGE_REQUEST``), or two such typos in a word of six letters
+        or more. A name that differs only in case is not a typo (the variable-name-case
+        rule's), nor one that differs in a number (``VEHICLE_1``, ``VEHICLE_2``: another
+        vehicle), nor a word of three letters for another (``TERM_NEG`` and
+        ``TERM_NUM``); names of four letters or fewer are not compared."""
+        if len(name) <= 4:
+            return None
+        near = {
+            c for key in self._keys(name) for c in self._index.get(key, ()) if _word_typo(name, c)
+        }
+        return near.pop() if len(near) == 1 else None
+
+
+def _word_typo(a: str, b: str) -> bool:
+    wa, wb = a.upper().split("_"), b.upper().split("_")
+    if len(wa) != len(wb):
+        return False
+    diff = [(x, y) for x, y in zip(wa, wb, strict=True) if x != y]
+    if len(diff) != 1:
+        return False
+    x, y = diff[0]
+    if _DIGITS.findall(x) != _DIGITS.findall(y):
+        return False
+    d = typos(x, y)
+    return d <= 1 or (d == 2 and (sorted(x) == sorted(y) or min(len(x), len(y)) >= 6))
 
 
 def cased_like(written: str, word: str) -> str:

@@ -7,7 +7,14 @@ event, a pMarineViewer button or action, ...) that nothing in the mission
 reads, as unread-publication finds them. It reports one whose name has the
 same `_`-separated words as a variable that is read, in another order or
 with a plural `S` more or less: `UPDATES_RETURN` where the return behavior
-reads `updates = RETURN_UPDATE`, `RETURN_UPDATES` for `RETURN_UPDATE`.
+reads `updates = RETURN_UPDATE`, `RETURN_UPDATES` for `RETURN_UPDATE`; or
+whose name is a typo from the name of exactly one variable that is read: the
+same words but one, with a letter left out, added, changed or two swapped
+(`endflag = RETRUN = true` where the return behavior waits for `RETURN`,
+`MOOS_MANUAL_OVERIDE`), or its letters in another order
+(`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`). Names of four letters or
+fewer, names that differ in a number (`VEHICLE_1`, `VEHICLE_2`) and a short
+word for another (`TERM_NEG`, `TERM_NUM`) are not compared so.
 
 Unlike unread-publication, which reports every unread posting and is off by
 default, this reports only postings that the name of a read variable says
@@ -43,10 +50,13 @@ names with run-time placeholders or nsplug macros.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.spelling import VariableSpeller
 from moos_lint.rules.mission.unread_publication import judged_postings
+from moos_lint.semantics.mission_model import mission_model
 
 _NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 
@@ -73,16 +83,23 @@ def check(ctx):
     for read in names:
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
+    speller: VariableSpeller | None = None
     for ref, name in postings:
         if not _NAME.fullmatch(name):
             continue
         meant = sorted(by_words.get(words(name), set()) - {name})
+        how = "with the same words"
         if not meant:
-            continue
+            if speller is None:
+                speller = VariableSpeller(_settled(ctx, by_words))
+            typo = speller.meant(name)
+            if typo is None:
+                continue
+            meant, how = [typo], "a typo away"
         shown = " or ".join(f"`{m}`" for m in meant)
         msg = (
             f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads it; "
-            f"{shown}, with the same words, is read: did you mean it?"
+            f"{shown}, {how}, is read: did you mean it?"
         )
         fix = None
         if len(meant) == 1 and ref.line.text == ref.line.raw:
@@ -95,3 +112,26 @@ def check(ctx):
             fix=fix,
             subject=Subject(variable=name, app=ref.app, key=ref.param),
         )
+
+
+def _settled(ctx, by_words: dict[tuple[str, ...], set[str]]) -> Iterator[str]:
+    """The read names whose spelling is settled, so that a posting a typo away from one
+    is the misspelt side: a name an app's or a behavior's code reads (uFldBeaconRangeSensor
+    registers for `BRS_RANGE_REQUEST`), or one the mission also publishes. A name only
+    the mission's own configuration waits for, which nothing publishes, may be the typo
+    itself (a condition on `DEPOLY` while a button posts `DEPLOY`): unpublished-subscription
+    reports that one, where it is read."""
+    model = mission_model(ctx)
+    coded: set[str] = set()
+    for proc in model.processes:
+        if proc.app is not None:
+            coded |= proc.app.subscribes
+    for _path, bf in model.behavior_files:
+        for bhv in bf.behaviors:
+            info = model.catalogue.behavior(bhv.kind)
+            if info is not None:
+                coded |= info.reads
+    for names in by_words.values():
+        for name in names:
+            if name in coded or model.published_by(name):
+                yield name

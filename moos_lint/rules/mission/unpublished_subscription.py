@@ -44,6 +44,9 @@ variable that a logic condition waits for: behavior `condition` and
   whose `BHV_X.cpp` is under the project root) that posts it by name
   (`postMessage("VNAME", m_name)`, `postBoolMessage`, `postIntMessage`,
   `postRepeatableMessage`).
+When the name is a typo away from exactly one published name (`DEPOLY`
+and `DEPLOY`), the message names it.
+
 When the mission launches apps that the catalogue does not know, uses
 behaviors it does not describe whose C++ is not in the project (or posts
 under names held in variables), or names behavior files the model cannot
@@ -107,7 +110,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.spelling import misspelling_of
+from moos_lint.rules.kit.spelling import VariableSpeller, misspelling_of
 from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
@@ -170,6 +173,7 @@ def check(ctx):
     seen: set[tuple[str, str, int]] = set()
     routes: set[str] | None = None  # the pShare routes the mission listens on
     flagged: set[str] | None = None  # names update strings set flags to post
+    speller: VariableSpeller | None = None  # what a waited-for name may be a typo of
     for ref in model.waits:
         name = bare_name(ref.name)
         if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
@@ -208,6 +212,11 @@ def check(ctx):
         else:
             msg = f"`{name}`: {owner}'s {ref.param} waits for it, "
             msg += "but nothing in the mission publishes it"
+            if speller is None:
+                speller = VariableSpeller(model.publishers)
+            near = speller.meant(name)
+            if near is not None:
+                msg += f" (`{near}`, a typo away, is published)"
         if gaps:
             yield ctx.report(
                 ref.span,
