@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from moos_lint.rules.kit.spelling import cased_like, misspelling_of, typos
+from moos_lint.rules.kit.spelling import VariableSpeller, cased_like, misspelling_of, typos
 
 
 @pytest.mark.parametrize(
@@ -30,3 +30,34 @@ def test_typos_count_swaps_as_one():
     assert typos("deploy", "DEPLOY") == 0
     assert misspelling_of("RETRUN", ["RETURN", "DEPLOY"], 1) == "RETURN"
     assert misspelling_of("RETRUN", ["RETURN", "RETRUNS"], 1) is None
+
+
+@pytest.mark.parametrize(
+    ("name", "known", "meant"),
+    [
+        ("RETRUN", "RETURN", "RETURN"),
+        ("MOOS_MANUAL_OVERIDE", "MOOS_MANUAL_OVERRIDE", "MOOS_MANUAL_OVERRIDE"),
+        ("SBR_RANGE_REQUEST", "BRS_RANGE_REQUEST", "BRS_RANGE_REQUEST"),  # letters reordered
+        ("NAV_LONG", "NAV_LON", "NAV_LON"),
+        ("LOITER_UPDTAES", "LOITER_UPDATES", "LOITER_UPDATES"),
+        ("STATION_KEPE_REQ", "STATION_KEEP_REQ", "STATION_KEEP_REQ"),
+        ("TERM_NEG_EVIDENCE", "TERM_NUM_EVIDENCE", None),  # a short word for another
+        ("LOITER_REGION_2", "LOITER_REGION_1", None),  # another number
+        ("Deploy", "DEPLOY", None),  # letter case only: variable-name-case's
+        ("STOP", "SOTP", None),  # four letters: not compared
+        ("RETURN_NOW", "RETURNNOW", None),  # another count of words
+        ("SURVEY_DONE", "SURVEY_GONE_NOW", None),
+        ("NAV_Y", "NAV_X", None),  # a word of one letter
+        ("GROUP_AB", "GROUP_AC", None),
+        ("SET_POS", "GET_POS", None),  # a letter changed in a short word
+        ("DEPLOI", "DEPLOY", "DEPLOY"),  # in a longer one
+        ("WPT_STAT", "WPT_STATE", "WPT_STATE"),
+    ],
+)
+def test_a_variable_a_typo_away(name, known, meant):
+    assert VariableSpeller([known, "DEPLOY_ALL", "NAV_X"]).meant(name) == meant
+
+
+def test_a_typo_of_two_variables_names_neither():
+    assert VariableSpeller(["RETURN_A", "RETURN_B"]).meant("RETURN_C") is None
+    assert VariableSpeller(["DEPLOY", "DEPLOY"]).meant("DEPLOI") == "DEPLOY"

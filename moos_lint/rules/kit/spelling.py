@@ -55,13 +55,15 @@ class VariableSpeller:
 
     def meant(self, name: str) -> str | None:
         """The one candidate ``name`` is a typo from, if any: the names have the same
-        ``_``-separated words but one, and that word has a letter left out, added,
-        changed or two swapped (``RETRUN``, ``MOOS_MANUAL_OVERIDE``), or its letters in
-        another order (``SBR_RANGE_REQUEST``), or two such typos in a word of six letters
-        or more. A name that differs only in case is not a typo (the variable-name-case
-        rule's), nor one that differs in a number (``VEHICLE_1``, ``VEHICLE_2``: another
-        vehicle), nor a word of three letters for another (``TERM_NEG`` and
-        ``TERM_NUM``); names of four letters or fewer are not compared."""
+        ``_``-separated words but one, and that word has a letter left out, added or
+        changed or two swapped (``RETRUN``, ``MOOS_MANUAL_OVERIDE``, ``NAV_LON``), its
+        letters in another order (``SBR_RANGE_REQUEST``), or two such typos in a word of
+        six letters or more. Not typos: a name that differs only in case (the
+        variable-name-case rule's), or in a number (``VEHICLE_1``, ``VEHICLE_2``: another
+        vehicle), or in a word of one or two letters (``NAV_X``, ``NAV_Y``), a letter
+        changed in a word of four letters or fewer (``SET_POS``, ``GET_POS``), a short
+        word for another (``TERM_NEG``, ``TERM_NUM``); names of four letters or fewer are
+        not compared."""
         if len(name) <= 4:
             return None
         near = {
@@ -78,10 +80,13 @@ def _word_typo(a: str, b: str) -> bool:
     if len(diff) != 1:
         return False
     x, y = diff[0]
-    if _DIGITS.findall(x) != _DIGITS.findall(y):
-        return False
+    if min(len(x), len(y)) < 3 or _DIGITS.findall(x) != _DIGITS.findall(y):
+        return False  # `NAV_X` and `NAV_Y`, `GROUP_A` and `GROUP_B`: other names
+    anagram = sorted(x) == sorted(y)
+    if len(x) == len(y) < 5 and not anagram:
+        return False  # a letter changed in a short word makes another word: `SET`, `GET`
     d = typos(x, y)
-    return d <= 1 or (d == 2 and (sorted(x) == sorted(y) or min(len(x), len(y)) >= 6))
+    return d <= 1 or (d == 2 and (anagram or min(len(x), len(y)) >= 6))
 
 
 def cased_like(written: str, word: str) -> str:

@@ -12,9 +12,14 @@ whose name is a typo from the name of exactly one variable that is read: the
 same words but one, with a letter left out, added, changed or two swapped
 (`endflag = RETRUN = true` where the return behavior waits for `RETURN`,
 `MOOS_MANUAL_OVERIDE`), or its letters in another order
-(`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`). Names of four letters or
-fewer, names that differ in a number (`VEHICLE_1`, `VEHICLE_2`) and a short
-word for another (`TERM_NEG`, `TERM_NUM`) are not compared so.
+(`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`). That read name must be
+settled: read by an app's or a behavior's code, or published in the mission
+too; a name only a condition waits for may be the misspelt one, and
+unpublished-subscription reports it there. Names of four letters or fewer,
+and names that differ in a number (`VEHICLE_1`, `VEHICLE_2`), in a word of
+one or two letters (`NAV_X`, `NAV_Y`), by a letter of a short word
+(`SET_POS`, `GET_POS`) or by a short word (`TERM_NEG`, `TERM_NUM`), are not
+compared so.
 
 Unlike unread-publication, which reports every unread posting and is off by
 default, this reports only postings that the name of a read variable says
