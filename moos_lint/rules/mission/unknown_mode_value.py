@@ -24,7 +24,13 @@ not count.
 It judges a variable only when every publisher of it in the mission is the
 helm's set blocks or a line whose value is written out: a variable an app
 posts, a person pokes or a launched app the catalogue does not know might
-post is left alone.
+post is left alone. There is one exception: a behavior's condition on a
+variable that a top-level set block (one with no `MODE = ...` prefix and an
+else value) gives a value on every helm iteration. The helm evaluates its
+set blocks and writes their values into its own buffer before any behavior
+reads a condition (HelmEngine.cpp:168, ModeSet.cpp:95-97), so what another
+process posts to that variable never reaches a behavior: an app the
+catalogue does not know does not stop the check there.
 
 ## Why is this bad?
 lib_logic compares a word with a mode value field by field (`==`,
@@ -80,13 +86,15 @@ _SHOWN = 6
 )
 def check(ctx):
     model = mission_model(ctx)
-    if model.unknown_apps or model.unresolved_behaviors:
-        return  # a process or behavior the model cannot see may post any value
+    if model.unresolved_behaviors:
+        return  # a behavior the model cannot see may post any value
     entries = _mode_entries(model.behavior_files)
     if not entries:
         return
     own = _own_entries(model)
     others = posted_values(model, with_sets=False)
+    always = _always_set(model.behavior_files)
+    bhv_paths = {path for path, _bf in model.behavior_files}
     seen: set[tuple[str, int, int]] = set()
     for ref in model.waits:
         var = ref.name
@@ -94,10 +102,12 @@ def check(ctx):
         if pairs is None:
             continue
         extra = others.get(var, [])
-        if None in extra:
-            continue
-        if not all_written(model.published_by(var)):
-            continue
+        if var in always and ref.line.path in bhv_paths:
+            # the set blocks overwrite the helm's own copy before behaviors read it: what
+            # other processes post never reaches this condition
+            extra = [v for v in extra if v is not None]
+        elif model.unknown_apps or None in extra or not all_written(model.published_by(var)):
+            continue  # a process the model cannot see, or an app, may post any value
         found = compared_once(ref, seen)
         if found is None:
             continue
@@ -155,6 +165,23 @@ def _own_entries(model) -> dict[tuple[str, int], dict[str, list[tuple[str, str]]
             owners.setdefault((line.path, line.lineno), []).append(i)
     per_file = [_mode_entries([pair]) for pair in model.behavior_files]
     return {at: per_file[found[0]] for at, found in owners.items() if len(set(found)) == 1}
+
+
+def _always_set(files) -> set[str]:
+    """The mode variables a top-level set block (no ``VAR = ...`` prefix) gives a value
+    on every helm iteration: its own value when its conditions hold, else its else value
+    (``ModeSet::evaluate``)."""
+    out: set[str] = set()
+    for _path, bf in files:
+        for sb in bf.sets:
+            var = sb.mode_var
+            prefixed = any(
+                left.strip() == var and sep
+                for left, sep, _right in (text.partition("=") for text, _line in sb.conditions)
+            )
+            if not prefixed and sb.value and sb.else_value:
+                out.add(var)
+    return out
 
 
 def _mode_entries(files) -> dict[str, list[tuple[str, str]]]:
