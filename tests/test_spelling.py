@@ -59,5 +59,6 @@ def test_a_variable_a_typo_away(name, known, meant):
 
 
 def test_a_typo_of_two_variables_names_neither():
-    assert VariableSpeller(["RETURN_A", "RETURN_B"]).meant("RETURN_C") is None
+    speller = VariableSpeller(["RETURN_UPDATE", "RETURN_UPDATER"])
+    assert speller.meant("RETURN_UPDATEE") is None
     assert VariableSpeller(["DEPLOY", "DEPLOY"]).meant("DEPLOI") == "DEPLOY"

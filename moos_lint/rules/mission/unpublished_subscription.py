@@ -45,7 +45,8 @@ variable that a logic condition waits for: behavior `condition` and
   (`postMessage("VNAME", m_name)`, `postBoolMessage`, `postIntMessage`,
   `postRepeatableMessage`).
 When the name is a typo away from exactly one published name (`DEPOLY`
-and `DEPLOY`), the message names it.
+and `DEPLOY`: a letter of one `_`-separated word left out, added, changed or
+two swapped, as misnamed-publication counts typos), the message names it.
 
 When the mission launches apps that the catalogue does not know, uses
 behaviors it does not describe whose C++ is not in the project (or posts
@@ -82,8 +83,9 @@ MOOS-IvP caveats, deliberately not reported:
   nsplug) and wildcards;
 - a variable on one side of an `or` (`(DEPLOY = true) or (ALPHA = one)`): the
   condition may hold without it (lib_logic evaluates the whole expression with
-  the variables it has, IvPBehavior.cpp), unless the name is a typo or two from
-  a published one (`(DEPLOY = true) or (RETRUN = true)`): that side is dead;
+  the variables it has, IvPBehavior.cpp), unless the name is a typo away from
+  a published one, as above (`(DEPLOY = true) or (RETRUN = true)`): that side
+  is dead;
 - a mission that receives variables from another community when no other
   mission in its folder describes that community: anything may arrive;
 - a variable named after a launched app that the catalogue does not know,
@@ -110,7 +112,7 @@ import re
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.spelling import VariableSpeller, misspelling_of
+from moos_lint.rules.kit.spelling import VariableSpeller
 from moos_lint.rules.mission._behaviors import repo_behavior_posts
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.process_names import own_prefixes
@@ -184,7 +186,9 @@ def check(ctx):
         if one_alternative(ref):
             # one side of an `or`: the condition may hold without it, so it is not waited
             # for; a misspelling of a posted name still leaves that side dead
-            meant = _misspelt(name, model)
+            if speller is None:
+                speller = VariableSpeller(model.publishers)
+            meant = speller.meant(name)
             if meant is None:
                 continue
         key = (name, ref.line.path, ref.line.lineno)
@@ -258,18 +262,6 @@ def _listened(model) -> set[str]:
         if proc.binary.lower() == "pshare" and proc.block is not None:
             found |= input_routes(proc.block)
     return found
-
-
-#: a name this many typos from a published one is taken to be a misspelling of it
-MAX_TYPOS = 2
-
-
-def _misspelt(name: str, model) -> str | None:
-    """The one published variable ``name`` is a typo or two away from (``RETRUN`` for
-    ``RETURN``), if any; names of four letters or fewer are not compared."""
-    if len(name) <= 4:
-        return None
-    return misspelling_of(name, model.publishers, MAX_TYPOS)
 
 
 def _named_after(name: str, prefixes: set[str]) -> bool:
