@@ -13,7 +13,7 @@ from typing import Any
 
 from moos_lint.files.diagnostics import Edit, Fix, Span
 from moos_lint.frontends.cpp import angle_exprs as angles
-from moos_lint.frontends.cpp import values
+from moos_lint.frontends.cpp import facts, values
 from moos_lint.frontends.cpp.app import sibling_apps
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of
@@ -224,6 +224,27 @@ def trig_of_degrees(app: AppModel) -> Iterator[Finding]:
         )
 
 
+def angle_argument_unit(app: AppModel) -> Iterator[Finding]:
+    """One of MOOS's angle functions given an angle known, not by a name alone, to be in
+    the other unit: ``angle360()`` of radians, ``MOOS_ANGLE_WRAP()`` of degrees,
+    ``MOOSDeg2Rad()`` of radians."""
+    for f in app.files:
+        for t in f.angle_arguments:
+            v = t.value.abstract
+            takes = facts.HELPERS[t.function][0]
+            if v is None or v.hint or v.pending is not None or v.unit not in ("deg", "rad"):
+                continue
+            if v.unit == takes:
+                continue
+            given = "degrees" if v.unit == "deg" else "radians"
+            wanted = "degrees" if takes == "deg" else "radians"
+            yield (
+                t.value.span,
+                f"`{t.function}()` takes {wanted} but is given `{values.brief(t.value.text)}` "
+                f"in {given}{_because(v)}",
+            )
+
+
 def mixed_angle_units(app: AppModel) -> Iterator[Finding]:
     """Degrees and radians added, subtracted or compared, each side's unit known."""
     for f in app.files:
@@ -231,9 +252,10 @@ def mixed_angle_units(app: AppModel) -> Iterator[Finding]:
             units = [
                 "degrees" if v.abstract.unit == "deg" else "radians" for v in (m.left, m.right)
             ]
-            if m.op == "+":
+            op = m.op[0] if m.op in ("+=", "-=") else m.op  # (``yaw += 360``, in place)
+            if op == "+":
                 doing = f"adds an angle in {units[1]} to one in {units[0]}"
-            elif m.op == "-":
+            elif op == "-":
                 doing = f"subtracts an angle in {units[1]} from one in {units[0]}"
             else:
                 doing = f"compares an angle in {units[0]} with one in {units[1]}"

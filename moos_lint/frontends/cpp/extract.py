@@ -106,6 +106,14 @@ VEHICLE_LINK_CALLS = {
 }
 #: conversions from degrees that tell what a variable read by mail carries
 FROM_DEGREES = {"MOOSDeg2Rad", "degToRadians", "headingToRadians"}
+#: MOOS's and MOOS-IvP's angle functions that take an angle in one unit (the wraps and
+#: the conversions of :data:`HELPERS`, but the generic ``degrees``/``radians``): a call
+#: given an angle known to be in the other is looked at (angle-argument-unit)
+UNIT_ARGUMENT = {
+    name
+    for name, (unit_in, _out, _rng, _sense) in HELPERS.items()
+    if unit_in is not None and name not in ("degrees", "radians")
+}
 #: every call :meth:`Extractor._call` looks at (the query captures no other)
 #: ``Set`` on a table of published ``CMOOSVariable``s (published by ``PublishFreshMOOSVariables``)
 VARIABLE_SET = {"Set"}
@@ -130,6 +138,7 @@ CALLED = (
     | VEHICLE_LINK_CALLS
     | STRCMP
     | FROM_DEGREES
+    | UNIT_ARGUMENT
     | VARIABLE_SET
     | {ADD_MOOS_VAR, SET_MOOS_VAR}
     | set(GEODESY_ARGUMENTS)
@@ -214,6 +223,18 @@ def strip_parens(n: Any) -> Any:
     while n is not None and n.type == "parenthesized_expression" and n.named_child_count == 1:
         n = n.named_children[0]
     return n
+
+
+def _in_place(call: Any, arg: Any) -> bool:
+    """Whether ``call`` is what its own argument is set to (``x = MOOSDeg2Rad(x)``): a
+    value converted where it is kept, whose value before is the one the author had."""
+    parent = call.parent
+    while parent is not None and parent.type == "parenthesized_expression":
+        parent = parent.parent
+    if parent is None or parent.type != "assignment_expression":
+        return False
+    left = parent.child_by_field_name("left")
+    return left is not None and text(left) == text(arg)
 
 
 def _radians_call(n: Any) -> bool:
@@ -1108,6 +1129,11 @@ class Extractor:
         for node, angle, number in pf.turns:
             self._turn_mix(node, angle, number)
         for a in pf.asgs:
+            # ``if (hdg < 0) hdg += 360``: a turn in degrees added to the variable in place
+            turn = a.rhs.type == "number_literal" and re.match(DEGREE_TURNS, text(a.rhs))
+            if a.op in ("+=", "-=") and turn:
+                self._turn_mix(a.node, a.node.child_by_field_name("left"), a.rhs)
+        for a in pf.asgs:
             if a.rhs.type == "argument_list" and a.node.type == "init_declarator":
                 decl = a.node.parent
                 kind = decl.child_by_field_name("type") if decl is not None else None
@@ -1251,6 +1277,21 @@ class Extractor:
         place = places.get(stmt.start_byte)
         return (block.start_byte, place) if place is not None else None
 
+    def _angle_argument(self, call: Any, name: str, arg: Any) -> None:
+        """A call of one of MOOS's angle functions (:data:`UNIT_ARGUMENT`) with what its
+        argument's value is, for the unit it is in (angle-argument-unit)."""
+        if self.evaluator is None or in_if0(call) or self._fn_of(call) == "":
+            return
+        if name in self.evaluator.folder.functions:
+            return  # the app's own function of that name: it takes what it takes
+        s = strip_parens(arg)
+        if s is None or s.type == "number_literal" or _in_place(call, s):
+            return
+        value = self.value(arg)
+        value.abstract = self.evaluator.of(self.pf, arg)
+        use = TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call))
+        self.out.angle_arguments.append(use)
+
     def _trig(self, call: Any, name: str, arg: Any) -> None:
         """A sine, cosine or tangent of a value that is not a number written out: its
         value, for the unit it is in (trig-of-degrees)."""
@@ -1379,6 +1420,10 @@ class Extractor:
         argv = args.named_children
         spans = self.pf.spans
         out = self.out
+        if name in UNIT_ARGUMENT and fn.type in ("identifier", "qualified_identifier"):
+            real = [a for a in argv if a.type != "comment"]
+            if len(real) == 1:
+                self._angle_argument(call, name, real[0])
         if name in PUBLISH and argv and _is_moos_call(fn):
             self._publish(call, args, argv[0], argv[1] if len(argv) > 1 else None, 1)
         elif name == NOTIFY_MSG and fn.type == "identifier":

@@ -56,6 +56,20 @@ HELPERS: dict[str, tuple[str | None, str | None, tuple[float, float] | None, str
     "radians": ("deg", "rad", None, None),
 }
 
+#: MOOS-IvP's MBUtils functions that give back their first argument rounded or clipped,
+#: in its unit (lib_mbutil/MBUtils.cpp): ``snapToStep(orig_value, step)`` rounds to the
+#: nearest multiple of ``step`` and ``snapDownToStep`` to the one below (lines 1972 and
+#: 1999), ``vclip(var, low, high)``, ``vclip_min(var, low)`` and ``vclip_max(var, high)``
+#: clip it (lines 1520, 1532 and 1542). Each maps to the places of its low and high bounds
+#: among the arguments (the range of what it returns), None where it has none.
+KEEPS_UNIT: dict[str, tuple[int | None, int | None]] = {
+    "snapToStep": (None, None),
+    "snapDownToStep": (None, None),
+    "vclip": (1, 2),
+    "vclip_min": (1, None),
+    "vclip_max": (None, 1),
+}
+
 #: Inverse trigonometric functions of <cmath>: radians, in these ranges.
 INVERSE_TRIG: dict[str, tuple[float, float]] = {
     "atan2": (-math.pi, math.pi),

@@ -250,6 +250,9 @@ class CppFile:
     decimal_commas: list[DecimalComma] = field(default_factory=list)
     shadowed_branches: list[ShadowedBranch] = field(default_factory=list)
     trig_uses: list[TrigUse] = field(default_factory=list)
+    #: calls of MOOS's angle functions (``angle360(h)``, ``MOOSDeg2Rad(h)``) with their
+    #: argument's value
+    angle_arguments: list[TrigUse] = field(default_factory=list)
     unit_mixes: list[UnitMix] = field(default_factory=list)
     has_main: bool = False
     has_on_new_mail: bool = False

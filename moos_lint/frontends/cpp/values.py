@@ -513,6 +513,19 @@ def _speed_named(key: str, v: AbstractValue) -> bool:
     return v.hint and v.unit == "deg" and v.nmea_speed is None and speed_name_unit(key) is not None
 
 
+def _heading_named(key: str, v: AbstractValue) -> AbstractValue:
+    """``v`` kept in ``key``: an angle in degrees whose turning sense only a hint gives
+    (an NMEA field, a device's angle), kept in a variable named a heading, turns as a
+    heading does (``double heading = atof(rmc[8].c_str())``: the RMC track angle is
+    degrees clockwise from north, as every NMEA 0183 angle is)."""
+    if not (v.hint and v.unit == "deg" and v.sense is None and v.pending is None):
+        return v
+    hint = name_hint(key)
+    if hint.sense != "heading" or hint.unit != "deg":
+        return v
+    return replace(v, sense="heading").because(hint.why[0])
+
+
 def comment_hint(line: str) -> AbstractValue:
     m = _COMMENT_UNIT.search(line)
     if not m:
@@ -1069,6 +1082,10 @@ class Evaluator:
                 return constant(float(re.sub(r"[fFlLuU]+$", "", text(n))))
             except ValueError:
                 return UNKNOWN
+        if t == "field_expression" and text(n.child_by_field_name("field")) == "m_dfVal":
+            # CMOOSMsg's value as a public member (core MOOS, Comms/MOOSMsg.h), as old
+            # apps read it: ``if(msg.m_sKey == "NAV_YAW") m_yaw = msg.m_dfVal;``
+            return self._mail(pf, n)
         if t in ("identifier", "field_expression", "qualified_identifier"):
             return self._name(pf, n, depth)
         if t == "unary_expression":
@@ -1154,6 +1171,40 @@ class Evaluator:
             v = settle(v, f"{brief(text(n))} at {_at(pf, n)}")
         elif v.const is None and s != 1.0 and v.pending is None and _speed_scaled(v, s):
             v = settle(v, f"`{brief(text(n))}` at {_at(pf, n)}")
+        return v
+
+    def _kept(
+        self, pf: Any, n: Any, args: list, bounds: tuple[int | None, int | None], depth: int
+    ) -> AbstractValue:
+        """A :data:`facts.KEEPS_UNIT` call: its first argument's value, rounded or clipped
+        to the bounds it is given (``vclip(yaw, -M_PI, M_PI)``)."""
+        v = settle(self._eval(pf, args[0], depth + 1))
+        lo_hi = []
+        for i in bounds:
+            c = (
+                settle(self._eval(pf, args[i], depth + 1)).const
+                if i is not None and i < len(args)
+                else None
+            )
+            lo_hi.append(c)
+        lo, hi = lo_hi
+        if v.const is not None or bounds == (None, None):
+            return v
+        if v.pending is not None:
+            # (a value still to be resolved is clipped once it is: to both bounds, or to
+            # a range we cannot say)
+            if lo is None or hi is None:
+                return UNKNOWN
+            return wrapped(v, (lo, hi), None, f"{brief(text(n), 40)} at {_at(pf, n)}")
+        rng = v.range
+        if lo is not None or hi is not None:
+            old_lo, old_hi = rng if rng else (-math.inf, math.inf)
+            rng = (
+                max(old_lo, lo) if lo is not None else old_lo,
+                min(old_hi, hi) if hi is not None else old_hi,
+            )
+            why = f"{brief(text(n), 40)} at {_at(pf, n)}"
+            return replace(v, range=rng).because(why) if v.known else replace(v, range=rng)
         return v
 
     def _arith(self, pf: Any, n: Any, depth: int) -> AbstractValue:
@@ -1265,6 +1316,8 @@ class Evaluator:
             return wrapped(x, rng, None, f"{bare}(·, {shown}) at {at}")
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
+        if name in facts.KEEPS_UNIT and args:
+            return self._kept(pf, n, args, facts.KEEPS_UNIT[name], depth)
         if name in facts.TEXT_TO_NUMBER:
             speed = _nmea_speed(n, args) if pf.path in self.folder.nmea_speed else None
             if pf.path in self.folder.nmea:
@@ -1550,14 +1603,21 @@ class Evaluator:
                     # a depth worked out from a pressure (``double depth = (p - p0) / rho_g``)
                     hint = name_hint(key)
                     v = hint if hint.sign == "down" else v
+                else:
+                    v = _heading_named(key, v)
                 if cond is not None and state is not None and not _inside(use, cond):
                     state = join(state, v)
                 else:
                     state = v
                 continue
-            base = (
-                state if state is not None else (UNKNOWN if declared else self._member(key, depth))
-            )
+            if state is not None:
+                base = state
+            elif declared:
+                base = UNKNOWN
+            elif _is_param(fnode, key):  # a parameter changed in place (``hdg -= 360``)
+                base = self._param(fnode, key, depth)
+            else:
+                base = self._member(key, depth)
             state = self._compound(pf, a, base, cond, key, depth)
         return state
 
@@ -1581,7 +1641,7 @@ class Evaluator:
                 if v is None:
                     continue  # the function does not set this argument
                 v = v.because(f"{name}() sets `{key}` at {at}")
-            elif name in _NOT_SETTERS or not name:
+            elif name in _NOT_SETTERS or not name or _by_value(name):
                 continue
             else:
                 prior = self._assigned(pf, fnode, call, key, before, declared, depth)
@@ -1715,6 +1775,8 @@ class Evaluator:
                 v = settle(self._eval(pf, a.rhs, depth + 1))
                 if _speed_named(key, v):
                     v = name_hint(key)
+                else:
+                    v = _heading_named(key, v)
                 if v.known and v.pending is None and a.fn is not None:
                     v = v.because(f"`{key}` set at {place(pf.path, a.node.start_point[0] + 1)}")
                 yield v
@@ -1895,6 +1957,22 @@ _NOT_SETTERS = {
     "min",
     "max",
 }
+
+
+def _by_value(name: str) -> bool:
+    """Whether ``name`` is a function of a library the analysis knows that takes its
+    arguments by value (``degToRadians(hdg)``, ``angle360(h)``, ``atan2(dy, dx)``): a call
+    of it never sets a variable handed to it."""
+    bare = re.sub(r"^std::", "", name)
+    return (
+        name in facts.HELPERS
+        or name in facts.KEEPS_UNIT
+        or bare in _PASS_THROUGH
+        or bare in facts.INVERSE_TRIG
+        or bare.rstrip("f") in facts.INVERSE_TRIG
+        or bare in facts.TEXT_TO_NUMBER
+        or bool(re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name))
+    )
 
 
 def _calls_passing(fnode: Any, key: str, memo: dict) -> list[tuple[Any, str, int]]:
@@ -2778,9 +2856,10 @@ def link_values(
             for var, span, helper in f.consumed_degrees:
                 consumers.setdefault(var, (app.folder, span, helper))
     trig = [t.value for app in apps for f in app.files for t in f.trig_uses]
+    angle_args = [t.value for app in apps for f in app.files for t in f.angle_arguments]
     waiting = [
         v.abstract
-        for v in [*(pub.value for app in apps for pub in app.publications), *trig]
+        for v in [*(pub.value for app in apps for pub in app.publications), *trig, *angle_args]
         if v is not None and v.abstract and v.abstract.pending
     ]
     resolver: RepositoryResolver | None = None
@@ -2818,6 +2897,20 @@ def link_values(
         if value.abstract is not None and value.abstract.pending and resolver is not None:
             value.abstract = resolve_pending(value.abstract, resolver)
         if value.abstract is not None and mail_source(value.abstract) in not_degrees:
+            value.abstract = UNKNOWN
+    # the arguments of the angle functions (angle-argument-unit): a variable read by mail
+    # that the repository's own apps publish in a unit not known to be the same is unknown
+    published: dict[str, set[str | None]] = {}
+    for app in apps:
+        for pub in app.publications:
+            if pub.name.text:
+                a = pub.value.abstract if pub.value is not None else None
+                published.setdefault(pub.name.text, set()).add(a.unit if a else None)
+    for value in angle_args:
+        if value.abstract is not None and value.abstract.pending and resolver is not None:
+            value.abstract = resolve_pending(value.abstract, resolver)
+        source = mail_source(value.abstract) if value.abstract is not None else None
+        if source in published and published[source] != {value.abstract.unit}:
             value.abstract = UNKNOWN
     _siblings(apps)
 
