@@ -56,7 +56,9 @@ def is_heading_var(name: str) -> bool:
 
 
 def is_z_var(name: str) -> bool:
-    return last_word(name) == "Z" and (len(words(name)) > 1 or name == "Z")
+    """``NAV_Z``, ``Z``, or the known end of a name built on a prefix (``prefix + "_Z"``);
+    not a one-letter word inside another name."""
+    return last_word(name) == "Z" and (len(words(name)) > 1 or name == "Z" or name.startswith("_"))
 
 
 def is_latlong_var(name: str) -> bool:

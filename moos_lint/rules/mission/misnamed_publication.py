@@ -15,7 +15,11 @@ same words but one, with a letter left out, added, changed or two swapped
 (`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`). That read name must be
 settled: read by an app's or a behavior's code, or published in the mission
 too; a name only a condition waits for may be the misspelt one, and
-unpublished-subscription reports it there. Names of four letters or fewer,
+unpublished-subscription reports it there. A posting a typo away from a
+behavior's `updates` variable that nothing posts (`STATOIN_UPDATES` where a
+behavior reads `updates = STATION_UPDATES`) is reported too, as a mismatch
+whose misspelt side is not known: the updates name is the mission's own
+choice, so either may be wrong, and no fix is offered. Names of four letters or fewer,
 and names that differ in a number (`VEHICLE_1`, `VEHICLE_2`), in a word of
 one or two letters (`NAV_X`, `NAV_Y`), by a letter of a short word
 (`SET_POS`, `GET_POS`) or by a short word (`TERM_NEG`, `TERM_NUM`), are not
@@ -62,6 +66,7 @@ from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.spelling import VariableSpeller
 from moos_lint.rules.mission.unread_publication import judged_postings
 from moos_lint.semantics.mission_model import mission_model
+from moos_lint.semantics.variables import SUBSCRIBE, bare_name
 
 _NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 
@@ -89,25 +94,39 @@ def check(ctx):
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
     speller: VariableSpeller | None = None
+    updates: VariableSpeller | None = None
     for ref, name in postings:
         if not _NAME.fullmatch(name):
             continue
         meant = sorted(by_words.get(words(name), set()) - {name})
         how = "with the same words"
+        either = False
         if not meant:
             if speller is None:
                 speller = VariableSpeller(_settled(ctx, by_words))
             typo = speller.meant(name)
             if typo is None:
+                if updates is None:
+                    updates = VariableSpeller(_unposted_updates(ctx))
+                typo = updates.meant(name)
+                either = typo is not None
+            if typo is None:
                 continue
             meant, how = [typo], "a typo away"
         shown = " or ".join(f"`{m}`" for m in meant)
-        msg = (
-            f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads it; "
-            f"{shown}, {how}, is read: did you mean it?"
-        )
+        if either:
+            msg = (
+                f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads "
+                f"it; {shown}, {how}, is a behavior's `updates` variable that nothing posts: "
+                "one of the two names is misspelt"
+            )
+        else:
+            msg = (
+                f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads "
+                f"it; {shown}, {how}, is read: did you mean it?"
+            )
         fix = None
-        if len(meant) == 1 and ref.line.text == ref.line.raw:
+        if len(meant) == 1 and not either and ref.line.text == ref.line.raw:
             span = ref.line.span(ref.start, ref.start + len(name))
             fix = Fix(f"post `{meant[0]}`", (Edit(span, meant[0]),))
         yield ctx.report(
@@ -117,6 +136,18 @@ def check(ctx):
             fix=fix,
             subject=Subject(variable=name, app=ref.app, key=ref.param),
         )
+
+
+def _unposted_updates(ctx) -> Iterator[str]:
+    """The behaviors' ``updates`` variables that nothing in the mission posts: a posting
+    nothing reads that is a typo from one is the other half of one mismatch, and either
+    name may be the misspelt one."""
+    model = mission_model(ctx)
+    for ref in model.refs:
+        if ref.role == SUBSCRIBE and ref.param == "updates":
+            name = bare_name(ref.name)
+            if name and name == ref.name and not model.published_by(name):
+                yield name
 
 
 def _settled(ctx, by_words: dict[tuple[str, ...], set[str]]) -> Iterator[str]:
