@@ -49,7 +49,9 @@ from moos_lint.frontends.cpp.names import (
     valued_name,
 )
 
-PUBLISH = {"Notify"}
+#: ``Notify``, and what a helm behavior posts through (IvPBehavior.h: ``postMessage(var,
+#: value)``, ``postIntMessage`` of a number rounded, ``postRepeatableMessage``), name first
+PUBLISH = {"Notify", "postMessage", "postIntMessage", "postRepeatableMessage"}
 #: a message built to be posted: ``CMOOSMsg Msg(MOOS_NOTIFY, "DESIRED_RUDDER", dfRudder)``
 #: (then ``m_Comms.Post(Msg)``, or handed back in a task's message list)
 NOTIFY_MSG = "CMOOSMsg"

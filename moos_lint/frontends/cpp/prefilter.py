@@ -41,8 +41,9 @@ _NEEDLES = (
 
 
 #: a helm behavior's read of the helm's buffer (``getBufferDoubleVal("NAV_HEADING", ok)``,
-#: ``getBufferDoubleValX``)
-_BUFFER_READ = b"getBufferDoubleVal"
+#: ``getBufferDoubleValX``), or its postings (``postMessage("TRAIL_HEADING", h)``): a
+#: contact behavior's headings come from its base class, read in no file of its own
+_BEHAVIOR_WORDS = (b"getBufferDoubleVal", b"postMessage", b"postIntMessage")
 #: angle arithmetic whose units the value checks of a behavior judge: a trigonometric
 #: call, a conversion between degrees and radians, π
 _ANGLE_WORK = re.compile(
@@ -53,8 +54,8 @@ _ANGLE_WORK = re.compile(
 
 def mentions_moos(data: bytes) -> bool:
     """Whether a C++ file mentions any MOOS API, or is a helm behavior's that reads the
-    helm's buffer and does angle arithmetic (what the value checks of a behavior judge;
-    cheap, on bytes)."""
+    helm's buffer or posts, and does angle arithmetic (what the value checks of a behavior
+    judge; cheap, on bytes)."""
     if any(needle in data for needle in _NEEDLES) and any(p.search(data) for p in _MOOS_API):
         return True
-    return _BUFFER_READ in data and _ANGLE_WORK.search(data) is not None
+    return any(w in data for w in _BEHAVIOR_WORDS) and _ANGLE_WORK.search(data) is not None
