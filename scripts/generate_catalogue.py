@@ -961,7 +961,32 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
         "behaviors": behaviors,
         "editor_behaviors": editor_behaviors(src, set(behaviors)),
         "executables": executables(src),
+        "background_images": background_images(src),
     }
+
+
+def background_images(src: str) -> dict[str, dict[str, object]]:
+    """The background images MOOS-IvP ships for pMarineViewer's ``tiff_file`` (``ivp/data``)
+    whose ``.info`` file places them on the earth: the image's file name -> its edges and
+    the ``.info`` file they come from (read as :func:`image_box` reads one)."""
+    from moos_lint.semantics.background_images import image_box
+
+    data = os.path.join(src, "ivp", "data")
+    out: dict[str, dict[str, object]] = {}
+    names = sorted(os.listdir(data)) if os.path.isdir(data) else []
+    for name in names:
+        if not name.endswith(".info"):
+            continue
+        box = image_box(_read(os.path.join(data, name)), f"ivp/data/{name}")
+        if box is not None:
+            out[name[: -len(".info")] + ".tif"] = {
+                "lat_north": box.lat_north,
+                "lat_south": box.lat_south,
+                "lon_east": box.lon_east,
+                "lon_west": box.lon_west,
+                "source": box.source,
+            }
+    return out
 
 
 def executables(src: str) -> list[str]:

@@ -14,6 +14,13 @@ expansion with its includes:
 - **out of range**: a latitude beyond ±90° or a longitude beyond ±180°
   (with a hint when the value looks like NMEA `ddmm.mmmm`);
 - **swapped**: `LatOrigin` beyond ±90° while `LongOrigin` fits a latitude;
+  or, both fitting a latitude, the origin lies more than 20 km from every
+  background image the mission's pMarineViewer shows (`tiff_file`,
+  `tiff_file_b`) and on one once swapped (`LatOrigin = -71.087589`,
+  `LongOrigin = 42.358456` with `MIT_SP.tif`). Where an image lies comes from
+  its `.info` file in the mission's folder or its parents up to the project
+  root, read as data, or for the images MOOS-IvP ships (`forrest19.tif`,
+  `MIT_SP.tif`) from the stock catalogue (their `ivp/data/*.info`);
 - **in radians**: both values within ±π/2 and ±π, not both zero. Origins are
   decimal degrees.
 
@@ -37,7 +44,13 @@ Deliberately not reported:
 - a missing origin that a shell script beside the mission gives pAntler on
   its command line (`pAntler alpha.moos --LatOrigin=43.8 --LongOrigin=-70.3`):
   pAntler runs a copy of the file with those lines added;
-- `LatOrigin = 0, LongOrigin = 0`, a common "no geodesy" choice in simulation.
+- `LatOrigin = 0, LongOrigin = 0`, a common "no geodesy" choice in simulation;
+- an origin merely far from the viewer's image, not swapped (an origin at Forrest
+  Lake with `MIT_SP.tif`): pMarineViewer puts the image's own datum at the local
+  grid's (0, 0), so a simulation looks right on the wrong shore; 91 missions of
+  201 public repositories do so, copied from one lab to another;
+- a viewer given an image nothing in the project describes and MOOS-IvP does not
+  ship (it may show the origin as written).
 
 ## Example
 ```moos
@@ -78,9 +91,11 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity
-from moos_lint.files.launch import antler_overrides
+from moos_lint.files.launch import antler_overrides, find_relative, launch_folders, project_folder
+from moos_lint.files.source import ReadProblem, read_bytes
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.semantics.background_images import ImageBox, apart, image_box, info_name
 from moos_lint.semantics.catalogue import catalogue_for
 
 # What MOOSIsNumeric accepts, roughly: a plain decimal number.
@@ -145,6 +160,72 @@ def check(ctx):
                 line=p.line,
             )
     yield from _radians(ctx, lats, lons)
+    yield from _swapped_by_map(ctx, lats, lons)
+
+
+#: how far from a background image an origin may lie and still be its place, metres (the
+#: work area of a local grid)
+_ON_MAP = 20_000.0
+#: pMarineViewer's keys that each add a background image
+_IMAGE_KEYS = ("tiff_file", "tiff_file_b")
+
+
+def _swapped_by_map(ctx, lats, lons):
+    """LatOrigin and LongOrigin swapped, both in range: the origin lies far from every
+    background image the mission's pMarineViewer shows, and on one once swapped back."""
+    if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
+        return
+    lat, lon = _number(lats[0]), _number(lons[0])
+    if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 90 or lat == lon:
+        return
+    boxes = []
+    folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
+    cat = catalogue_for(ctx.run)
+    for name in _images(ctx.moos):
+        box = _described(name, folders, cat)
+        if box is None:
+            return  # an image nothing here describes may well show the origin as written
+        boxes.append((name, box))
+    if not boxes or any(apart((lat, lon), b.nearest(lat, lon)) <= _ON_MAP for _n, b in boxes):
+        return
+    for name, box in boxes:
+        if apart((lon, lat), box.nearest(lon, lat)) <= _ON_MAP:
+            yield ctx.report(
+                lats[0].value_span,
+                f"`LatOrigin = {lats[0].value.strip()}`, `LongOrigin = {lons[0].value.strip()}` "
+                f"lie far from the background map (`{name}` covers {box.shown()}, "
+                f"{box.source}) and swapped they lie on it: are LatOrigin and LongOrigin "
+                "swapped?",
+                line=lats[0].line,
+            )
+            return
+
+
+def _images(moos):
+    """The background images a launched pMarineViewer is given (``tiff_file``)."""
+    names = {run.name.lower() for run in moos.runs if run.program.lower() == "pmarineviewer"}
+    for block in moos.blocks:
+        if block.header is None or block.lname not in names:
+            continue
+        for p in block.params:
+            if p.lkey in _IMAGE_KEYS:
+                value = "".join(p.value.split()).strip('"')
+                if value and value.lower() != "null.tif":
+                    yield value
+
+
+def _described(name: str, folders: list[str], cat) -> ImageBox | None:
+    """Where image ``name`` lies: its ``.info`` file in the mission's folders (a name with a
+    macro, or outside the project, is not looked for), else the stock image of its name."""
+    if has_macro(name) or os.path.isabs(name) or ".." in name.split("/"):
+        return None
+    info = find_relative(info_name(name), folders)
+    if info is not None:
+        data = read_bytes(info)
+        if isinstance(data, ReadProblem):
+            return None
+        return image_box(data.decode("utf-8", "replace"), os.path.basename(info))
+    return cat.background_images.get(os.path.basename(name).lower())
 
 
 def _swapped(lons, lat) -> bool:

@@ -66,7 +66,6 @@ Give the missions one origin, best from one plug that both include
 
 from __future__ import annotations
 
-import math
 import os
 
 from moos_lint.files.diagnostics import Severity
@@ -75,10 +74,8 @@ from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.units.latlong_origin import _number
+from moos_lint.semantics.background_images import apart
 from moos_lint.semantics.shares import share_partners
-
-#: the mean radius of the Earth, metres (enough for a distance told in metres or km)
-_EARTH = 6_371_000.0
 
 
 def origin(moos):
@@ -97,16 +94,6 @@ def _origin(moos):
     if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 180 or lat == lon == 0:
         return None
     return lat, lon, lats[0], f"{lats[0].value.strip()}, {lons[0].value.strip()}"
-
-
-def apart(a: tuple[float, float], b: tuple[float, float]) -> float:
-    """Metres between two points (lat, lon) in degrees, a few kilometres apart or more."""
-    la1, lo1, la2, lo2 = (math.radians(v) for v in (*a, *b))
-    h = (
-        math.sin((la2 - la1) / 2) ** 2
-        + math.cos(la1) * math.cos(la2) * math.sin((lo2 - lo1) / 2) ** 2
-    )
-    return 2 * _EARTH * math.asin(min(1.0, math.sqrt(h)))
 
 
 def _told(metres: float) -> str:

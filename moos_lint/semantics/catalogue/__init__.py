@@ -47,6 +47,7 @@ from moos_lint.frontends.text_format_apps import (  # re-exported: the catalogue
 from moos_lint.frontends.text_format_apps import TextFormatSchema as TextFormatSchema
 from moos_lint.frontends.text_format_apps import text_format_app as text_format_app
 from moos_lint.frontends.text_format_apps import text_format_schema as text_format_schema
+from moos_lint.semantics.background_images import ImageBox
 from moos_lint.semantics.run_state import RunView
 
 if TYPE_CHECKING:
@@ -197,6 +198,9 @@ class Catalogue:
         #: MOOS-IvP (``retired.json``'s label: ``August 2019``) that last read it
         self.retired: dict[str, dict[str, dict[str, str]]] = {}
         self.source: dict[str, str] = {}
+        #: the background images MOOS-IvP ships for pMarineViewer (file name, lower case
+        #: -> where on the earth it lies: ``background_images`` in ``stock.json``)
+        self.background_images: dict[str, ImageBox] = {}
         #: what a lint run's catalogue was made from (the stock catalogue, each user
         #: catalogue file's (mtime, size)): two catalogues with equal inputs say the
         #: same. None when it also holds the run's own C++ apps (made anew each run).
@@ -275,6 +279,7 @@ class Catalogue:
         c.same_values = self.same_values
         c.retired = self.retired
         c.source = dict(self.source)
+        c.background_images = dict(self.background_images)
         return c
 
     def add_app(self, info: AppInfo) -> None:
@@ -426,6 +431,15 @@ def stock() -> Catalogue:
         cat.outside_behaviors[name.lower()] = name
     for name in data.get("executables", []):
         cat.executables[name.lower()] = name
+    for name, d in data.get("background_images", {}).items():
+        with contextlib.suppress(KeyError, TypeError, ValueError):
+            cat.background_images[name.lower()] = ImageBox(
+                lat_north=float(d["lat_north"]),
+                lat_south=float(d["lat_south"]),
+                lon_east=float(d["lon_east"]),
+                lon_west=float(d["lon_west"]),
+                source=f"moos-ivp {commit[:8]} {d.get('source', '')}",
+            )
     cat.retired = _retired()
     return cat
 
