@@ -1084,8 +1084,11 @@ class Evaluator:
                 return UNKNOWN
         if t == "field_expression" and text(n.child_by_field_name("field")) == "m_dfVal":
             # CMOOSMsg's value as a public member (core MOOS, Comms/MOOSMsg.h), as old
-            # apps read it: ``if(msg.m_sKey == "NAV_YAW") m_yaw = msg.m_dfVal;``
-            return self._mail(pf, n)
+            # apps read it: ``if(msg.m_sKey == "NAV_YAW") m_yaw = msg.m_dfVal;`` (a field
+            # of that name outside such a branch is read as any other field)
+            mail = self._mail(pf, n)
+            if mail.known:
+                return mail
         if t in ("identifier", "field_expression", "qualified_identifier"):
             return self._name(pf, n, depth)
         if t == "unary_expression":
