@@ -16,16 +16,19 @@ anywhere in the repository and struct fields (README, "C++ apps"); the finding
 says why, as a chain.
 
 Not reported: a value whose unit only its name suggests (`yaw_deg`), a
-function of that name the app defines itself, and a variable read by
-mail that an app of the same repository publishes in a unit not known to be the
-one the conventions give it.
+function of that name the app defines itself, a variable read by mail that an
+app of the same repository publishes in a unit not known to be the one the
+conventions give it, and a value converted where it is kept
+(`m_max_pitch = MOOSDeg2Rad(m_max_pitch)`: what it held before is what the
+author converts).
 
 ## Why is this bad?
 The wrap or conversion does its arithmetic in the unit it takes. `angle360()`
 of a yaw of −1.2 rad gives 358.8: a "heading" of almost north for a vehicle
-heading west-north-west. `MOOSDeg2Rad()` of an angle already in radians makes
-it 57 times too small, and `MOOS_ANGLE_WRAP()` of 270° gives 1.3 (the remainder
-of 270 in turns of 2π). Nothing fails: the number is simply wrong.
+heading east-north-east (68.8°, as −MOOSRad2Deg(−1.2) says). `MOOSDeg2Rad()`
+of an angle already in radians makes it 57 times too small, and
+`MOOS_ANGLE_WRAP()` of 270° gives −0.18 (270 radians less 43 turns of 2π),
+where −π/2 was meant. Nothing fails: the number is simply wrong.
 
 ## Example
 ```cpp
