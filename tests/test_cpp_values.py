@@ -601,9 +601,10 @@ def test_a_setter_call_on_another_class_is_not_the_getters(tmp_path):
 
 
 def test_a_library_class_method_is_what_the_library_says(tmp_path):
-    """``euler.pitch()`` of an ``XsEuler`` is the Xsens SDK's degrees, even where the
-    repository defines a ``pitch()`` of its own class in radians; a method of another
-    class is still read from the repository."""
+    """``euler.pitch()`` of an ``XsEuler`` is the Xsens SDK's degrees, known where it is
+    called (before a name it is kept in says otherwise), even where the repository defines
+    a ``pitch()`` of its own class in radians; a method of another class is still read
+    from the repository."""
     app = """
     class A : public CMOOSApp { Attitude m_att; };
     void A::onPacket(const XsDataPacket& packet) {
@@ -613,7 +614,8 @@ def test_a_library_class_method_is_what_the_library_says(tmp_path):
     }
     """
     v = published(app)
-    assert v["IMU_PITCH"].receiver == "XsEuler" and v["ATT_PITCH"].receiver == "Attitude"
+    assert v["IMU_PITCH"].pending is None and v["IMU_PITCH"].receiver == "XsEuler"
+    assert v["ATT_PITCH"].receiver == "Attitude"
     own = "double Attitude::pitch() const { return asin(m_q); }"
     out = _resolve_in(tmp_path, {"lib/Attitude.cpp": own}, v["IMU_PITCH"])
     assert (out.unit, out.range) == ("deg", (-90.0, 90.0)) and "XsEuler" in out.why[0]

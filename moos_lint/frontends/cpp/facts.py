@@ -232,12 +232,22 @@ LIBRARY_FIELDS: dict[tuple[str, str], tuple[str | None, str | None, tuple[float,
 #: from an asin), and xseuler.h's ``roll()``, ``pitch()``, ``yaw()`` (also ``x()``,
 #: ``y()``, ``z()``) return them; the yaw's sense follows the frame the device is set to.
 _XS_EULER = "the Xsens SDK's XsEuler holds Euler angles in degrees"
+#: MOOS-IvP's ownship models hold the helm's NAV_HEADING as a behavior sets their pose:
+#: lib_geometry's ``PlatModel::setOSH`` keeps ``angle360(osh)`` and ``getOSH()`` returns it
+#: (PlatModel.cpp:67-70, PlatModel.h:70); lib_bhvutil's ``ObShipModelV24::getOSH()``
+#: returns its PlatModel's (ObShipModelV24.h:76), lib_dep_behaviors' ``ObShipModel`` its
+#: own ``angle360(osh)`` (ObShipModel.cpp:93, ObShipModel.h:61)
+_OWNSHIP_HEADING = "MOOS-IvP's ownship heading, degrees clockwise from north"
 LIBRARY_METHODS: dict[tuple[str, str], tuple[str, str | None, tuple[float, float], str]] = {
     **{
         ("XsEuler", method): ("deg", None, (-180.0, 180.0), _XS_EULER)
         for method in ("roll", "yaw", "x", "z")
     },
     **{("XsEuler", method): ("deg", None, (-90.0, 90.0), _XS_EULER) for method in ("pitch", "y")},
+    **{
+        (cls, "getOSH"): ("deg", "heading", (0.0, 360.0), _OWNSHIP_HEADING)
+        for cls in ("PlatModel", "ObShipModel", "ObShipModelV24")
+    },
 }
 
 #: Methods of library classes that return an object of a library class: (class, method)

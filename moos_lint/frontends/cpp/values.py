@@ -1352,9 +1352,12 @@ class Evaluator:
         if own:
             return self._returns(name, own, depth)
         receiver = self.object_class(pf, fn) if fn.type == "field_expression" else None
-        return AbstractValue(
+        pending = AbstractValue(
             pending=name, why=(f"{brief(text(n), 40)} at {at}",), receiver=receiver
         )
+        # a library class's method is known now, before a name it is kept in says otherwise
+        method = library_method(pending) if receiver else None
+        return replace(method, receiver=receiver) if method is not None else pending
 
     def object_class(self, pf: Any, fn: Any) -> str | None:
         """The class of the object method ``fn`` (a field expression) is called on
