@@ -20,6 +20,7 @@ entry so changed lists the correction in its ``corrected`` field.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import glob
 import json
 import os
@@ -979,13 +980,7 @@ def background_images(src: str) -> dict[str, dict[str, object]]:
             continue
         box = image_box(_read(os.path.join(data, name)), f"ivp/data/{name}")
         if box is not None:
-            out[name[: -len(".info")] + ".tif"] = {
-                "lat_north": box.lat_north,
-                "lat_south": box.lat_south,
-                "lon_east": box.lon_east,
-                "lon_west": box.lon_west,
-                "source": box.source,
-            }
+            out[name[: -len(".info")] + ".tif"] = dataclasses.asdict(box)
     return out
 
 

@@ -5,9 +5,10 @@ latitudes of its north and south edges and the longitudes of its east and west e
 (MOOS-IvP's lib_marineview/BackImg.cpp:393-435 reads ``lat_north``, ``lat_south``,
 ``lon_west`` and ``lon_east``, each line cut at ``//``, a later line replacing an earlier
 one; an image described only in the older ``img_centx`` form is placed on the local grid,
-not on the earth). The viewer draws the image where those edges fall on the mission's local
-grid, so a vehicle near the mission's origin is drawn on the image only when the origin
-lies on or near it.
+not on the earth). The viewer puts the image's own datum (``datum_lat``/``datum_lon``, or
+its centre) at the local grid's (0, 0), so a mission whose origin lies far from its image
+still shows its vehicles on it, on the wrong shore: an origin far from every image and on
+one once its two values are swapped back is a swapped origin (latlong-origin).
 """
 
 from __future__ import annotations

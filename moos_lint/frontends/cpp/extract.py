@@ -236,7 +236,7 @@ def _in_place(call: Any, arg: Any) -> bool:
     if parent is None or parent.type != "assignment_expression":
         return False
     left = parent.child_by_field_name("left")
-    return left is not None and text(left) == text(arg)
+    return arg is not None and left is not None and text(left) == text(arg)
 
 
 def _radians_call(n: Any) -> bool:
@@ -1131,11 +1131,10 @@ class Extractor:
         for node, angle, number in pf.turns:
             self._turn_mix(node, angle, number)
         for a in pf.asgs:
-            # ``if (hdg < 0) hdg += 360``: a turn in degrees added to the variable in place
+            # ``if (hdg < 0) hdg += 360``: a turn in degrees added to a variable in place
             turn = a.rhs.type == "number_literal" and re.match(DEGREE_TURNS, text(a.rhs))
-            if a.op in ("+=", "-=") and turn:
+            if turn and a.op in ("+=", "-="):
                 self._turn_mix(a.node, a.node.child_by_field_name("left"), a.rhs)
-        for a in pf.asgs:
             if a.rhs.type == "argument_list" and a.node.type == "init_declarator":
                 decl = a.node.parent
                 kind = decl.child_by_field_name("type") if decl is not None else None
@@ -1279,34 +1278,40 @@ class Extractor:
         place = places.get(stmt.start_byte)
         return (block.start_byte, place) if place is not None else None
 
-    def _angle_argument(self, call: Any, name: str, arg: Any) -> None:
-        """A call of one of MOOS's angle functions (:data:`UNIT_ARGUMENT`) with what its
-        argument's value is, for the unit it is in (angle-argument-unit)."""
+    def _argument_use(self, call: Any, name: str, arg: Any) -> TrigUse | None:
+        """A call of a function that takes an angle in one unit, with its argument's value:
+        None outside a function, under ``#if 0``, or for a number written out."""
         if self.evaluator is None or in_if0(call) or self._fn_of(call) == "":
-            return
-        if name in self.evaluator.folder.functions:
-            return  # the app's own function of that name: it takes what it takes
-        s = strip_parens(arg)
-        if s is None or s.type == "number_literal" or _in_place(call, s):
-            return
-        value = self.value(arg)
-        value.abstract = self.evaluator.of(self.pf, arg)
-        use = TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call))
-        self.out.angle_arguments.append(use)
-
-    def _trig(self, call: Any, name: str, arg: Any) -> None:
-        """A sine, cosine or tangent of a value that is not a number written out: its
-        value, for the unit it is in (trig-of-degrees)."""
-        if self.evaluator is None or in_if0(call) or self._fn_of(call) == "":
-            return
+            return None
         s = strip_parens(arg)
         if s is None or s.type == "number_literal":
-            return
+            return None
         value = self.value(arg)
         value.abstract = self.evaluator.of(self.pf, arg)
-        if value.abstract.unit is None and value.abstract.pending is None:
-            value.abstract = self.evaluator.degree_term(self.pf, arg) or value.abstract
-        self.out.trig_uses.append(TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call)))
+        return TrigUse(name, value, self.pf.spans.of(call), self._fn_of(call))
+
+    def _angle_argument(self, call: Any, name: str, arg: Any) -> None:
+        """A call of one of MOOS's angle functions (:data:`UNIT_ARGUMENT`), for the unit
+        its argument is in (angle-argument-unit); not the app's own function of that name
+        (it takes what it takes), nor a value converted where it is kept."""
+        if self.evaluator is None or name in self.evaluator.folder.functions:
+            return
+        if _in_place(call, strip_parens(arg)):
+            return
+        use = self._argument_use(call, name, arg)
+        if use is not None:
+            self.out.angle_arguments.append(use)
+
+    def _trig(self, call: Any, name: str, arg: Any) -> None:
+        """A sine, cosine or tangent of a value that is not a number written out, for the
+        unit it is in (trig-of-degrees)."""
+        use = self._argument_use(call, name, arg)
+        if use is None:
+            return
+        v = use.value.abstract
+        if v is not None and v.unit is None and v.pending is None:
+            use.value.abstract = self.evaluator.degree_term(self.pf, arg) or v
+        self.out.trig_uses.append(use)
 
     def _unit_mix(self, node: Any, left: Any, right: Any) -> None:
         """Degrees and radians added, subtracted or compared (mixed-angle-units): each side's

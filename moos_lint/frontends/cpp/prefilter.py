@@ -43,7 +43,12 @@ _NEEDLES = (
 #: a helm behavior's read of the helm's buffer (``getBufferDoubleVal("NAV_HEADING", ok)``,
 #: ``getBufferDoubleValX``), or its postings (``postMessage("TRAIL_HEADING", h)``): a
 #: contact behavior's headings come from its base class, read in no file of its own
-_BEHAVIOR_WORDS = (b"getBufferDoubleVal", b"postMessage", b"postIntMessage")
+_BEHAVIOR_WORDS = (
+    b"getBufferDoubleVal",
+    b"postMessage",
+    b"postIntMessage",
+    b"postRepeatableMessage",
+)
 #: angle arithmetic whose units the value checks of a behavior judge: a trigonometric
 #: call, a conversion between degrees and radians, π
 _ANGLE_WORK = re.compile(

@@ -1355,7 +1355,9 @@ class Evaluator:
         pending = AbstractValue(
             pending=name, why=(f"{brief(text(n), 40)} at {at}",), receiver=receiver
         )
-        # a library class's method is known now, before a name it is kept in says otherwise
+        # a library class's method is what the library says, even where the repository
+        # defines one of that name on a class of its own; known now, before a name that
+        # keeps it says otherwise
         method = library_method(pending) if receiver else None
         return replace(method, receiver=receiver) if method is not None else pending
 
@@ -1974,7 +1976,6 @@ def _by_value(name: str) -> bool:
         name in facts.HELPERS
         or name in facts.KEEPS_UNIT
         or bare in _PASS_THROUGH
-        or bare in facts.INVERSE_TRIG
         or bare.rstrip("f") in facts.INVERSE_TRIG
         or bare in facts.TEXT_TO_NUMBER
         or bool(re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name))
@@ -2285,11 +2286,8 @@ def resolve_pending(v: AbstractValue, resolver: Any) -> AbstractValue:
     """A pending value with its function's return resolved across the repository."""
     if v.pending is None:
         return v
-    # a library class's method: what the library's documentation says, even where the
-    # repository defines a method of that name on a class of its own
-    base = library_method(v) if v.receiver else None
-    if base is None:
-        base = resolver(v.pending, v.receiver) if v.receiver else resolver(v.pending)
+    # (a library class's method is known where it is called: :meth:`Evaluator._call`)
+    base = resolver(v.pending, v.receiver) if v.receiver else resolver(v.pending)
     if v.pending.startswith(".") and (base is None or not base.known):
         # a field the repository never writes (or not in a way we can read): its name,
         # or the comment or print label where the app reads it

@@ -114,17 +114,16 @@ def check(ctx):
                 continue
             meant, how = [typo], "a typo away"
         shown = " or ".join(f"`{m}`" for m in meant)
-        if either:
-            msg = (
-                f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads "
-                f"it; {shown}, {how}, is a behavior's `updates` variable that nothing posts: "
-                "one of the two names is misspelt"
-            )
-        else:
-            msg = (
-                f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads "
-                f"it; {shown}, {how}, is read: did you mean it?"
-            )
+        other = (
+            "is a behavior's `updates` variable that nothing posts: one of the two names is "
+            "misspelt"
+            if either
+            else "is read: did you mean it?"
+        )
+        msg = (
+            f"`{name}` is posted ({ref.app}: {ref.param}) but nothing in the mission reads it; "
+            f"{shown}, {how}, {other}"
+        )
         fix = None
         if len(meant) == 1 and not either and ref.line.text == ref.line.raw:
             span = ref.line.span(ref.start, ref.start + len(name))

@@ -93,6 +93,7 @@ import re
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import antler_overrides, find_relative, launch_folders, project_folder
 from moos_lint.files.source import ReadProblem, read_bytes
+from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.background_images import ImageBox, apart, image_box, info_name
@@ -108,6 +109,24 @@ def _number(param) -> float | None:
         return None
     value = float(text)
     return value if math.isfinite(value) else None
+
+
+def origin(moos):
+    """``(lat, lon, the LatOrigin line's parameter, the origin as written)`` of a mission
+    whose origin is known: one line of each that MOOS reads, literal numbers in range,
+    not both 0. Once per expansion (each mission of a folder asks about the others)."""
+    return derived(moos.expansion, "literal-origin", lambda: (_origin(moos),))[0]
+
+
+def _origin(moos):
+    lats = moos.read_values("LatOrigin")
+    lons = moos.read_values("LongOrigin")
+    if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
+        return None
+    lat, lon = _number(lats[0]), _number(lons[0])
+    if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 180 or lat == lon == 0:
+        return None
+    return lat, lon, lats[0], f"{lats[0].value.strip()}, {lons[0].value.strip()}"
 
 
 def _nmea_hint(value: float, limit: float) -> str:
@@ -160,7 +179,7 @@ def check(ctx):
                 line=p.line,
             )
     yield from _radians(ctx, lats, lons)
-    yield from _swapped_by_map(ctx, lats, lons)
+    yield from _swapped_by_map(ctx)
 
 
 #: how far from a background image an origin may lie and still be its place, metres (the
@@ -170,33 +189,37 @@ _ON_MAP = 20_000.0
 _IMAGE_KEYS = ("tiff_file", "tiff_file_b")
 
 
-def _swapped_by_map(ctx, lats, lons):
+def _swapped_by_map(ctx):
     """LatOrigin and LongOrigin swapped, both in range: the origin lies far from every
     background image the mission's pMarineViewer shows, and on one once swapped back."""
-    if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
+    found = origin(ctx.moos)
+    if found is None:
         return
-    lat, lon = _number(lats[0]), _number(lons[0])
-    if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 90 or lat == lon:
+    lat, lon, lat_param, written = found
+    if abs(lon) > 90 or lat == lon:
+        return  # (a longitude beyond ±90° is no latitude: swapped, it is out of range)
+    names = list(_images(ctx.moos))
+    if not names:
         return
-    boxes = []
     folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
     cat = catalogue_for(ctx.run)
-    for name in _images(ctx.moos):
+    boxes = []
+    for name in names:
         box = _described(name, folders, cat)
         if box is None:
             return  # an image nothing here describes may well show the origin as written
         boxes.append((name, box))
-    if not boxes or any(apart((lat, lon), b.nearest(lat, lon)) <= _ON_MAP for _n, b in boxes):
+    if any(apart((lat, lon), b.nearest(lat, lon)) <= _ON_MAP for _n, b in boxes):
         return
     for name, box in boxes:
         if apart((lon, lat), box.nearest(lon, lat)) <= _ON_MAP:
+            lat_text, lon_text = written.split(", ", 1)
             yield ctx.report(
-                lats[0].value_span,
-                f"`LatOrigin = {lats[0].value.strip()}`, `LongOrigin = {lons[0].value.strip()}` "
-                f"lie far from the background map (`{name}` covers {box.shown()}, "
-                f"{box.source}) and swapped they lie on it: are LatOrigin and LongOrigin "
-                "swapped?",
-                line=lats[0].line,
+                lat_param.value_span,
+                f"`LatOrigin = {lat_text}`, `LongOrigin = {lon_text}` lie far from the "
+                f"background map (`{name}` covers {box.shown()}, {box.source}) and swapped "
+                "they lie on it: are LatOrigin and LongOrigin swapped?",
+                line=lat_param.line,
             )
             return
 

@@ -70,30 +70,10 @@ import os
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import antler_overrides
-from moos_lint.frontends.nsplug import derived
-from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.units.latlong_origin import _number
+from moos_lint.rules.units.latlong_origin import origin
 from moos_lint.semantics.background_images import apart
 from moos_lint.semantics.shares import share_partners
-
-
-def origin(moos):
-    """``(lat, lon, the LatOrigin line's parameter, the origin as written)`` of a mission
-    whose origin is known: one line of each that MOOS reads, literal numbers in range,
-    not both 0. Once per expansion (each mission of a folder asks about the others)."""
-    return derived(moos.expansion, "literal-origin", lambda: (_origin(moos),))[0]
-
-
-def _origin(moos):
-    lats = moos.read_values("LatOrigin")
-    lons = moos.read_values("LongOrigin")
-    if len(lats) != 1 or len(lons) != 1 or has_macro(lats[0].value + lons[0].value):
-        return None
-    lat, lon = _number(lats[0]), _number(lons[0])
-    if lat is None or lon is None or abs(lat) > 90 or abs(lon) > 180 or lat == lon == 0:
-        return None
-    return lat, lon, lats[0], f"{lats[0].value.strip()}, {lons[0].value.strip()}"
 
 
 def _told(metres: float) -> str:

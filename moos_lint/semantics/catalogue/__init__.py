@@ -47,6 +47,7 @@ from moos_lint.frontends.text_format_apps import (  # re-exported: the catalogue
 from moos_lint.frontends.text_format_apps import TextFormatSchema as TextFormatSchema
 from moos_lint.frontends.text_format_apps import text_format_app as text_format_app
 from moos_lint.frontends.text_format_apps import text_format_schema as text_format_schema
+from moos_lint.semantics.background_images import BOUNDS as IMAGE_BOUNDS
 from moos_lint.semantics.background_images import ImageBox
 from moos_lint.semantics.run_state import RunView
 
@@ -433,13 +434,9 @@ def stock() -> Catalogue:
         cat.executables[name.lower()] = name
     for name, d in data.get("background_images", {}).items():
         with contextlib.suppress(KeyError, TypeError, ValueError):
-            cat.background_images[name.lower()] = ImageBox(
-                lat_north=float(d["lat_north"]),
-                lat_south=float(d["lat_south"]),
-                lon_east=float(d["lon_east"]),
-                lon_west=float(d["lon_west"]),
-                source=f"moos-ivp {commit[:8]} {d.get('source', '')}",
-            )
+            edges = {key: float(d[key]) for key in IMAGE_BOUNDS}
+            source = f"moos-ivp {commit[:8]} {d.get('source', '')}"
+            cat.background_images[name.lower()] = ImageBox(**edges, source=source)
     cat.retired = _retired()
     return cat
 
