@@ -116,6 +116,34 @@ def test_mail_units_flow_through_members_set_in_another_method():
     assert any("NAV_DEPTH read by mail" in w for w in v["X_Z"].why)
 
 
+def test_a_number_read_before_the_key_tests_is_the_variable_of_the_branch_using_it():
+    # MOOS-IvP's app template reads ``dval`` once, above the tests of the key
+    v = published(
+        """
+        bool A::OnNewMail(MOOSMSG_LIST &NewMail) {
+          for (p = NewMail.begin(); p != NewMail.end(); p++) {
+            CMOOSMsg &msg = *p;
+            string key = msg.GetKey();
+            double dval = msg.GetDouble();
+            if (key == "NAV_DEPTH") m_d = dval;
+            else if (key == "NAV_HEADING") m_h = dval;
+            else if (key == "ODD_THING") m_o = dval;
+            m_any = dval;
+          }
+          return true;
+        }
+        bool A::Iterate() {
+          Notify("X_Z", m_d); Notify("X_HDG", m_h); Notify("X_ODD", m_o); Notify("X_ANY", m_any);
+          return true;
+        }
+        """
+    )
+    assert v["X_Z"].sign == "down"
+    assert (v["X_HDG"].unit, v["X_HDG"].sense) == ("deg", "heading")
+    assert any("NAV_HEADING read by mail" in w for w in v["X_HDG"].why)
+    assert all(v[k] is None or not v[k].known for k in ("X_ODD", "X_ANY"))
+
+
 def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     lib = tmp_path / "lib" / "Filter.cpp"
     other = tmp_path / "lib" / "Other.cpp"

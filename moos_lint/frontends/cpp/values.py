@@ -1435,6 +1435,25 @@ class Evaluator:
         at = place(pf.path, n.start_point[0] + 1)
         return _variable_value(var, f"{var} read by mail at {at}")
 
+    def _hoisted_mail(self, pf: Any, rhs: Any, use: Any) -> AbstractValue | None:
+        """A message's number read into a local before the tests of its key, as MOOS-IvP's
+        app template does (``double dval = msg.GetDouble();`` then ``if(key == "NAV_HEADING")
+        m_heading = dval;``): read at ``use``, it is the variable that branch tests for.
+        None when ``rhs`` is no such read (or the read's own branch names its variable)."""
+        rhs = strip(rhs)
+        if rhs is None or rhs.type != "call_expression":
+            return None
+        fn = rhs.child_by_field_name("function")
+        if fn is None or fn.type != "field_expression":
+            return None
+        if text(fn.child_by_field_name("field")) not in ("GetDouble", "GetDoubleValue"):
+            return None
+        if mail_key_of(rhs) is not None:
+            return None
+        var = mail_key_of(use)
+        at = place(pf.path, use.start_point[0] + 1)
+        return _variable_value(var, f"{var} read by mail at {at}") if var else None
+
     def _buffer_read(self, pf: Any, call: Any, var: Any) -> AbstractValue:
         """A MOOS variable read from the helm's information buffer (``getBufferDoubleVal(
         "NAV_HEADING", ok)``): what :data:`facts.MAIL_UNITS` says of it."""
@@ -1600,7 +1619,8 @@ class Evaluator:
             if a.op == "=" and cond is not None:
                 a = _as_compound(a, key)  # ``yaw = yaw + 2*M_PI`` as ``yaw += 2*M_PI``
             if a.op == "=":
-                v = settle(self._eval(pf, a.rhs, depth + 1))
+                v = self._hoisted_mail(pf, a.rhs, use)
+                v = settle(self._eval(pf, a.rhs, depth + 1)) if v is None else v
                 if (
                     v.pending is not None or _parsed_text(a.rhs, v) or _speed_named(key, v)
                 ) and name_hint(key).known:
