@@ -144,6 +144,25 @@ def test_a_number_read_before_the_key_tests_is_the_variable_of_the_branch_using_
     assert all(v[k] is None or not v[k].known for k in ("X_ODD", "X_ANY"))
 
 
+def test_old_apps_mail_taken_by_peekmail_is_the_variable_it_names():
+    v = published(
+        """
+        bool A::OnNewMail(MOOSMSG_LIST &NewMail) {
+          CMOOSMsg Msg;
+          if (m_Comms.PeekMail(NewMail, "NAV_DEPTH", Msg)) m_d = Msg.m_dfVal;
+          if (PeekMail(NewMail, "NAV_YAW", Msg) && !Msg.IsSkewed(MOOSTime())) {
+            double dfVal = Msg.m_dfVal;
+            m_y = dfVal;
+          }
+          return true;
+        }
+        bool A::Iterate() { Notify("X_Z", m_d); Notify("X_YAW", m_y); return true; }
+        """
+    )
+    assert v["X_Z"].sign == "down"
+    assert (v["X_YAW"].unit, v["X_YAW"].sense) == ("rad", "yaw")
+
+
 def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     lib = tmp_path / "lib" / "Filter.cpp"
     other = tmp_path / "lib" / "Other.cpp"

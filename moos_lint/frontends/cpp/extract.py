@@ -41,6 +41,7 @@ from moos_lint.frontends.cpp.model import (
 )
 from moos_lint.frontends.cpp.names import (
     MAIL_COMPARES,
+    PEEK_MAIL,
     WORD_BYTES,
     callee_name,
     function_declarator,
@@ -124,8 +125,6 @@ VARIABLE_SET = {"Set"}
 #: ``PublishFreshMOOSVariables()`` posts the fresh ones under their ``publish_as`` names
 #: (core MOOS, App/MOOSApp.cpp); ``RegisterMOOSVariables()`` subscribes to ``subscribe_as``
 ADD_MOOS_VAR = "AddMOOSVariable"
-#: ``m_Comms.PeekMail(NewMail, "KEY", Msg)``: the mail of one key taken from the list
-PEEK_MAIL = {"PeekMail", "PeekAndCheckMail"}
 SET_MOOS_VAR = "SetMOOSVar"
 CALLED = (
     PUBLISH

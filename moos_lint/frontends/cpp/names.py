@@ -32,6 +32,9 @@ _RATE_WORDS = {"GYRO", "GYR", "RATE"}
 WORD_BYTES = frozenset(b"abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_")
 #: string comparisons a mail handler tests a message's key with
 MAIL_COMPARES = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "IsName"}
+#: ``m_Comms.PeekMail(NewMail, "KEY", Msg)``: the mail of one key taken from the list
+#: (core MOOS, Comms/MOOSCommClient.h), in old apps the test of a message's key
+PEEK_MAIL = {"PeekMail", "PeekAndCheckMail"}
 
 
 def words(name: str) -> list[str]:
@@ -117,7 +120,8 @@ def mail_key_of(n: Any) -> str | None:
 
 
 def key_literal(cond: Any) -> str | None:
-    """The string literal a condition compares with (``key == "X"``, ``MOOSStrCmp(k, "X")``)."""
+    """The string literal a condition compares with (``key == "X"``, ``MOOSStrCmp(k, "X")``),
+    or the key whose mail it takes (``PeekMail(NewMail, "X", msg)``)."""
     if cond is None:
         return None
     stack = [cond]
@@ -130,7 +134,7 @@ def key_literal(cond: Any) -> str | None:
                     return _literal(s)
         if (
             x.type == "call_expression"
-            and callee_name(x.child_by_field_name("function")) in MAIL_COMPARES
+            and callee_name(x.child_by_field_name("function")) in MAIL_COMPARES | PEEK_MAIL
         ):
             for a in x.child_by_field_name("arguments").named_children:
                 if a.type == "string_literal":
