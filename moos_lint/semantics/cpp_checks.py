@@ -84,6 +84,11 @@ def _instrument_app_prefix(app: AppModel) -> Iterator[Finding]:
     )
 
 
+def _header_stem(path: str) -> str:
+    """``MOOSSerial`` of ``"src/MOOSSerial.h"``."""
+    return path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
+
+
 def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     name = app.process_name
     if not app.is_app or not name or not re.match(r"^[pu][A-Z0-9_]", name):
@@ -92,6 +97,8 @@ def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
     # what it does shows in its calls, includes and strings
     own = {*app.base_chain, *(c.name for f in app.files for c in f.classes)}
     io = [u for u in app.io if not (u.kind in ("socket", "serial") and u.detail in own)]
+    # nor is the header of the app's own class (``pMOOSSerial``'s ``#include "MOOSSerial.h"``)
+    io = [u for u in io if not (u.kind == "serial" and _header_stem(u.detail) in app.base_chain)]
     uses = [u for u in io if u.device]
     termios = [u for u in io if u.kind == "termios"]
     if termios and any(u.kind == "serial" for u in uses):

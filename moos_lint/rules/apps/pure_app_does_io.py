@@ -13,8 +13,9 @@ reported for socket I/O (`socket`, `connect`,
 `curl_easy_perform`): a vehicle, a sensor or a service spoken to in a
 protocol that is not MOOS. The finding is on the first such use. The app's
 own classes are no evidence by their names (`class UdpDecoder : public
-CMOOSApp` decodes what another app received): what they do shows in their
-calls, includes and strings.
+CMOOSApp` decodes what another app received), nor is the header of the app's
+own class (`pMOOSSerial` including `MOOSSerial.h`): what they do shows in
+their calls, includes and strings.
 
 The app's own helper files count too: a C++ file of the app's folder that
 never names the MOOS API (a class that opens the port or the link) is read for

@@ -259,12 +259,19 @@ def _judge(
         return
     first = key.split()[0] if key.split() else ""
     if first != key.strip() and first.lower() in by_lower:
-        # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing
+        # `Run pFoo @ NewConsole = false`: the `=` after the key word is missing, or
+        # another mark stands in its place (`Run - pFoo @ NewConsole = false`)
+        rest = key.split(None, 1)[1]
+        mark, _, after = rest.partition(" ")
+        if after.strip() and re.fullmatch(r"[-:+.,;]+", mark):
+            what = f"`{mark}` stands where the `=` after `{first}` belongs"
+            rest = after.strip()
+        else:
+            what = f"the `=` after `{first}` is missing"
         yield ctx.report(
             p.key_span,
-            f"`{key.strip()}`: the `=` after `{first}` is missing, so MOOS reads the key "
-            f"`{key.strip()}` and ignores the line (write `{first} = {key.split(None, 1)[1]}"
-            f" = {p.value}`)",
+            f"`{key.strip()}`: {what}, so MOOS reads the key `{key.strip()}` and ignores "
+            f"the line (write `{first} = {rest} = {p.value}`)",
             line=p.line,
         )
         return
