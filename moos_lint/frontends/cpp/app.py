@@ -69,17 +69,31 @@ _INCLUDE_LINE = re.compile(rb'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\r\n]+)[>"]', 
 _LINK_CALL = re.compile(rb"(add_(?<=\badd_)(?:any|udp|tcp|serial)_connection)[ \t]*\(")
 
 
+#: a device's path written as a string literal (``#define EVDEV_DIR "/dev/input/by-id/"``)
+_DEVICE_LITERAL = re.compile(rb'"(/dev/[^"\r\n]*)"')
+
+
+def _commented(data: bytes, pos: int) -> bool:
+    """Whether ``pos`` is on a line after a ``//`` or on a line that starts a ``/*`` or
+    ``*`` comment (a usage note quoting a device, not code that opens one)."""
+    start = data.rfind(b"\n", 0, pos) + 1
+    before = data[start:pos]
+    return b"//" in before or before.lstrip().startswith((b"*", b"/*"))
+
+
 def helper_io(paths: Iterable[str]) -> list[tuple[SourceFile, CppFile]]:
     """The I/O of an app's own C++ files that never mention the MOOS API: a helper class
     that opens the serial port, the socket or the autopilot link. Read from the bytes
     (the headers they include, MAVSDK's ``add_*_connection`` calls), never parsed; only
     the files that hold such I/O are returned, each with the :class:`CppFile` of it."""
-    from moos_lint.frontends.cpp.extract import include_io
+    from moos_lint.frontends.cpp.extract import DEVICE_STRING, include_io
 
     out = []
     for path in paths:
         data = read_bytes(path)
-        if not isinstance(data, bytes) or (b"include" not in data and b"_connection" not in data):
+        if not isinstance(data, bytes):
+            continue
+        if b"include" not in data and b"_connection" not in data and b'"/dev/' not in data:
             continue
         found: list[tuple[int, int, str, str]] = []
         for m in _INCLUDE_LINE.finditer(data):
@@ -88,6 +102,10 @@ def helper_io(paths: Iterable[str]) -> list[tuple[SourceFile, CppFile]]:
                 found.append((m.start(1), m.end(1), kind, m.group(1).decode("utf-8", "replace")))
         for m in _LINK_CALL.finditer(data):
             found.append((m.start(1), m.end(1), "socket", m.group(1).decode("ascii")))
+        for m in _DEVICE_LITERAL.finditer(data):
+            device = m.group(1).decode("utf-8", "replace")
+            if DEVICE_STRING.match(device) and not _commented(data, m.start()):
+                found.append((m.start(1) - 1, m.end(1) + 1, "device", device))
         if not found:
             continue
         src = decode(data, path)

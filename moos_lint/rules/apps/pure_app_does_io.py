@@ -20,7 +20,9 @@ their calls, includes and strings.
 The app's own helper files count too: a C++ file of the app's folder that
 never names the MOOS API (a class that opens the port or the link) is read for
 the I/O headers it includes (`sys/socket.h`, `termios.h`, a serial-port
-library, SocketCAN, libusb, libcurl) and for MAVSDK links, without being parsed.
+library, SocketCAN, libusb, libcurl), for MAVSDK links and for the device
+paths it writes outside comments (`#define EVDEV_DIR "/dev/input/by-id/"`),
+without being parsed.
 
 ## Why is this bad?
 The MOOS conventions name processes by what they are: `i` for interface apps
