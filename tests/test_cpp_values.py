@@ -14,6 +14,7 @@ from moos_lint.frontends.cpp.file_names import DEF_TEMPLATE, defined_names, sett
 from moos_lint.frontends.cpp.values import (
     AbstractValue,
     RepositoryResolver,
+    name_hint,
     neg,
     range_text,
     resolve_pending,
@@ -161,6 +162,48 @@ def test_old_apps_mail_taken_by_peekmail_is_the_variable_it_names():
     )
     assert v["X_Z"].sign == "down"
     assert (v["X_YAW"].unit, v["X_YAW"].sense) == ("rad", "yaw")
+
+
+def test_fmod_by_a_turn_wraps_radians_keeping_the_sign_of_what_it_divides():
+    v = published(
+        """
+        bool A::Iterate() {
+          double psi = m_psi, out, deg;
+          if (psi < 0) out = fmod(psi, 2*M_PI) + 2*M_PI;
+          else out = fmod(psi, 2*M_PI);
+          Notify("A_YAW", out);
+          if (psi < 0) Notify("B_YAW", fmod(psi, 2*M_PI));
+          Notify("C_HEADING", fmod(m_course, 360.0));
+          return true;
+        }
+        """
+    )
+    assert v["A_YAW"].unit == "rad"
+    assert v["A_YAW"].range == pytest.approx((0.0, 2 * math.pi))
+    assert v["B_YAW"].range == pytest.approx((-2 * math.pi, 0.0))
+    assert v["C_HEADING"].unit == "deg"
+
+
+def test_a_variable_handed_to_a_math_function_keeps_its_value():
+    v = published(
+        """
+        bool A::Iterate() {
+          double yaw = -m_nav_heading_deg * M_PI / 180.0;
+          double s = sin(yaw) + sqrt(fabs(yaw)) + fmod(yaw, 1.0);
+          Notify("A_YAW", yaw);
+          return true;
+        }
+        """
+    )
+    assert v["A_YAW"].unit == "rad"
+
+
+@pytest.mark.parametrize(
+    ("name", "unit"),
+    [("dpsi", None), ("m_dpsi", None), ("gyro_z_dps", "deg/s"), ("m_gyroDps", "deg/s")],
+)
+def test_dps_names_a_rate_in_degrees_only_as_a_word(name, unit):
+    assert name_hint(name).unit == unit
 
 
 def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):

@@ -217,6 +217,16 @@ def to_deg(v: AbstractValue, why: str) -> AbstractValue:
     return out.because(why) if why else out
 
 
+def _turn_unit(c: float) -> str | None:
+    """The unit an angle wrapped modulo ``c`` is in: radians for a turn or half a turn
+    (2π, π), degrees for 360 or 180; else None."""
+    if abs(c - 2 * math.pi) < 1e-3 or abs(c - math.pi) < 1e-3:
+        return "rad"
+    if c in (360.0, 180.0):
+        return "deg"
+    return None
+
+
 def wrapped(v: AbstractValue, rng: Range, unit: str | None, why: str) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
@@ -408,7 +418,10 @@ def place(path: str, line: int) -> str:
 # -- hints in names and comments -------------------------------------------------
 
 _RAD_NAME = re.compile(r"(?:^|_)rads?(?:_|$)|[a-z0-9]Rads?(?:[A-Z_]|$)|radian", re.I)
-_RATE_DEG_NAME = re.compile(r"dps|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec", re.I)
+#: (``dps`` as a word, not the start of ``dpsi``, a rate of ψ)
+_RATE_DEG_NAME = re.compile(
+    r"(?i:(?:^|_)dps(?:_|$)|deg_?per_?s|degs?_?s(?:ec)?\b|DegPerSec)|[a-z0-9]Dps(?:[A-Z_]|$)"
+)
 _DEG_NAME = re.compile(r"(?:^|_)deg(?:ree)?s?(?:_|$)|[a-z0-9]Deg(?:ree)?s?(?:[A-Z_]|$)|degree")
 _HEADING_NAME = re.compile(r"heading|hdg|compass", re.I)
 #: the words of a device's resolution constant (``EULER_DIV_DEG``, ``LSB_PER_RAD``)
@@ -1314,9 +1327,11 @@ class Evaluator:
             if c is None or c <= 0:
                 return replace(x, range=None)
             rng = (-c / 2, c / 2) if bare == "remainder" else (0.0, c)
+            if bare != "remainder" and self._not_positive(pf, args[0], x, depth):
+                rng = (-c, 0.0)  # C's fmod keeps the sign of what it divides
             k = c / math.pi
             shown = f"{round(k)}π" if abs(k - round(k)) < _EPS and round(k) > 1 else f"{c:g}"
-            return wrapped(x, rng, None, f"{bare}(·, {shown}) at {at}")
+            return wrapped(x, rng, x.unit or _turn_unit(c), f"{bare}(·, {shown}) at {at}")
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
         if name in facts.KEEPS_UNIT and args:
@@ -1360,6 +1375,20 @@ class Evaluator:
         # keeps it says otherwise
         method = library_method(pending) if receiver else None
         return replace(method, receiver=receiver) if method is not None else pending
+
+    def _not_positive(self, pf: Any, arg: Any, x: AbstractValue, depth: int) -> bool:
+        """Whether ``x``, the value of argument ``arg``, is known to be negative (or 0): by
+        its range, or for a variable by the ``if`` it is used in (``if (psi < 0)``)."""
+        if x.const is not None:
+            return x.const < 0
+        if x.range is not None:
+            return x.range[0] < 0 and x.range[1] <= 0
+        arg = strip(arg)
+        if arg is None or arg.type != "identifier":
+            return False
+        probe = replace(x, range=(-math.inf, math.inf))
+        probe = _narrowed(self, pf, pf.function_of(arg), arg, text(arg), probe, depth)
+        return probe.range is not None and probe.range[1] <= 0
 
     def object_class(self, pf: Any, fn: Any) -> str | None:
         """The class of the object method ``fn`` (a field expression) is called on
@@ -1987,6 +2016,32 @@ _NOT_SETTERS = {
 }
 
 
+#: functions of C's math library that take their arguments by value and that the
+#: analysis reads no unit from (not ``modf``, ``frexp`` or ``sincos``, which set a
+#: variable through a pointer)
+_MATH_BY_VALUE = frozenset(
+    f + suffix
+    for f in (
+        "fmod",
+        "remainder",
+        "sin",
+        "cos",
+        "tan",
+        "sqrt",
+        "cbrt",
+        "pow",
+        "hypot",
+        "exp",
+        "log",
+        "log10",
+        "fmin",
+        "fmax",
+        "copysign",
+    )
+    for suffix in ("", "f", "l")
+)
+
+
 def _by_value(name: str) -> bool:
     """Whether ``name`` is a function of a library the analysis knows that takes its
     arguments by value (``degToRadians(hdg)``, ``angle360(h)``, ``atan2(dy, dx)``): a call
@@ -1996,6 +2051,7 @@ def _by_value(name: str) -> bool:
         name in facts.HELPERS
         or name in facts.KEEPS_UNIT
         or bare in _PASS_THROUGH
+        or bare in _MATH_BY_VALUE
         or bare.rstrip("f") in facts.INVERSE_TRIG
         or bare in facts.TEXT_TO_NUMBER
         or bool(re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name))

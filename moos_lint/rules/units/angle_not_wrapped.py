@@ -17,7 +17,10 @@ Wraps are read from `MOOS_ANGLE_WRAP`, `radAngleWrap`, `angle180`, wrap
 loops and `if`s, and `fmod`. A one-sided wrap by one full turn is read even
 when the value's range before it is unknown (a device's struct field): the
 author takes the value to lie in the turn the `if` names (`if (yaw < 0) yaw
-= yaw + 2*M_PI`: [0, 2π)), and a turn of 2π says radians.
+= yaw + 2*M_PI`: [0, 2π)), and a turn of 2π says radians; so does `fmod` by
+a turn, which keeps the sign of what it divides (in `if (psi < 0) out =
+fmod(psi, 2*M_PI) + 2*M_PI; else out = fmod(psi, 2*M_PI);` both branches
+land in [0, 2π)).
 In a branch of an `if` that compares the value with a constant, the value
 lies on that side of it: `if (y > M_PI) out = y - 2*M_PI; else out = y;`
 wraps `y` into `out`.
