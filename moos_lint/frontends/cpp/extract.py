@@ -2017,12 +2017,36 @@ def include_io(path: str) -> str:
         return "usb"
     if "serialport" in low.replace("_", "") or low.endswith("serial.h"):
         return "serial"
+    if low in _DEVICE_HEADERS or low.startswith(("modbus/", "linux/spi/")) or _RC_MODULE.match(low):
+        return "device"
     if low in ("sys/socket.h", "netinet/in.h", "arpa/inet.h", "winsock2.h", "curl/curl.h"):
         return "socket"
     if low.startswith(("fl/", "qtwidgets/", "qtgui/")) or low in _QT_WINDOWS:
         return "gui"  # FLTK (pMarineViewer's `FL/Fl.H`) or Qt: a window of its own
     return ""
 
+
+#: libraries that reach hardware: a Raspberry Pi's GPIO (pigpio, wiringPi, libgpiod), the
+#: kernel's I2C, SPI and GPIO interfaces, libmodbus (``modbus/modbus.h``, RTU or TCP), the
+#: BeagleBone's librobotcontrol (``robotcontrol.h``, ``rc/mpu.h``)
+_DEVICE_HEADERS = frozenset(
+    {
+        "pigpio.h",
+        "pigpiod_if2.h",
+        "wiringpi.h",
+        "wiringpii2c.h",
+        "wiringpispi.h",
+        "gpiod.h",
+        "gpiod.hpp",
+        "linux/i2c-dev.h",
+        "linux/i2c.h",
+        "linux/gpio.h",
+        "modbus.h",
+        "robotcontrol.h",
+    }
+)
+
+_RC_MODULE = re.compile(r"rc/(?:mpu|servo|motor|adc|encoder\w*|i2c|spi|uart|pwm|gpio|bmp|dsm)\.h$")
 
 #: Qt headers included by class name that only a program with windows includes
 _QT_WINDOWS = frozenset({"qapplication", "qmainwindow", "qwidget", "qguiapplication"})

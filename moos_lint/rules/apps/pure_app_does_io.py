@@ -5,7 +5,10 @@ Reports a C++ MOOS app whose process name starts with `p` or `u` while its
 code does device I/O: a serial-port class (`CMOOSSerialPort`,
 `boost::asio::serial_port`, ...), baud-rate setup through termios
 (`cfsetispeed`), a device path (`/dev/tty*`, `/dev/can*`, `/dev/usb*`, a
-joystick's `/dev/input/js0`, ...), SocketCAN or libusb. A `p` app is also
+joystick's `/dev/input/js0`, ...), SocketCAN, libusb, or a library that
+reaches hardware (libmodbus, a Raspberry Pi's pigpio, wiringPi or libgpiod,
+the kernel's I2C and SPI interfaces, the BeagleBone's librobotcontrol), by
+the header it includes. A `p` app is also
 reported for socket I/O (`socket`, `connect`,
 `bind`, `recvfrom`, a socket class, an autopilot link opened with MAVSDK's
 `add_any_connection`, a client of the gpsd service: libgps's `gpsmm` or

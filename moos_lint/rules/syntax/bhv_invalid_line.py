@@ -23,6 +23,12 @@ alone, and so is a file written for the C preprocessor (one that uses
 behavior templates of MOOS-IvP's early years were expanded with `cpp`, which
 also strips their `/* ... */` comments, and only its output reaches the helm.
 
+A `.bhv` file of nsplug sections (`<tag><muster_regions>`) is written to be
+included a section at a time (`#include plugs.bhv <muster_regions>`): it is
+judged in the files that include it, where its lines land (inside a Behavior
+block, a section of `muster_region = ...` lines is what the helm expects),
+not alone.
+
 A line that is nothing but a template placeholder (`###Path_1###`,
 `@POINTS@`, `{{points}}`, `%%RETURN%%`: one word, no spaces) is not reported
 either: the file is the template of a generator that writes the behavior file
@@ -57,6 +63,9 @@ from moos_lint.frontends.nsplug import written_for_cpp
 from moos_lint.frontends.parsers.bhv import shaped_like_behaviors
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 
+#: an nsplug section header (``<tag><muster_regions>``)
+_TAG_LINE = re.compile(r"^[ \t]*<tag>", re.M)
+
 #: a line that is one placeholder of a template generator: `###Path_1###`, `@X@`, `{{x}}`
 _PLACEHOLDER = re.compile(
     r"\s*(?:#{3}[A-Za-z_][\w.-]*#{3}|@[A-Za-z_][\w.-]*@|\{\{[\w.-]+\}\}|%%[A-Za-z_][\w.-]*%%)\s*"
@@ -78,6 +87,9 @@ def check(ctx):
         return  # nothing shaped like a behavior file's lines: not one
     if written_for_cpp(line.text for line in bhv.lines):
         return  # a template of the C preprocessor: the helm reads only its output
+    own = ctx.expansion.sources.get(ctx.unit.path)
+    if own is not None and _TAG_LINE.search(own.text):
+        return  # sections that files include where they fit: judged there
     flagged = {(p.span.path, p.span.line) for p in ctx.expansion.problems}
     guards = _guard_branches(ctx.expansion, bhv) if bhv.invalid else set()
     runs: list[list] = []  # consecutive lines rejected for one reason: one finding
