@@ -323,3 +323,28 @@ ZERO_NAME = r"(?i)(?:^|_)zero$"
 UPPER_CASE_CALLS = frozenset(
     {"MOOSToUpper", "toupper", "to_upper", "to_upper_copy", "toUpper", "ToUpper", "upper"}
 )
+
+#: functions of C's math library that take their arguments by value and that the
+#: analysis reads no unit from (not ``modf``, ``frexp`` or ``sincos``, which set a
+#: variable through a pointer)
+MATH_BY_VALUE = frozenset(
+    f + suffix
+    for f in (
+        "fmod",
+        "remainder",
+        "sin",
+        "cos",
+        "tan",
+        "sqrt",
+        "cbrt",
+        "pow",
+        "hypot",
+        "exp",
+        "log",
+        "log10",
+        "fmin",
+        "fmax",
+        "copysign",
+    )
+    for suffix in ("", "f", "l")
+)

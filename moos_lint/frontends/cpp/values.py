@@ -217,16 +217,6 @@ def to_deg(v: AbstractValue, why: str) -> AbstractValue:
     return out.because(why) if why else out
 
 
-def _turn_unit(c: float) -> str | None:
-    """The unit an angle wrapped modulo ``c`` is in: radians for a turn or half a turn
-    (2π, π), degrees for 360 or 180; else None."""
-    if abs(c - 2 * math.pi) < 1e-3 or abs(c - math.pi) < 1e-3:
-        return "rad"
-    if c in (360.0, 180.0):
-        return "deg"
-    return None
-
-
 def wrapped(v: AbstractValue, rng: Range, unit: str | None, why: str) -> AbstractValue:
     v = settle(v)
     if v.pending is not None:
@@ -1331,7 +1321,9 @@ class Evaluator:
                 rng = (-c, 0.0)  # C's fmod keeps the sign of what it divides
             k = c / math.pi
             shown = f"{round(k)}π" if abs(k - round(k)) < _EPS and round(k) > 1 else f"{c:g}"
-            return wrapped(x, rng, x.unit or _turn_unit(c), f"{bare}(·, {shown}) at {at}")
+            # modulo a turn or half a turn (2π or π, 360 or 180): the unit that turn is in
+            unit = x.unit or _full_turn(c) or _full_turn(2 * c)
+            return wrapped(x, rng, unit, f"{bare}(·, {shown}) at {at}")
         if name in _PASS_THROUGH and args:
             return self._eval(pf, args[0], depth + 1)
         if name in facts.KEEPS_UNIT and args:
@@ -2016,32 +2008,6 @@ _NOT_SETTERS = {
 }
 
 
-#: functions of C's math library that take their arguments by value and that the
-#: analysis reads no unit from (not ``modf``, ``frexp`` or ``sincos``, which set a
-#: variable through a pointer)
-_MATH_BY_VALUE = frozenset(
-    f + suffix
-    for f in (
-        "fmod",
-        "remainder",
-        "sin",
-        "cos",
-        "tan",
-        "sqrt",
-        "cbrt",
-        "pow",
-        "hypot",
-        "exp",
-        "log",
-        "log10",
-        "fmin",
-        "fmax",
-        "copysign",
-    )
-    for suffix in ("", "f", "l")
-)
-
-
 def _by_value(name: str) -> bool:
     """Whether ``name`` is a function of a library the analysis knows that takes its
     arguments by value (``degToRadians(hdg)``, ``angle360(h)``, ``atan2(dy, dx)``): a call
@@ -2051,7 +2017,7 @@ def _by_value(name: str) -> bool:
         name in facts.HELPERS
         or name in facts.KEEPS_UNIT
         or bare in _PASS_THROUGH
-        or bare in _MATH_BY_VALUE
+        or bare in facts.MATH_BY_VALUE
         or bare.rstrip("f") in facts.INVERSE_TRIG
         or bare in facts.TEXT_TO_NUMBER
         or bool(re.match(facts.DEG2RAD_NAME, name) or re.match(facts.RAD2DEG_NAME, name))
