@@ -47,9 +47,20 @@ def enclosing_class(n: Any) -> str | None:
     return None
 
 
+#: ``std::unique_ptr<T>``, ``boost::shared_ptr<const T>``: what ``->`` reaches is a ``T``
+_SMART_POINTER = re.compile(
+    r"(?:const\s+)?(?:(?:std|boost)\s*::\s*)?(?:unique_ptr|shared_ptr)\s*<\s*([^<>,]+?)\s*>\s*[&*]?"
+)
+
+
 def type_name(type_text: str) -> str | None:
     """The class a declared type names: ``XsEuler`` for ``const struct XsEuler*``,
-    ``Attitude`` for ``nav::Attitude&``; None for templates and built-in types."""
+    ``Attitude`` for ``nav::Attitude&``, ``Ais1_2_3`` for the smart pointer
+    ``std::unique_ptr<libais::Ais1_2_3>`` (read with ``->`` as a raw pointer is); None for
+    other templates and built-in types."""
+    smart = _SMART_POINTER.fullmatch(type_text.strip())
+    if smart is not None:
+        type_text = smart.group(1)
     if "<" in type_text:
         return None
     words = [w for w in re.findall(r"\w+", type_text) if w not in _TYPE_NOISE]
