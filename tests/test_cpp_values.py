@@ -206,6 +206,23 @@ def test_dps_names_a_rate_in_degrees_only_as_a_word(name, unit):
     assert name_hint(name).unit == unit
 
 
+def test_a_quarter_turn_keeps_a_math_angle_counter_clockwise_and_qualifiers_name_nothing():
+    v = published(
+        """
+        bool A::Iterate() {
+          double dy = m_y2 - m_y1, dx = m_x2 - m_x1;
+          double h = atan2(dy, dx) * 180 / M_PI;
+          Notify("HEADING_ESTIMATE", h + 90);
+          Notify("GPS_HDG_FILTERED", 90 - h);
+          return true;
+        }
+        """
+    )
+    assert v["HEADING_ESTIMATE"].sense == "math"
+    assert any("still counter-clockwise" in w for w in v["HEADING_ESTIMATE"].why)
+    assert v["GPS_HDG_FILTERED"].unit == "deg" and v["GPS_HDG_FILTERED"].sense is None
+
+
 def test_a_library_file_is_parsed_only_when_a_flow_reaches_it(tmp_path):
     lib = tmp_path / "lib" / "Filter.cpp"
     other = tmp_path / "lib" / "Other.cpp"

@@ -406,8 +406,11 @@ def angle_from_east(app: AppModel) -> Iterator[Finding]:
             continue
         # the step that says so (a conversion on the same line would hide it in the chain)
         frame = next((w for w in v.why if "north over east" in w), None)
+        turned = next((w for w in v.why if w.endswith(values.QUARTER_TURN)), None)
         because = (
-            f" ({frame.replace(', north over east,', ': north over east,')})"
+            f" ({frame.replace(', north over east,', ': north over east,')}"
+            + (f"; {turned}" if turned else "")
+            + ")"
             if frame
             else _because(v)
         )

@@ -58,9 +58,32 @@ _EULER_AXES = {
 }
 
 
+#: words after a quantity that say how it was got, not what it is (``HEADING_ESTIMATE``,
+#: ``NAV_YAW_FILTERED``, ``PITCH_AVG``)
+_QUALIFIERS = frozenset(
+    {
+        "EST",
+        "ESTIMATE",
+        "ESTIMATED",
+        "FILT",
+        "FILTERED",
+        "SMOOTHED",
+        "AVG",
+        "AVERAGE",
+        "MEAN",
+        "MEAS",
+        "MEASURED",
+        "GT",
+    }
+)
+
+
 def axis_word(name: str) -> str:
-    """The last word of ``name``, an Euler axis spelled out: ``PITCH`` for ``IMU_EULER_P``."""
+    """The last word of ``name`` (before words that only qualify it: ``HEADING`` for
+    ``HEADING_ESTIMATE``), an Euler axis spelled out: ``PITCH`` for ``IMU_EULER_P``."""
     w = [x.upper() for x in words(name)]
+    while len(w) >= 2 and w[-1] in _QUALIFIERS:
+        w.pop()
     if len(w) >= 2 and w[-2] == "EULER" and w[-1] in _EULER_AXES:
         return _EULER_AXES[w[-1]]
     return w[-1] if w else ""

@@ -225,6 +225,10 @@ def wrapped(v: AbstractValue, rng: Range, unit: str | None, why: str) -> Abstrac
     return out.because(why) if why else out
 
 
+#: how a quarter turn added to a math angle is said in a value's reasons
+QUARTER_TURN = "still counter-clockwise"
+
+
 def shift(v: AbstractValue, c: float) -> AbstractValue:
     """``v + c`` for a constant ``c``."""
     v = settle(v)
@@ -236,6 +240,11 @@ def shift(v: AbstractValue, c: float) -> AbstractValue:
         return replace(v, ops=(*v.ops, ("shift", c)))
     rng = (v.range[0] + c, v.range[1] + c) if v.range else None
     turn = 360.0 if v.unit in ("deg",) else 2 * math.pi
+    if v.sense == "math" and v.unit in ("deg", "rad") and abs(abs(c) - turn / 4) < _EPS:
+        # ``θ + 90`` counts counter-clockwise still, from south (``θ − 90``: from north);
+        # a heading is ``90 − θ``, whose minus sign the analysis does not follow
+        quarter = f"{c:+g}°" if v.unit == "deg" else ("+π/2" if c > 0 else "−π/2")
+        return replace(v, range=rng).because(f"{quarter} turns it, {QUARTER_TURN}")
     sense = v.sense if abs(math.remainder(c, turn)) < _EPS else None
     return replace(v, range=rng, sense=sense)
 

@@ -5,9 +5,13 @@ Reports `Notify` of a heading (`NAV_HEADING`, `GPS_HDG`) whose value is the
 math angle of the local grid, `atan2(Δy, Δx)` over a displacement (a
 difference of two y coordinates over one of two x coordinates, or names that
 say so: `dy`, `delta_x`, also through a local set once before the call), with
-no turn to north after it. Whether a plain `x` or `mag_y` is on the grid or in
-the body frame, a name does not tell: only displacements are judged. Adding an
-unknown offset (`θ + m_rotation`) or negating the angle clears it.
+no turn to north after it. Adding a quarter turn is no such turn: `θ + 90`
+counts counter-clockwise still, from south (`90 − θ` is the heading). A
+heading is named so by its last word, or the word before a qualifier
+(`HEADING_ESTIMATE`, `GPS_HDG_FILTERED`). Whether a plain `x` or `mag_y` is
+on the grid or in the body frame, a name does not tell: only displacements
+are judged. Adding an unknown offset (`θ + m_rotation`) or negating the angle
+clears it.
 
 A yaw in the math frame is not reported: MOOS-IvP itself writes the `YAW` of
 its node reports as `headingToRadians(heading)`, from east (NodeRecord.cpp),
