@@ -107,8 +107,10 @@ BUFFER_READS: dict[str, int | None] = {"getBufferDoubleVal": None, "getBufferDou
 #: NMEA 0183 sentences whose fields an app parses with atof/stod: their angles
 #: (HDT/HDG/HDM headings, RMC/VTG courses, PASHR/PRDID attitude) are degrees by the
 #: standard, as the proprietary ``$OHPR`` of OceanServer's compasses (heading, pitch and
-#: roll in degrees: OceanServer Compass Manual, OS5000 Series, format type 0x02). A
-#: literal naming one marks a file as an NMEA parser.
+#: roll in degrees: OceanServer Compass Manual, OS5000 Series, format type 0x02) and
+#: Clearpath's front-seat ``$CPNVG`` (position as NMEA writes it, heading in degrees: the
+#: Heron's iM300 of moos-ivp-pavlab, M300.cpp, handleMsgCPNVG). A literal naming one marks
+#: a file as an NMEA parser.
 NMEA_SENTENCES = (
     "HDT",
     "HDG",
@@ -124,6 +126,7 @@ NMEA_SENTENCES = (
     "ROT",
     "THS",
     "OHPR",
+    "CPNVG",
 )
 
 #: Devices whose text output an app parses with atof/strtod, every angle of it in degrees,
@@ -144,9 +147,10 @@ DEGREE_DEVICES: dict[str, tuple[str, str]] = {
 #: NMEA 0183 sentences that give a position, its latitude and longitude written as
 #: degrees and minutes run together, ``ddmm.mmmm`` and ``dddmm.mmmm`` (``4916.45`` is
 #: 49°16.45′), each followed by its hemisphere: GGA's fields 2 and 4, RMC's 3 and 5, GLL's
-#: 1 and 3 (NMEA 0183, v4.10). A number parsed from such a sentence and published as a
-#: latitude or longitude with no arithmetic on the way is not decimal degrees.
-NMEA_POSITION_SENTENCES = ("GGA", "RMC", "GLL")
+#: 1 and 3 (NMEA 0183, v4.10), as Clearpath's ``$CPNVG`` its 2 and 4 (iM300 reads them
+#: with ``latDDMMtoDD`` and ``lonDDDMMtoDDD``). A number parsed from such a sentence and
+#: published as a latitude or longitude with no arithmetic on the way is not decimal degrees.
+NMEA_POSITION_SENTENCES = ("GGA", "RMC", "GLL", "CPNVG")
 
 #: Speeds in another unit than metres per second -> metres per second in one of them: the
 #: knot is one nautical mile (1852 m) an hour, the mile an hour 1609.344 m an hour (both

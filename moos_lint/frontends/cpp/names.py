@@ -67,6 +67,7 @@ _QUALIFIERS = frozenset(
         "ESTIMATED",
         "FILT",
         "FILTERED",
+        "UNFILTERED",
         "SMOOTHED",
         "AVG",
         "AVERAGE",

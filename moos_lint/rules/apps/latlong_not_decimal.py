@@ -3,7 +3,8 @@
 ## What it does
 Reports `Notify` of a variable whose last word is `LAT`, `LON`, `LONG`,
 `LATITUDE` or `LONGITUDE` with a number parsed from an NMEA 0183 position
-sentence (GGA, RMC, GLL) with `atof`, `strtod` or `std::stod`, where the code
+sentence (GGA, RMC, GLL, and Clearpath's front-seat `$CPNVG`, which writes
+its position the same way) with `atof`, `strtod` or `std::stod`, where the code
 handles that sentence (an `if` on its name, or a function named for it:
 `handleGPGGA`), and nothing done to the number on its way to the publication
 but its sign (the hemisphere). A value the code divides, adds minutes to or
