@@ -592,6 +592,11 @@ _FIELD_LINE = (
 )
 
 
+#: in a pending field ``.Outer>member.field``: the field of member ``member`` of class
+#: ``Outer`` (the member's class read from Outer's declaration in the repository)
+MEMBER_MARK = ">"
+
+
 def class_body(data: bytes, cls: str) -> tuple[int, int] | None:
     """Where the body of class or struct ``cls`` lies in ``data`` (``struct cls {...}``
     or ``typedef struct {...} cls;``), braces counted (comments and strings are not
@@ -1555,6 +1560,21 @@ class Evaluator:
         in a library file read alone, a bare field of the class whose method reads it."""
         if n.type == "field_expression":
             obj = strip(n.child_by_field_name("argument"))
+            if obj is not None and obj.type == "field_expression":
+                # ``m_gps->fix.speed``: a field of member ``fix`` of m_gps's class, whose
+                # class the repository's declaration of that class gives
+                inner = strip(obj.child_by_field_name("argument"))
+                member = text(obj.child_by_field_name("field"))
+                if inner is None or inner.type != "identifier" or not member:
+                    return None
+                outer = self.class_of(fnode, text(inner), n)
+                field = text(n.child_by_field_name("field"))
+                if outer is None or not field:
+                    return None
+                return AbstractValue(
+                    pending=f".{outer}{MEMBER_MARK}{member}.{field}",
+                    why=(f"`{brief(text(n), 30)}`, a field of {outer}::{member}, at {_at(pf, n)}",),
+                )
             if obj is None or obj.type != "identifier":
                 return None
             cls = self.class_of(fnode, text(obj), n)
@@ -2615,8 +2635,8 @@ class RepositoryResolver:
         """What the repository writes to field ``.Class.name|alias`` (the join of every
         write; None when it writes it nowhere we can read)."""
         _, cls, names_text = pending.split(".", 2)
-        if cls.endswith("()"):  # a field of what a function returns: of its class
-            real = self._through_getter(pending)
+        if cls.endswith("()") or MEMBER_MARK in cls:  # of what a function returns, of a
+            real = self._through_getter(pending)  # member: a field of that one's class
             return self(real) if real else None
         names = set(names_text.split("|"))
         wrote = field_write_pattern(names)
@@ -2720,10 +2740,37 @@ class RepositoryResolver:
 
     def _through_getter(self, pending: str) -> str | None:
         """``.getX().field`` (a field of what ``getX`` returns) as ``.Class.field``, of the
-        class ``getX`` returns; None when that class is not known."""
+        class ``getX`` returns, and ``.Outer>member.field`` of the class ``Outer`` declares
+        ``member`` of; None when that class is not known."""
         _, getter, names_text = pending.split(".", 2)
-        real = self.returned_class(getter.removesuffix("()"))
+        if MEMBER_MARK in getter:
+            outer, _, member = getter.partition(MEMBER_MARK)
+            real = self.member_class(outer, member)
+        else:
+            real = self.returned_class(getter.removesuffix("()"))
         return f".{real}.{names_text}" if real else None
+
+    def member_class(self, cls: str, member: str) -> str | None:
+        """The class member ``member`` of class ``cls`` is declared of (``GPSFix`` for
+        ``class GPSService { public: GPSFix fix; ... }``), read from the body of every
+        declaration of ``cls`` in the repository; None when none says, or two differ."""
+        key = f"{cls}{MEMBER_MARK}{member}"
+        if key not in self._returned:
+            found: set[str | None] = set()
+            declared = re.compile(
+                rb"([A-Za-z_][\w:]*(?:\s*<[^;{}()]*>)?)[\s*&]+"
+                + re.escape(member.encode())
+                + rb"\s*(?:=[^;]*)?;"
+            )
+            for path in self._files_naming(cls):
+                data = self._data(path)
+                at = class_body(data, cls)
+                if at is None:
+                    continue
+                for m in declared.finditer(data, at[0], at[1]):
+                    found.add(fields.type_name(m.group(1).decode("utf-8", "replace")))
+            self._returned[key] = found.pop() if len(found) == 1 else None
+        return self._returned[key]
 
     def returned_class(self, name: str) -> str | None:
         """The class that every definition of function ``name`` in the repository returns
@@ -2750,7 +2797,7 @@ class RepositoryResolver:
 
     def _declared_now(self, pending: str) -> AbstractValue | None:
         _, cls, names_text = pending.split(".", 2)
-        if cls.endswith("()"):
+        if cls.endswith("()") or MEMBER_MARK in cls:
             real = self._through_getter(pending)
             return self.declared(real) if real else None
         names = b"|".join(re.escape(n.encode()) for n in names_text.split("|") if n)
