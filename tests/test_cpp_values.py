@@ -436,6 +436,18 @@ def _write(tmp_path, files: dict[str, str]) -> list[str]:
     return paths
 
 
+def test_a_member_class_is_read_from_its_class_declaration(tmp_path):
+    header = tmp_path / "GPSService.h"
+    header.write_text(
+        "class GPSService {\n public:\n  GPSFix fix;\n"
+        "  GPSFix get() const { return fix; }\n  const nmea::GPSFix *last = nullptr;\n};\n"
+    )
+    resolver = RepositoryResolver([str(header)], _reader())
+    assert resolver.member_class("GPSService", "fix") == "GPSFix"
+    assert resolver.member_class("GPSService", "last") == "GPSFix"
+    assert resolver.member_class("GPSService", "speed") is None
+
+
 def _reader(reads: list[str] | None = None):
     """A resolver's file reader, noting each path it reads in ``reads``."""
 

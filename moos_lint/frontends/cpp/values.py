@@ -592,6 +592,9 @@ _FIELD_LINE = (
 )
 
 
+#: words that may stand before a name in a class's body without declaring it
+_NOT_TYPES = frozenset({"return", "delete", "throw", "case", "else", "goto", "co_return"})
+
 #: in a pending field ``.Outer>member.field``: the field of member ``member`` of class
 #: ``Outer`` (the member's class read from Outer's declaration in the repository)
 MEMBER_MARK = ">"
@@ -2768,7 +2771,9 @@ class RepositoryResolver:
                 if at is None:
                     continue
                 for m in declared.finditer(data, at[0], at[1]):
-                    found.add(fields.type_name(m.group(1).decode("utf-8", "replace")))
+                    word = m.group(1).decode("utf-8", "replace")
+                    if word not in _NOT_TYPES:  # (``return fix;`` in an inline method)
+                        found.add(fields.type_name(word))
             self._returned[key] = found.pop() if len(found) == 1 else None
         return self._returned[key]
 
