@@ -545,13 +545,20 @@ class Preprocessor:
 
     def _made_at_launch(self, target: str, top_dir: str) -> bool:
         """Whether a launch script beside the top-level file writes the missing include
-        before nsplug runs (``cat > plug_pShare.moos <<EOF``) or a clean script deletes it:
-        a file the launch makes, absent at rest."""
-        if self.mode != "lint" or "/" in target.replace("\\", "/"):
+        before nsplug runs (``cat > plug_pShare.moos <<EOF``) or a clean script deletes it,
+        or the repository's ``.gitignore`` keeps it out (``plug_UUV*``: a build step, in
+        any language, writes it): a file the launch makes, absent at rest."""
+        if self.mode != "lint" or os.path.isabs(target):
             return False
+        from moos_lint.files.gitignore import ignored_file
         from moos_lint.files.launch import made_by_scripts
+        from moos_lint.files.project import is_within, vcs_top
 
-        return target in made_by_scripts(top_dir)
+        if "/" not in target.replace("\\", "/") and target in made_by_scripts(top_dir):
+            return True
+        top = vcs_top(top_dir)
+        path = os.path.normpath(os.path.join(top_dir, target))
+        return top is not None and is_within(path, top) and ignored_file(path, top)
 
     # ------------------------------------------------------------------ expand
     def expand(self, path: str | Path, macros: dict | None = None) -> Expansion:

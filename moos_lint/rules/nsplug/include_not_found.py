@@ -14,7 +14,9 @@ launch script there runs nsplug on the template from outside its folder
 `#include bhvs/plug_return.bhv`, in the mission folder). A file that a
 launch script beside the top-level file writes before it runs nsplug
 (`cat > plug_pShare.moos <<EOF`), or that a clean script deletes, is made at
-launch: its absence is not reported. When one of those folders holds the
+launch: its absence is not reported; so is one the repository's `.gitignore`
+keeps out of git (`plug_SENSOR*`): a build step writes it, in whatever
+language (a mission generator), and it is never committed. When one of those folders holds the
 file under the same name in another case (`plug_v1_origin.moos` for
 `#include plug_V1_origin.moos`), the message says so: the mission then works
 on a case-insensitive file system (macOS's default) and fails on Linux. A
