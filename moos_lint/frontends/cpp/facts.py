@@ -242,6 +242,11 @@ _XS_EULER = "the Xsens SDK's XsEuler holds Euler angles in degrees"
 #: returns its PlatModel's (ObShipModelV24.h:76), lib_dep_behaviors' ``ObShipModel`` its
 #: own ``angle360(osh)`` (ObShipModel.cpp:93, ObShipModel.h:61)
 _OWNSHIP_HEADING = "MOOS-IvP's ownship heading, degrees clockwise from north"
+#: MOOS-IvP's NodeRecord (lib_contacts) holds a node report's ``HDG=`` field as given
+#: (``string2NodeRecord``: ``setHeading(atof(value))``, NodeRecordUtils.cpp), which
+#: pNodeReporter fills with the vehicle's NAV_HEADING: ``getHeading()`` (NodeRecord.h:80)
+#: is a heading in degrees
+_NODE_HEADING = "a node report's HDG, the vehicle's heading in degrees clockwise from north"
 LIBRARY_METHODS: dict[tuple[str, str], tuple[str, str | None, tuple[float, float], str]] = {
     **{
         ("XsEuler", method): ("deg", None, (-180.0, 180.0), _XS_EULER)
@@ -252,6 +257,7 @@ LIBRARY_METHODS: dict[tuple[str, str], tuple[str, str | None, tuple[float, float
         (cls, "getOSH"): ("deg", "heading", (0.0, 360.0), _OWNSHIP_HEADING)
         for cls in ("PlatModel", "ObShipModel", "ObShipModelV24")
     },
+    ("NodeRecord", "getHeading"): ("deg", "heading", (0.0, 360.0), _NODE_HEADING),
 }
 
 #: Methods of library classes that return an object of a library class: (class, method)

@@ -4,7 +4,8 @@
 Reports a call of C++'s `sin`, `cos` or `tan` (`std::` or not, and their
 `f`/`l` forms) whose argument is known to be in degrees: a heading read by mail
 (`NAV_HEADING`, `DESIRED_HEADING`) or, in a helm behavior, from the helm's
-buffer (`getBufferDoubleVal("NAV_HEADING", ok)`), a value converted to degrees
+buffer (`getBufferDoubleVal("NAV_HEADING", ok)`), a contact's heading from its
+node report (MOOS-IvP's `NodeRecord::getHeading()`), a value converted to degrees
 (`MOOSRad2Deg`, `* 180 / M_PI`), or a sum or difference with such a term in
 it, whatever the other terms are (`cos(90 - heading)`,
 `sin(heading + tan(dx / dy))`: a sum with degrees in it is not radians),
