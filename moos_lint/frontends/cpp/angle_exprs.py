@@ -11,7 +11,7 @@ import math
 import re
 
 from moos_lint.frontends.cpp.extract import WRAP_2PI, WRAP_PI
-from moos_lint.frontends.cpp.names import axis_word
+from moos_lint.frontends.cpp.names import axis_word, last_word, words
 
 PI = r"(?:M_PI|\bPI\b|\bpi\b|3\.14\d*)"
 #: heading-ish identifiers (a word of the name)
@@ -36,15 +36,6 @@ _RAD2DEG = re.compile(
 )
 _INV_TRIG = re.compile(r"\b(?:std::)?(?:atan2|atan|asin|acos)f?\s*\(")
 _ARITH = re.compile(r"(?<![eE(,=\s])\s*[-+*/]\s*(?!=)|[^\s(,=]\s+[-+*/]\s")
-
-
-def words(name: str) -> list[str]:
-    return [w for w in re.split(r"[^A-Za-z0-9]+", name) if w]
-
-
-def last_word(name: str) -> str:
-    w = words(name)
-    return w[-1].upper() if w else ""
 
 
 def is_yaw_var(name: str) -> bool:

@@ -2753,6 +2753,18 @@ class RepositoryResolver:
             real = self.returned_class(getter.removesuffix("()"))
         return f".{real}.{names_text}" if real else None
 
+    def _in_class_bodies(
+        self, cls: str, pattern: re.Pattern[bytes]
+    ) -> Iterator[tuple[str, bytes, re.Match[bytes]]]:
+        """Each match of ``pattern`` in the body of a declaration of class ``cls`` in the
+        repository: (path, the file's bytes, the match)."""
+        for path in self._files_naming(cls):
+            data = self._data(path)
+            at = class_body(data, cls)
+            if at is not None:
+                for m in pattern.finditer(data, at[0], at[1]):
+                    yield path, data, m
+
     def member_class(self, cls: str, member: str) -> str | None:
         """The class member ``member`` of class ``cls`` is declared of (``GPSFix`` for
         ``class GPSService { public: GPSFix fix; ... }``), read from the body of every
@@ -2765,15 +2777,10 @@ class RepositoryResolver:
                 + re.escape(member.encode())
                 + rb"\s*(?:=[^;]*)?;"
             )
-            for path in self._files_naming(cls):
-                data = self._data(path)
-                at = class_body(data, cls)
-                if at is None:
-                    continue
-                for m in declared.finditer(data, at[0], at[1]):
-                    word = m.group(1).decode("utf-8", "replace")
-                    if word not in _NOT_TYPES:  # (``return fix;`` in an inline method)
-                        found.add(fields.type_name(word))
+            for _path, _data, m in self._in_class_bodies(cls, declared):
+                word = m.group(1).decode("utf-8", "replace")
+                if word not in _NOT_TYPES:  # (``return fix;`` in an inline method)
+                    found.add(fields.type_name(word))
             self._returned[key] = found.pop() if len(found) == 1 else None
         return self._returned[key]
 
@@ -2810,18 +2817,13 @@ class RepositoryResolver:
             return None
         pattern = re.compile(_FIELD_LINE % names, re.M | re.S)
         found: AbstractValue | None = None
-        for path in self._files_naming(cls):
-            data = self._data(path)
-            at = class_body(data, cls)
-            if at is None:
-                continue
-            for m in pattern.finditer(data, at[0], at[1]):
-                line = data.count(b"\n", 0, m.start(1)) + 1
-                where = f"`{cls}::{names_text.split('|')[0]}` ({os.path.basename(path)}:{line})"
-                v = declaration_hint(m.group(1).decode("utf-8", "replace"), where)
-                if v is None or (found is not None and found.unit != v.unit):
-                    return None
-                found = found or v
+        for path, data, m in self._in_class_bodies(cls, pattern):
+            line = data.count(b"\n", 0, m.start(1)) + 1
+            where = f"`{cls}::{names_text.split('|')[0]}` ({os.path.basename(path)}:{line})"
+            v = declaration_hint(m.group(1).decode("utf-8", "replace"), where)
+            if v is None or (found is not None and found.unit != v.unit):
+                return None
+            found = found or v
         return found
 
     def _parse(self, path: str, data: bytes | None) -> Any:
