@@ -696,7 +696,7 @@ class _Kept:
     behavior file read is the same kept expansion.
     """
 
-    __slots__ = ("catalogue", "expansions", "lookups", "moos", "publishers")
+    __slots__ = ("catalogue", "core", "expansions", "lookups", "moos", "publishers")
 
     def __init__(
         self,
@@ -707,6 +707,7 @@ class _Kept:
     ):
         self.moos = moos
         self.catalogue = catalogue
+        self.core = builder.m
         self.lookups = list(builder.behavior_lookups)
         self.expansions = list(builder.behavior_expansions)
         self.publishers = publishers
@@ -783,6 +784,22 @@ def _core(run: RunView, path: str, moos: MoosFile) -> _Builder:
     return found
 
 
+def sibling_model(run: RunView, path: str) -> MissionModel | None:
+    """The mission's own part (:func:`_core`) of the mission at ``path`` beside another
+    (one of its ``sibling_missions``): what the language server keeps of it from one run
+    to the next while it is unchanged, as for what it publishes; None when its expansion
+    is not whole (a macro or an include left unread: what it reads is not all known)."""
+    exp = run.preprocessor.expand(path)
+    if exp.read_problem is not None or exp.incomplete:
+        return None
+    moos = parsed(exp, parse_moos)
+    with _KEPT_LOCK:
+        kept = _KEPT.get(path)
+    if kept is not None and kept.holds(run, moos, catalogue_for(run)):
+        return kept.core
+    return _core(run, path, moos).m
+
+
 def model_of(run: RunView, path: str, moos: MoosFile) -> MissionModel:
     """The model of the mission at ``path`` (parsed as ``moos``), built once per lint run."""
     cache = run.memos.mission_models
@@ -801,4 +818,5 @@ __all__ = [
     "mission_model",
     "missions_beside",
     "model_of",
+    "sibling_model",
 ]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 
 def typos(a: str, b: str) -> int:
@@ -34,6 +34,21 @@ def misspelling_of(name: str, candidates: Iterable[str], most: int) -> str | Non
 
 
 _DIGITS = re.compile(r"[0-9]+")
+
+
+def sized_like(wanted: Iterable[str]) -> Callable[[str], bool]:
+    """Whether a candidate may be a typo of one of the ``wanted`` names by its size
+    alone: as many ``_``-separated words, and a length two letters or fewer away (a typo
+    of a word, as :meth:`VariableSpeller.meant` takes one, changes no more)."""
+    sizes: dict[int, set[int]] = {}
+    for w in wanted:
+        sizes.setdefault(w.count("_"), set()).add(len(w))
+
+    def fits(candidate: str) -> bool:
+        near = sizes.get(candidate.count("_"), ())
+        return any(abs(len(candidate) - n) <= 2 for n in near)
+
+    return fits
 
 
 class VariableSpeller:

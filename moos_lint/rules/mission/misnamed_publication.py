@@ -52,18 +52,20 @@ None.
 
 MOOS-IvP caveats, deliberately not reported: as unread-publication, a
 mission that launches an app the catalogue does not know (it may read
-anything), or that shares variables with the other missions of its folder;
-names with run-time placeholders or nsplug macros.
+anything); a name another mission of its folder reads, when the mission
+shares variables with them (pShare, the node and shore brokers), or any name
+when one of those missions may read anything or is not whole (a macro or an
+include it leaves unread); names with run-time placeholders or nsplug macros.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 from moos_lint.files.diagnostics import Edit, Fix, Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.spelling import VariableSpeller
+from moos_lint.rules.kit.spelling import VariableSpeller, sized_like
 from moos_lint.rules.mission.unread_publication import judged_postings
 from moos_lint.semantics.mission_model import mission_model
 from moos_lint.semantics.variables import SUBSCRIBE, bare_name
@@ -88,26 +90,28 @@ def check(ctx):
     judged = judged_postings(ctx)
     if judged is None:
         return
-    names, postings = judged
+    names, unread = judged
     by_words: dict[tuple[str, ...], set[str]] = {}
     for read in names:
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
+    postings = [(ref, name) for ref, name in unread if _NAME.fullmatch(name)]
+    # the postings no read name has the words of: each may be a typo of one
+    unmatched = [name for _ref, name in postings if not by_words.get(words(name), set()) - {name}]
     speller: VariableSpeller | None = None
     updates: VariableSpeller | None = None
     for ref, name in postings:
-        if not _NAME.fullmatch(name):
-            continue
         meant = sorted(by_words.get(words(name), set()) - {name})
         how = "with the same words"
         either = False
         if not meant:
             if speller is None:
-                speller = VariableSpeller(_settled(ctx, by_words))
+                speller = VariableSpeller(_settled(ctx, by_words, sized_like(unmatched)))
             typo = speller.meant(name)
             if typo is None:
                 if updates is None:
-                    updates = VariableSpeller(_unposted_updates(ctx))
+                    fits = sized_like(unmatched)
+                    updates = VariableSpeller(n for n in _unposted_updates(ctx) if fits(n))
                 typo = updates.meant(name)
                 either = typo is not None
             if typo is None:
@@ -149,7 +153,9 @@ def _unposted_updates(ctx) -> Iterator[str]:
                 yield name
 
 
-def _settled(ctx, by_words: dict[tuple[str, ...], set[str]]) -> Iterator[str]:
+def _settled(
+    ctx, by_words: dict[tuple[str, ...], set[str]], fits: Callable[[str], bool]
+) -> Iterator[str]:
     """The read names whose spelling is settled, so that a posting a typo away from one
     is the misspelt side: a name an app's or a behavior's code reads (uFldBeaconRangeSensor
     registers for `BRS_RANGE_REQUEST`), or one the mission also publishes. A name only
@@ -168,5 +174,5 @@ def _settled(ctx, by_words: dict[tuple[str, ...], set[str]]) -> Iterator[str]:
                 coded |= info.reads
     for names in by_words.values():
         for name in names:
-            if name in coded or model.published_by(name):
+            if fits(name) and (name in coded or model.published_by(name)):
                 yield name

@@ -48,7 +48,8 @@ MOOS-IvP caveats, deliberately not reported:
   pHelmIvP, pShare and broker apps are modelled through their
   configuration instead;
 - variables the other missions of the folder read, when the mission shares
-  variables with them.
+  variables with them (and every variable, when one of them may read anything
+  or is not whole: a macro or an include it leaves unread).
 """
 
 import fnmatch
@@ -56,7 +57,7 @@ from collections.abc import Iterator
 
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.semantics.mission_model import MissionModel, mission_model
+from moos_lint.semantics.mission_model import MissionModel, mission_model, sibling_model
 from moos_lint.semantics.variables import PUBLISH, SUBSCRIBE, VarRef, bare_name
 
 
@@ -123,8 +124,16 @@ def judged_postings(ctx) -> tuple[set[str], Iterator[tuple[VarRef, str]]] | None
     name, or missions beside it publish to it."""
     model = mission_model(ctx)
     names, open_ended = readers(model)
-    if open_ended or model.sibling_missions:
+    if open_ended:
         return None
+    for path in model.sibling_missions:  # what the missions beside it read counts too
+        sibling = sibling_model(ctx.run, path)
+        if sibling is None:
+            return None
+        their_names, their_open = readers(sibling)
+        if their_open:
+            return None
+        names |= their_names
     return names, unread(model, names)
 
 
