@@ -98,6 +98,7 @@ def check(ctx):
     postings = [(ref, name) for ref, name in unread if _NAME.fullmatch(name)]
     # the postings no read name has the words of: each may be a typo of one
     unmatched = [name for _ref, name in postings if not by_words.get(words(name), set()) - {name}]
+    fits = sized_like(unmatched)
     speller: VariableSpeller | None = None
     updates: VariableSpeller | None = None
     for ref, name in postings:
@@ -106,11 +107,10 @@ def check(ctx):
         either = False
         if not meant:
             if speller is None:
-                speller = VariableSpeller(_settled(ctx, by_words, sized_like(unmatched)))
+                speller = VariableSpeller(_settled(ctx, by_words, fits))
             typo = speller.meant(name)
             if typo is None:
                 if updates is None:
-                    fits = sized_like(unmatched)
                     updates = VariableSpeller(n for n in _unposted_updates(ctx) if fits(n))
                 typo = updates.meant(name)
                 either = typo is not None
