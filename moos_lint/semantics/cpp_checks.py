@@ -95,10 +95,14 @@ def pure_app_does_io(app: AppModel, sockets: bool = True) -> Iterator[Finding]:
         return
     # a type named like a link (``UdpDecoder``) that is the app's own class is no evidence:
     # what it does shows in its calls, includes and strings
-    own = {*app.base_chain, *(c.name for f in app.files for c in f.classes)}
-    io = [u for u in app.io if not (u.kind in ("socket", "serial") and u.detail in own)]
     # nor is the header of the app's own class (``pMOOSSerial``'s ``#include "MOOSSerial.h"``)
-    io = [u for u in io if not (u.kind == "serial" and _header_stem(u.detail) in app.base_chain)]
+    own = {*app.base_chain, *(c.name for f in app.files for c in f.classes)}
+    io = [
+        u
+        for u in app.io
+        if not (u.kind in ("socket", "serial") and u.detail in own)
+        and not (u.kind == "serial" and _header_stem(u.detail) in app.base_chain)
+    ]
     uses = [u for u in io if u.device]
     termios = [u for u in io if u.kind == "termios"]
     if termios and any(u.kind == "serial" for u in uses):

@@ -35,6 +35,8 @@ MAIL_COMPARES = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "IsName"}
 #: ``m_Comms.PeekMail(NewMail, "KEY", Msg)``: the mail of one key taken from the list
 #: (core MOOS, Comms/MOOSCommClient.h), in old apps the test of a message's key
 PEEK_MAIL = {"PeekMail", "PeekAndCheckMail"}
+#: the calls that test which variable a message is
+_KEY_TESTS = frozenset(MAIL_COMPARES | PEEK_MAIL)
 
 
 def words(name: str) -> list[str]:
@@ -158,7 +160,7 @@ def key_literal(cond: Any) -> str | None:
                     return _literal(s)
         if (
             x.type == "call_expression"
-            and callee_name(x.child_by_field_name("function")) in MAIL_COMPARES | PEEK_MAIL
+            and callee_name(x.child_by_field_name("function")) in _KEY_TESTS
         ):
             for a in x.child_by_field_name("arguments").named_children:
                 if a.type == "string_literal":

@@ -460,6 +460,19 @@ def ned_z_name(name: str) -> bool:
     )
 
 
+def _reads_number(n: Any) -> bool:
+    """Whether ``n`` reads a message's number (``msg.GetDouble()``, ``p->GetDoubleValue()``)."""
+    n = strip(n)
+    if n is None or n.type != "call_expression":
+        return False
+    fn = n.child_by_field_name("function")
+    return (
+        fn is not None
+        and fn.type == "field_expression"
+        and text(fn.child_by_field_name("field")) in ("GetDouble", "GetDoubleValue")
+    )
+
+
 def _variable_value(var: str | None, why: str) -> AbstractValue:
     """What :data:`facts.MAIL_UNITS` says of MOOS variable ``var``, read as ``why`` says."""
     fact = facts.MAIL_UNITS.get(var) if var is not None else None
@@ -1366,7 +1379,7 @@ class Evaluator:
                 why = f"{field} read with {name}() at {at}; {angles}"
                 return AbstractValue(unit="deg", hint=True, why=(why,))
             return UNKNOWN
-        if name in ("GetDouble", "GetDoubleValue") and fn.type == "field_expression":
+        if _reads_number(n):
             return self._mail(pf, n)
         if name in facts.BUFFER_READS and facts.BUFFER_READS[name] is None and args:
             return self._buffer_read(pf, n, args[0])
@@ -1469,6 +1482,7 @@ class Evaluator:
         return self._once(("fn", name), lambda: _join_all(values()) or UNKNOWN)
 
     def _mail(self, pf: Any, n: Any) -> AbstractValue:
+        """What the message read at ``n`` holds: the variable its branch tests for."""
         var = mail_key_of(n)
         at = place(pf.path, n.start_point[0] + 1)
         return _variable_value(var, f"{var} read by mail at {at}")
@@ -1478,19 +1492,10 @@ class Evaluator:
         app template does (``double dval = msg.GetDouble();`` then ``if(key == "NAV_HEADING")
         m_heading = dval;``): read at ``use``, it is the variable that branch tests for.
         None when ``rhs`` is no such read (or the read's own branch names its variable)."""
-        rhs = strip(rhs)
-        if rhs is None or rhs.type != "call_expression":
+        if not _reads_number(rhs) or mail_key_of(rhs) is not None:
             return None
-        fn = rhs.child_by_field_name("function")
-        if fn is None or fn.type != "field_expression":
-            return None
-        if text(fn.child_by_field_name("field")) not in ("GetDouble", "GetDoubleValue"):
-            return None
-        if mail_key_of(rhs) is not None:
-            return None
-        var = mail_key_of(use)
-        at = place(pf.path, use.start_point[0] + 1)
-        return _variable_value(var, f"{var} read by mail at {at}") if var else None
+        v = self._mail(pf, use)
+        return v if v.known else None
 
     def _buffer_read(self, pf: Any, call: Any, var: Any) -> AbstractValue:
         """A MOOS variable read from the helm's information buffer (``getBufferDoubleVal(

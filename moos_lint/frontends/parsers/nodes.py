@@ -166,6 +166,10 @@ class RunLine:
     options: dict[str, str]
     alias: str | None
     alias_from_params: str | None = None  # ``--alias=`` given through ExtraProcessParams
+    #: as written: the options between the ``@`` and the ``~``, and all after the ``~``
+    #: (the alias, and what pAntler never reads after its comma)
+    options_text: str = ""
+    alias_text: str = ""
     #: the program pAntler starts, without its folder
     program: str = field(init=False)
     #: the MOOS name the process connects as, and the block it reads
@@ -318,7 +322,7 @@ def parse_run(param: Param, block: Block) -> RunLine:
                     token = _squeeze(token)
                     if token.startswith("--alias="):
                         alias_from_params = token[len("--alias=") :] or None
-    return RunLine(param, binary, has_at, options, alias, alias_from_params)
+    return RunLine(param, binary, has_at, options, alias, alias_from_params, opts_text, alias_text)
 
 
 def antler_runs(block: Block) -> list[RunLine]:

@@ -50,33 +50,27 @@ from moos_lint.rules.kit.declare import Scope, rule
 )
 def check(ctx):
     for run in ctx.moos.runs:
-        value = run.param.value
-        if not run.has_at or "~" not in value:
-            continue
-        head, _, alias_text = value.partition("~")
-        alias, comma, rest = alias_text.partition(",")
+        alias, comma, rest = run.alias_text.partition(",")
         words = alias.split()
+        if not run.has_at or not words:
+            continue
         if comma and rest.strip():
             ignored = rest.strip()
             how = "reads no more than the first word after the `~` (the MOOS name)"
         elif len(words) > 1 and "=" in alias:
             ignored = " ".join(words[1:])
             how = (
-                "reads the line with its spaces removed, so the process connects as "
-                f"`{''.join(words)}`"
+                f"reads the line with its spaces removed, so the process connects as `{run.alias}`"
             )
         else:
-            continue
-        if not words:
             continue
         fix = None
         if "=" in ignored:
             why = f"pAntler reads options only between the `@` and the `~`, and {how}"
-            if not has_macro(value):
-                options = head.rstrip()
-                sep = ", " if options.partition("@")[2].strip() else " "
+            if not has_macro(run.param.value):
+                options = run.options_text.strip()
                 moved = ", ".join(p.strip() for p in ignored.split(",") if p.strip())
-                text = f"{options}{sep}{moved} ~ {words[0]}"
+                text = f"{run.binary} @ {options + ', ' if options else ''}{moved} ~ {words[0]}"
                 fix = Fix("move the options before the `~`", (Edit(run.param.value_span, text),))
         else:
             why = f"pAntler {how}: one Run line launches one process"
