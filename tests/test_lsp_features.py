@@ -331,3 +331,25 @@ def test_a_cpp_document_is_linted_as_the_editor_holds_it(tmp_path: Path):
     assert "C010" not in codes(analyse(str(path), {str(path): saved}))
     assert "C010" in codes(analyse(str(path), {str(path): edited}))
     assert path.read_text() == saved
+
+
+def test_a_re_lint_sees_the_projects_own_behavior_copies_change(tmp_path: Path):
+    """What the project's own copy of a stock behavior reads is kept between re-lints
+    only while that copy, and the folders that hold the copies, are unchanged."""
+    vendored = FIXTURES.parent / "rules" / "unknown-behavior-parameter" / "quiet" / "vendored"
+    root = tmp_path / "vendored"
+    shutil.copytree(vendored, root)
+    bhv = str(root / "vendored.bhv")
+    texts = {bhv: (root / "vendored.bhv").read_text()}
+
+    def codes() -> list[str]:
+        return [f.diagnostic.code for f in analyse(bhv, texts).findings]
+
+    assert codes() == []  # the copy reads `active_grade`
+    copy = root / "lib_behaviors" / "BHV_AvoidCollision.cpp"
+    reads = copy.read_text()
+    copy.write_text(reads.replace('"active_grade"', '"other_grade"'))
+    assert codes() == ["M004"]  # the copy no longer reads it
+    (root / "lib_extra").mkdir()
+    (root / "lib_extra" / "BHV_AvoidCollision.cpp").write_text(reads)
+    assert codes() == []  # a second copy, in a new folder, reads it

@@ -158,6 +158,15 @@ class MissionModel:
                 found.extend(pubs)
         return found
 
+    def is_published(self, var: str) -> bool:
+        """Whether anything publishes ``var``: :meth:`published_by`, without listing who."""
+        if self.publishers.get(var):
+            return True
+        by_app, globs = self._dynamic()
+        if any(app.publishes_var(var) for app, _indexed in by_app):
+            return True
+        return any(_glob_match(name, var) for name, _pubs in globs)
+
     def built_from_config(self, var: str) -> Process | None:
         """The launched process that most likely posts ``var`` under a name built from a
         value of its block: pMarinePIDV22's ``output_suffix = _PID`` posts
@@ -262,8 +271,13 @@ class MissionModel:
 
 
 def _glob_match(pattern: str, var: str) -> bool:
-    rx = re.escape(pattern).replace(r"\*", ".*").replace(r"\?", ".")
-    return re.fullmatch(rx, var) is not None
+    return _glob_regex(pattern).fullmatch(var) is not None
+
+
+@functools.lru_cache(maxsize=1024)
+def _glob_regex(pattern: str) -> re.Pattern[str]:
+    """A published wildcard name (``RANGE_AVD_*``) as the expression it matches."""
+    return re.compile(re.escape(pattern).replace(r"\*", ".*").replace(r"\?", "."))
 
 
 def _norm(path: str) -> str:

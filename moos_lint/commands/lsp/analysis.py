@@ -234,7 +234,10 @@ def analyse(
             return True
         if unit.cpp is not None and any(f.path == path for f in unit.cpp.files):
             return True  # a C++ app reports in any of its files
-        return is_bhv and unit.moos is not None and unit.moos.is_mission
+        if not is_bhv or unit.moos is None or not unit.moos.is_mission:
+            return False
+        # a mission reads behavior files only through a ``behaviors =`` line (its helm's)
+        return any(block.get("behaviors") for block in unit.moos.blocks)
 
     reader = FileCache(reader=MemoryReader(texts, seen, _DISK.read), store=_EXPANSIONS)
     result = lint_files(files, settings, cache=reader, checked=can_report_here, stop=stop)

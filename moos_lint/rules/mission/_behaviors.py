@@ -7,6 +7,7 @@ import re
 from typing import TYPE_CHECKING
 
 from moos_lint.files.source import read_head
+from moos_lint.files.stamps import file_stamp
 from moos_lint.files.suffixes import is_cpp
 from moos_lint.files.walk import project_walk
 from moos_lint.semantics.catalogue import BehaviorInfo, catalogue_for
@@ -148,11 +149,35 @@ def own_source_keys(ctx: Context, kind: str, bhv_path: str) -> frozenset[str]:
         if copies is None:
             copies = ctx.run.memos.helm_copies[src] = _behavior_sources(src)
         for path in copies.get(kind + ".cpp", ()):
-            data = read_head(path, 1024 * 1024)
-            if data is None:
-                continue
-            keys.update(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
+            keys.update(_literals(path))
     memo[key] = found = frozenset(keys)
+    return found
+
+
+#: Kept from one run to the next, as the language server re-lints at every edit: a
+#: helm source folder -> (the modification time of each folder below it, what
+#: :func:`_behavior_sources` found there); a behavior's C++ file -> (its stamp, its
+#: literals). A listing holds while no folder below gained or lost an entry, a file's
+#: literals while the file is unchanged.
+_KEPT_COPIES: dict[str, tuple[tuple[tuple[str, int], ...], dict[str, list[str]]]] = {}
+_KEPT_LITERALS: dict[str, tuple[tuple[int, int], frozenset[str]]] = {}
+_KEPT_SIZE = 256
+
+
+def _literals(path: str) -> frozenset[str]:
+    """The string literals (lower case) of the C++ file at ``path`` that could be keys."""
+    stamp = file_stamp(path)
+    kept = _KEPT_LITERALS.get(path)
+    if kept is not None and stamp is not None and kept[0] == stamp:
+        return kept[1]
+    data = read_head(path, 1024 * 1024)
+    if data is None:
+        return frozenset()
+    found = frozenset(m.group(1).decode("ascii").lower() for m in _LITERAL.finditer(data))
+    if stamp is not None:
+        if len(_KEPT_LITERALS) >= _KEPT_SIZE:
+            _KEPT_LITERALS.clear()
+        _KEPT_LITERALS[path] = (stamp, found)
     return found
 
 
@@ -168,10 +193,19 @@ def _behavior_sources(src: str) -> dict[str, list[str]]:
     """The ``BHV_*.cpp`` files one folder below source folder ``src``, by file name."""
     found: dict[str, list[str]] = {}
     try:
-        subs = sorted(e.path for e in os.scandir(src) if e.is_dir() and e.name[0] != ".")
+        stamps = tuple(
+            sorted(
+                (e.path, e.stat().st_mtime_ns)
+                for e in os.scandir(src)
+                if e.is_dir() and e.name[0] != "."
+            )
+        )
     except OSError:
         return found
-    for sub in subs:
+    kept = _KEPT_COPIES.get(src)
+    if kept is not None and kept[0] == stamps:
+        return kept[1]
+    for sub, _mtime in stamps:
         try:
             names = [e.name for e in os.scandir(sub) if e.name.startswith("BHV_")]
         except OSError:
@@ -179,6 +213,9 @@ def _behavior_sources(src: str) -> dict[str, list[str]]:
         for name in sorted(names):
             if name.endswith(".cpp"):
                 found.setdefault(name, []).append(os.path.join(sub, name))
+    if len(_KEPT_COPIES) >= _KEPT_SIZE:
+        _KEPT_COPIES.clear()
+    _KEPT_COPIES[src] = (stamps, found)
     return found
 
 

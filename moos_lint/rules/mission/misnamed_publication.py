@@ -60,6 +60,7 @@ include it leaves unread); names with run-time placeholders or nsplug macros.
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterator
 
@@ -73,6 +74,7 @@ from moos_lint.semantics.variables import SUBSCRIBE, bare_name
 _NAME = re.compile(r"[A-Z][A-Z0-9_]*")
 
 
+@functools.lru_cache(maxsize=8192)  # (the read names of a folder's missions, asked per mission)
 def words(name: str) -> tuple[str, ...]:
     """The name's `_`-separated words, a plural `S` dropped, in sorted order."""
     return tuple(sorted(w[:-1] if len(w) > 2 and w.endswith("S") else w for w in name.split("_")))
@@ -149,7 +151,7 @@ def _unposted_updates(ctx) -> Iterator[str]:
     for ref in model.refs:
         if ref.role == SUBSCRIBE and ref.param == "updates":
             name = bare_name(ref.name)
-            if name and name == ref.name and not model.published_by(name):
+            if name and name == ref.name and not model.is_published(name):
                 yield name
 
 
@@ -174,5 +176,5 @@ def _settled(
                 coded |= info.reads
     for names in by_words.values():
         for name in names:
-            if fits(name) and (name in coded or model.published_by(name)):
+            if fits(name) and (name in coded or model.is_published(name)):
                 yield name

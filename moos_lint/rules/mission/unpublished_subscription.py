@@ -180,7 +180,7 @@ def check(ctx):
         name = bare_name(ref.name)
         if not name or name != ref.name or ref.wildcard or "*" in name or "?" in name:
             continue
-        if model.published_by(name) or name in posted:
+        if model.is_published(name) or name in posted:
             continue
         meant = None
         if one_alternative(ref):
