@@ -86,7 +86,18 @@ TURN_NAMES = {
 #: C++'s sine, cosine and tangent (``std::`` or not; float and long double forms): radians in
 TRIG = {f"{f}{s}" for f in ("sin", "cos", "tan") for s in ("", "f", "l")}
 STRCMP = {"MOOSStrCmp", "MOOSStrCmpi", "strcmp", "strcasecmp", "strBegins", "strEnds"}
-PREFIX_CALLS = {"strBegins", "find", "compare", "rfind", "starts_with", "MOOSStrCmpN"}
+PREFIX_CALLS = {
+    "strBegins",
+    "find",
+    "compare",
+    "rfind",
+    "starts_with",
+    "MOOSStrCmpN",
+    # C's comparison of the first n letters: ``strncmp(key.c_str(), "NAV_", 4)``
+    "strncmp",
+    "strncasecmp",
+    "_strnicmp",
+}
 IO_TYPES = re.compile(
     r"^(?:CMOOSSerialPort|CMOOSLinuxSerialPort|CMOOSNTSerialPort|SerialPort|QSerialPort|Serial)$"
 )
@@ -1599,9 +1610,13 @@ class Extractor:
                 args = n.child_by_field_name("arguments").named_children
                 name = callee(f)
                 if name in PREFIX_CALLS and args:
-                    lit = string_value(strip_parens(args[0]))
-                    if name == "strBegins" and len(args) > 1:
-                        lit = string_value(strip_parens(args[1]))
+                    # the literal the key is compared with: ``key.find("X_")``,
+                    # ``strBegins(key, "X_")``, ``strncmp(key.c_str(), "X_", 2)``,
+                    # ``key.compare(0, 2, "X_")``
+                    lit = next(
+                        (v for a in args[:3] if (v := string_value(strip_parens(a))) is not None),
+                        None,
+                    )
                     if lit is not None:
                         self.out.mail_keys.append(MailKey(lit, self.pf.spans.of(n), prefix=True))
                 if (

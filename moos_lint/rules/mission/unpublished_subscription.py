@@ -93,6 +93,10 @@ MOOS-IvP caveats, deliberately not reported:
   uFldRescueMgr from another tree, `ODOMETRY_DIST` when it runs pOdometry):
   MOOS-IvP apps name their own variables so (uSimMarine `USM_*`,
   uFldShoreBroker `UFSB_*`), so that app most likely posts it;
+- a variable whose name holds the `name` of a behavior whose kind the
+  catalogue does not describe and whose C++ is not in the project
+  (`condition = CONFINES_stayIN != VIOLATION` beside a `BHV_SecurityFence`
+  named `stayIN`): such a behavior most likely posts it;
 - a name a launched app builds from a value of its block: pMarinePIDV22's
   `output_suffix = _PID` makes `DESIRED_RUDDER_PID` of `DESIRED_RUDDER`
   (`"DESIRED_RUDDER" + m_output_suffix`), when the app builds names at run time
@@ -171,6 +175,7 @@ def check(ctx):
         if not known:
             unknown_kinds.append(kind)
     gaps = _gaps(model, unknown_kinds)
+    unknown_names = _behavior_names(model, unknown_kinds)
     unknown_prefixes = {pre for p in model.unknown_apps for pre in own_prefixes(p.binary)}
     seen: set[tuple[str, str, int]] = set()
     routes: set[str] | None = None  # the pShare routes the mission listens on
@@ -197,6 +202,8 @@ def check(ctx):
         seen.add(key)
         if _named_after(name, unknown_prefixes):
             continue  # named after an app the catalogue does not know: likely its own
+        if _names_one(name, unknown_names):
+            continue  # named after a behavior of a kind not known: likely its post
         if model.built_from_config(name) is not None:
             continue  # a name an app builds from a value of its block (`output_suffix`)
         if flagged is None:
@@ -262,6 +269,35 @@ def _listened(model) -> set[str]:
         if proc.binary.lower() == "pshare" and proc.block is not None:
             found |= input_routes(proc.block)
     return found
+
+
+def _behavior_names(model, kinds: list[str]) -> list[tuple[str, ...]]:
+    """The ``name`` of each behavior of ``kinds`` (kinds whose posts are not known), as
+    its ``_``-separated words: a behavior whose posts are not known may post names made
+    of its own (``CONFINES_stayIN``, waited for beside a ``BHV_SecurityFence`` named
+    ``stayIN``)."""
+    if not kinds:
+        return []
+    found: list[tuple[str, ...]] = []
+    for _path, bf in model.behavior_files:
+        for bhv in bf.behaviors:
+            named = bhv.name
+            if bhv.kind.strip() not in kinds or named is None:
+                continue
+            words = tuple(w for w in named.value.strip().split("_") if w)
+            if len("".join(words)) >= 3 and words not in found:
+                found.append(words)
+    return found
+
+
+def _names_one(name: str, names: list[tuple[str, ...]]) -> bool:
+    """Whether ``name``'s ``_``-separated words hold one of ``names``' in a row."""
+    parts = name.split("_")
+    return any(
+        tuple(parts[i : i + len(words)]) == words
+        for words in names
+        for i in range(len(parts) - len(words) + 1)
+    )
 
 
 def _named_after(name: str, prefixes: set[str]) -> bool:
