@@ -673,7 +673,15 @@ def _block_variables(block: Block, app: str) -> Iterator[VarRef]:
 
 
 def moos_variables(mf: MoosFile) -> Iterator[VarRef]:
-    """Every variable a ``.moos`` file names, block by block."""
+    """Every variable a ``.moos`` file names, block by block (worked out once per parsed
+    file: the rules of its own unit and those that gather the run's names all ask)."""
+    kept = mf.expansion.models.get("moos_variables")
+    if kept is None or kept[0] is not mf:
+        kept = mf.expansion.models["moos_variables"] = (mf, tuple(_moos_variables(mf)))
+    return iter(kept[1])
+
+
+def _moos_variables(mf: MoosFile) -> Iterator[VarRef]:
     aliases = {run.name.lower(): run.binary for run in mf.runs if run.name}
     for block in mf.blocks:
         app = app_of(block.name, aliases)
