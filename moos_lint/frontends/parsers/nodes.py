@@ -241,6 +241,10 @@ class MoosFile:
     _runs: tuple[tuple[int, ...], list[RunLine]] | None = field(
         default=None, init=False, repr=False, compare=False
     )
+    # (sizes, line -> its index, lower-case key -> its params), for read_values
+    _values: tuple[tuple[int, ...], dict[int, int], dict[str, list[Param]]] | None = field(
+        default=None, init=False, repr=False, compare=False
+    )
 
     def blocks_named(self, name: str) -> list[Block]:
         if self._by_name is None or self._by_name[0] != len(self.blocks):
@@ -282,10 +286,16 @@ class MoosFile:
         """The ``key = value`` lines (any case, blocks included) CMOOSFileReader's
         ``GetValue`` may read: the first in the file, and each later one in an ``#ifdef``
         branch that excludes every earlier one (``LatOrigin``, ``MOOSTimeWarp``)."""
-        k = key.lower()
-        order = {id(line): i for i, line in enumerate(self.lines)}
+        sizes = (len(self.lines), len(self.globals), *(len(b.params) for b in self.blocks))
+        if self._values is None or self._values[0] != sizes:
+            index: dict[str, list[Param]] = {}
+            for p in self.all_params:
+                index.setdefault(p.lkey, []).append(p)
+            lines = {id(line): i for i, line in enumerate(self.lines)}
+            self._values = (sizes, lines, index)
+        _sizes, order, by_key = self._values
         found = sorted(
-            (p for p in self.all_params if p.lkey == k),
+            by_key.get(key.lower(), ()),
             key=lambda p: order.get(id(p.line), len(order)),
         )
         return [p for i, p in enumerate(found) if all(q.line.excludes(p.line) for q in found[:i])]
