@@ -677,11 +677,19 @@ def unhandled_mail(app: AppModel) -> Iterator[Finding]:
     suffixes = [k.text for k in keys if k.suffix and k.text]
     if not exact and not prefixes:
         return  # no dispatch on literal keys: handling we cannot read
-    # a name the app posts itself comes back as its own echo (a debugging aid): not lost
+    # a name the app posts itself comes back as its own echo (a debugging aid): not lost;
+    # so is one a name it builds may be (``ss << "VISIT_POINT_" << m_vname; Notify(ss.str()``)
     seen = {p.name.text for p in app.publications if p.name.text and not p.name.wildcard}
+    built = {
+        p.name.prefix
+        for p in app.publications
+        if p.name.text is None and p.name.prefix.endswith("_") and len(p.name.prefix) > 3
+    }
     for s in app.subscriptions:
         name = s.name.text
         if name is None or s.name.wildcard or name in seen or name in UNASKED_MAIL:
+            continue
+        if any(name.startswith(b) for b in built):
             continue
         seen.add(name)
         if name in exact or name.upper() in {e.upper() for e in exact}:

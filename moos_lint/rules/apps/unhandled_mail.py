@@ -15,7 +15,9 @@ A dynamic variable's subscription (`AddMOOSVariable(name, "X", ...)` with
 `RegisterMOOSVariables()`) counts as a registration; passing the mail to
 `UpdateMOOSVariables(NewMail)` handles it.
 Wildcard registrations, names built at run time and names the app
-publishes itself (registered to watch its own posts) are not reported, nor
+publishes itself (registered to watch its own posts), or may publish under a
+name it builds (`ss << "VISIT_POINT_" << m_vname; Notify(ss.str(), ...)`
+beside `Register("VISIT_POINT_GILDA")`), are not reported, nor
 are apps whose OnNewMail hands whole messages to code the linter does not
 follow (`handleMail(msg)` outside any key test).
 
