@@ -41,7 +41,7 @@ import os
 import re
 import threading
 from collections import OrderedDict
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -145,27 +145,26 @@ class MissionModel:
     # ------------------------------------------------------------ queries
     def published_by(self, var: str) -> list[Publisher]:
         """Who publishes ``var`` (exact names, then prefixes and suffixes of dynamic names)."""
-        found = list(self.publishers.get(var, ()))
-        if found:
-            return found
-        by_app, globs = self._dynamic()
-        hits = sorted(i for app, indexed in by_app if app.publishes_var(var) for i in indexed)
-        for i in hits:  # in the order the processes are launched
-            name = self.processes[i].name
-            found.append(Publisher(var, name, "app", process=name))
-        for name, pubs in globs:
-            if _glob_match(name, var):
-                found.extend(pubs)
-        return found
+        found = self.publishers.get(var)
+        return list(found) if found else list(self._dynamic_publishers(var))
 
     def is_published(self, var: str) -> bool:
         """Whether anything publishes ``var``: :meth:`published_by`, without listing who."""
         if self.publishers.get(var):
             return True
+        return next(self._dynamic_publishers(var), None) is not None
+
+    def _dynamic_publishers(self, var: str) -> Iterator[Publisher]:
+        """The publishers of ``var`` by the prefixes and suffixes of dynamic names: the
+        apps that may publish it, in the order the processes are launched, then the
+        wildcard publications that match it."""
         by_app, globs = self._dynamic()
-        if any(app.publishes_var(var) for app, _indexed in by_app):
-            return True
-        return any(_glob_match(name, var) for name, _pubs in globs)
+        for i in sorted(i for app, indexed in by_app if app.publishes_var(var) for i in indexed):
+            name = self.processes[i].name
+            yield Publisher(var, name, "app", process=name)
+        for name, pubs in globs:
+            if _glob_match(name, var):
+                yield from pubs
 
     def built_from_config(self, var: str) -> Process | None:
         """The launched process that most likely posts ``var`` under a name built from a
