@@ -1607,7 +1607,9 @@ class Evaluator:
         hint = name_hint(key)
         anywhere: AbstractValue | None = hint if hint.known else None
         if cls:
-            aliases = [field, *fields.union_aliases(pf.tree.root_node, cls, field)]
+            aliases = [field]
+            if b"union" in pf.data:  # (most files declare none: no walk of their tree)
+                aliases.extend(fields.union_aliases(pf.tree.root_node, cls, field))
             whose = f"what {cls} returns" if cls.endswith("()") else cls
             anywhere = AbstractValue(
                 pending=f".{cls}.{'|'.join(aliases)}",
