@@ -28,8 +28,9 @@ used and the model says so (:attr:`MissionModel.unresolved_behaviors`).
 
 **Variables from outside the mission.** A mission that receives variables
 from another community (pShare with an ``input`` route, uFldNodeBroker,
-uFldShoreBroker, pMOOSBridge) may get any variable that the other missions
-of its folder publish; the model adds those. It also counts ``VAR=value``
+uFldShoreBroker, pMOOSBridge), or that launches no MOOSDB (its processes join
+the database another mission file launches), may get any variable that the
+other missions of its folder publish; the model adds those. It also counts ``VAR=value``
 pairs that a ``uPokeDB`` command in a shell script beside the mission posts.
 """
 
@@ -137,12 +138,23 @@ class MissionModel:
     inbound: list[Process] = field(default_factory=list)
     #: the other missions of the folder, whose publications count as inbound
     sibling_missions: list[str] = field(default_factory=list)
+    #: the mission launches processes but no MOOSDB: they join the database another
+    #: mission file of their community launches (``Community = evader``, a second file
+    #: that starts a helm beside the vehicle's own), so what that file's processes post
+    #: is theirs
+    joins: bool = False
     #: apps whose publications are not all known statically (name -> binary)
     dynamic_apps: list[Process] = field(default_factory=list)
     #: id(VarRef) -> the process whose configuration (or behavior file) holds it
     ref_process: dict[int, str] = field(default_factory=dict)
 
     # ------------------------------------------------------------ queries
+    @property
+    def receives(self) -> bool:
+        """Whether variables reach the mission from processes other mission files
+        launch: through its inbound processes, or by joining another file's database."""
+        return bool(self.inbound) or self.joins
+
     def published_by(self, var: str) -> list[Publisher]:
         """Who publishes ``var`` (exact names, then prefixes and suffixes of dynamic names)."""
         found = self.publishers.get(var)
@@ -488,6 +500,7 @@ class _Builder:
             publishers=dict(core.publishers),
             unknown_apps=core.unknown_apps,
             inbound=core.inbound,
+            joins=core.joins,
             dynamic_apps=core.dynamic_apps,
             ref_process=core.ref_process,
         )
@@ -498,7 +511,7 @@ class _Builder:
             pokes[folder] = _pokes(folder)
         for var, script in pokes[folder].items():
             self.add(var, f"uPokeDB ({script})", "poke")
-        if m.inbound:
+        if m.receives:
             self._siblings(folder)
         return m
 
@@ -533,6 +546,9 @@ class _Builder:
                 m.dynamic_apps.append(proc)
             if low in INBOUND_APPS:
                 m.inbound.append(proc)
+        m.joins = bool(m.processes) and not any(
+            has_macro(run.binary) or run.program.strip().lower() == "moosdb" for run in m.moos.runs
+        )
         for proc in m.processes:
             self._process(proc)
         for proc in m.processes:

@@ -61,7 +61,7 @@ def check(ctx):
     model = mission_model(ctx)
     if model.unknown_apps or model.unresolved_behaviors:
         return  # a process or behavior the model cannot see may post any value
-    if model.inbound and not model.sibling_missions:
+    if model.receives and not model.sibling_missions:
         return  # values may come from a community the linter cannot see
     posted = posted_values(model)
     seen: set[tuple[str, int, int]] = set()

@@ -32,13 +32,15 @@ variable that a logic condition waits for: behavior `condition` and
   note beside it (`README`, `*.md`, `*.txt`: the steps a person runs by hand,
   `$ uPokeDB WPT_REQUEST=true`);
 - when the mission receives variables from another community (pShare,
-  uFldNodeBroker, uFldShoreBroker, pMOOSBridge), anything the other missions
-  in its folder publish (nsplug's outputs, `targ_*.moos`, count only for a
-  `targ_` mission: in a repository that keeps only those, they are the other
-  communities), and what any mission of the project sends with pShare on a
-  route the mission's pShare listens on (`output = src_name=START,
-  route=multicast_8` in `missions/launcher.moos`, `input = route=multicast_8`
-  in the buoys' missions elsewhere).
+  uFldNodeBroker, uFldShoreBroker, pMOOSBridge), or launches no MOOSDB (a
+  second file of a community, whose processes join the database another file
+  launches), anything the other missions in its folder publish (nsplug's
+  outputs, `targ_*.moos`, count only for a `targ_` mission: in a repository
+  that keeps only those, they are the other communities), and what any
+  mission of the project sends with pShare on a route the mission's pShare
+  listens on (`output = src_name=START, route=multicast_8` in
+  `missions/launcher.moos`, `input = route=multicast_8` in the buoys' missions
+  elsewhere).
 
 - a behavior of the project's own (a kind the catalogue does not describe,
   whose `BHV_X.cpp` is under the project root) that posts it by name
@@ -162,7 +164,7 @@ def _unknown_kinds(model) -> list[str]:
 )
 def check(ctx):
     model = mission_model(ctx)
-    if model.inbound and not model.sibling_missions:
+    if model.receives and not model.sibling_missions:
         return  # variables may come from a community the linter cannot see
     # what the project's own C++ of the behaviors the catalogue does not describe posts
     # by name; a kind whose C++ is not found, or that posts under a name held elsewhere,
