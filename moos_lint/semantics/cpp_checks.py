@@ -651,8 +651,8 @@ def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[F
     items += [(s, "subscribed to") for s in app.subscriptions]
     for item, verb in items:
         name = item.name.text
-        if name is None or not name:
-            continue
+        if name is None or not name or item.name.config_key is not None:
+            continue  # (a member the configuration sets: its literal is only a default)
         check = name.replace("*", "").replace("?", "")
         if not check or UPPER_SNAKE.match(check) or re.fullmatch(r"[A-Z0-9_]+", check):
             continue

@@ -877,13 +877,19 @@ class Extractor:
         """The configuration key that sets the member a name is built from."""
         return self.tables.config_keys.get(self._config_member(n))
 
-    def _config_member(self, n: Any) -> str:
-        """The member a name is built from (``m_prefix`` of ``m_prefix + "_PITCH"``)."""
+    def _config_member(self, n: Any, depth: int = 0) -> str:
+        """The member a name is built from (``m_prefix`` of ``m_prefix + "_PITCH"``, and
+        of a local set to it: ``string var = m_prefix + "_PITCH"; Notify(var, ...)``)."""
         while n is not None and n.type == "binary_expression":
             n = strip_parens(n.child_by_field_name("left"))
         if n is None or n.type not in ("identifier", "field_expression"):
             return ""
-        return target_name(n)
+        key = target_name(n)
+        if n.type == "identifier" and depth < 4:
+            local = self._local_before(n, key)
+            if local is not None and local.op == "=" and local.rhs is not None:
+                return self._config_member(strip_parens(local.rhs), depth + 1)
+        return key
 
     def _resolve(self, n: Any, depth: int) -> tuple[str | None, str]:
         n = strip_parens(n)

@@ -72,8 +72,10 @@ In C++, it checks the names an app publishes (`Notify`) and subscribes to
 (`Register`) where they are known statically: literals, `"LIT" + suffix`
 concatenations of known parts, string constants and members assigned one
 literal, and `#define` string macros. Names built at run time are never
-reported. Each name is reported once per app, at its first place, with the
-number of other places that use it.
+reported, nor names built from a member the configuration sets
+(`m_sVehicleName = "UnNamed"` before `GetConfigurationParam("VehicleName",
+m_sVehicleName)`: the literal is only a default). Each name is reported once
+per app, at its first place, with the number of other places that use it.
 
 A name that a mission gives through a configuration key of one of the
 repository's apps (`servo_var = servo_3` where the C++ publishes
