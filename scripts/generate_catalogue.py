@@ -528,6 +528,7 @@ for _app, _usage in (
     ("uMayFinish", "uMayFinish/MayFinish_Info.cpp:38"),
     ("uTermCommand", "uTermCommand/TermCommand_Info.cpp:51"),
     ("uHelmScope", "uHelmScope/HelmScope_Info.cpp:52"),
+    ("uCommand", "uCommand/UCMD_Info.cpp:49"),
 ):
     _fact(_app, "launched_manually", f"started by hand: `{_app} file.moos` ({_SRC}{_usage})")
 # Observers: they register for whatever they are told to show or log, so what they

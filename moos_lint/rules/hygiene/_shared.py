@@ -9,6 +9,9 @@
 - :func:`near_name`: the one name of a list a process or block name was probably
   meant as (a typo or two, or a word or number added), for the hint that ties an
   unread block (H001) to a launched process without one (H002).
+- :func:`extends`: a program name that is another with a word or number added
+  (``iRemoteMod`` of ``iRemote``): a renamed copy whose source moos-lint cannot see,
+  which most often still connects under the name it was copied from.
 """
 
 from __future__ import annotations
@@ -113,3 +116,20 @@ def near_name(name: str, others) -> str | None:
         if (added or typos(lo, low) <= 2) and other not in found:
             found.append(other)
     return found[0] if len(found) == 1 else None
+
+
+def extends(longer: str, shorter: str) -> bool:
+    """Whether ``longer`` is ``shorter`` with a word or a number added (lower case:
+    ``iremotemod`` or ``ipydyna2`` of ``iremote``, ``ipydyna``; not ``uxms_nav``, an
+    alias of ``uxms``): a copy of an app or a script kept under a new name most often
+    connects under the old one, and moos-lint cannot see which, its source not being
+    linted."""
+    return (
+        len(longer) > len(shorter) and longer.startswith(shorter) and longer[len(shorter)].isalnum()
+    )
+
+
+def extends_one_of(name: str, names: frozenset[str]) -> bool:
+    """Whether ``name`` :func:`extends` one of ``names`` (all lower case), looked up by
+    the starts of ``name``: time in its length alone, however many names."""
+    return any(name[:k] in names and name[k].isalnum() for k in range(1, len(name)))

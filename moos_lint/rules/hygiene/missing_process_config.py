@@ -69,14 +69,25 @@ MOOS-IvP caveats, deliberately not reported:
   block, and brace-on-header (R003) reports it;
 - a script started by a Run line (`Run = ./iSonar.py`, also `.sh`, `.pl`,
   `.rb`, `.js`, `.lua`, `.jar`): it names its MOOS client and reads its
-  configuration its own way, if at all.
+  configuration its own way, if at all;
+- a renamed copy whose source moos-lint cannot see: a program neither in the
+  catalogue nor in the linted C++ whose name is that of a block no Run line
+  starts, a word or number longer (`Run = iRemoteMod` beside `ProcessConfig =
+  iRemote`), most often still connects under the name it was copied from, and
+  reads that block (unlaunched-process-config takes the block as its, too).
 A Run line and a block in mutually exclusive `#ifdef` branches do not count as
 a match: in the branch that launches the process, the block is missing.
 """
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
+from moos_lint.rules.hygiene._shared import (
+    exclusive,
+    extends_one_of,
+    names_match,
+    near_name,
+    where,
+)
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.semantics.catalogue import catalogue_for
 
@@ -108,6 +119,7 @@ def check(ctx):
             else:
                 by_name.setdefault(b.name.lower(), []).append(b)
     unread: dict | None = None  # the blocks no Run line names, by name
+    unread_names: frozenset[str] = frozenset()  # (their names, lower case)
     for run in moos.runs:
         name = run.name
         if not name or has_macro(name) or has_macro(run.binary):
@@ -138,15 +150,19 @@ def check(ctx):
                 f"connects as `{reads[0]}` (its main passes that name to Run) and has no "
                 f"`ProcessConfig = {reads[0]}` block"
             )
-        if cat.program_name(program) is None and cat.app(program) is None:
+        unknown = cat.program_name(program) is None and cat.app(program) is None
+        if unread is None:
+            unread = _unread_blocks(moos, cat)
+            unread_names = frozenset(b.lower() for b in unread)
+        if unknown and extends_one_of(reads[0].lower(), unread_names):
+            continue  # a renamed copy (iRemoteMod) most often reads the block of its original
+        if unknown:
             then = (
                 f": `{program}` is no MOOS-IvP or core MOOS program and no app of the linted "
                 "C++ (is it installed?); if it runs, it runs on its defaults"
             )
         else:
             then = ": it runs on its defaults"
-        if unread is None:
-            unread = _unread_blocks(moos, cat)
         near = near_name(reads[0], unread)
         if near is not None:
             then += (

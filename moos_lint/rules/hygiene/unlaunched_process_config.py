@@ -49,11 +49,13 @@ suppress the finding on the header line.
   hand with the mission file (`uXMS targ_shoreside.moos`), instead of what the
   app catalogue says; their block is read although no Run line starts them.
   By default the catalogue decides: uXMS, uMAC, uMACView, uPokeDB, uQueryDB,
-  uMayFinish, uTermCommand and uHelmScope (each documents
+  uMayFinish, uTermCommand, uHelmScope and uCommand (each documents
   `Usage: APP file.moos`), the uMS scope, core MOOS's keyboard remote control
   iRemote (`iRemoteLite mission.moos` in a terminal), and the apps a user catalogue
   declares `launched_manually = true`. A block whose name *starts with* one of
-  these names (`uTermCommandFoo`, `uXMS_nav`) is never reported.
+  these names (`uTermCommandFoo`, `uXMS_nav`) is never reported, even when a
+  script beside the mission starts the tool with another file (`uCommand
+  targ_commander_$VTEAM.moos`): its user may start it by hand with this one.
 - `commented-runs` (boolean, default false): also report a block whose Run
   line is commented out in the ANTLER block (`//Run = uTimerScript ...`; also
   `#Run = ...`, `/Run = ...` and `/* Run = ... */`, which MOOS does not take
@@ -137,7 +139,7 @@ from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
-from moos_lint.rules.hygiene._shared import exclusive, names_match, near_name, where
+from moos_lint.rules.hygiene._shared import exclusive, extends, names_match, near_name, where
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for, stock
@@ -399,7 +401,7 @@ def _extends(name: str, names) -> str | None:
     kept under a new name most often connects under the old one, and moos-lint cannot
     see which, its source not being linted."""
     for other in names:
-        if len(other) > len(name) and other.startswith(name) and other[len(name)].isalnum():
+        if extends(other, name):
             return names[other]
     return None
 
