@@ -745,6 +745,8 @@ def unregistered_mail(
         name = k.text.upper()
         if not name or name in known or name.endswith(COMMAND_KEY_SUFFIX) or k.empty_branch:
             continue
+        if k.negated:
+            continue  # ``key != "X"``: the branch runs on every other name
         if (k.span.path, k.either_at) in runs_on_other or (renamed and not k.held_in):
             continue
         if any(fnmatch.fnmatchcase(name, p) for p in patterns):

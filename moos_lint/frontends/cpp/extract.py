@@ -1569,10 +1569,19 @@ class Extractor:
         lit = string_value(right)
         if lit is None:
             return
-        self._compared(cmp, left, lit, right, prefix=False)
+        op = cmp.child_by_field_name("operator")
+        negated = op is not None and op.type == "!="
+        self._compared(cmp, left, lit, right, prefix=False, negated=negated)
 
     def _compared(
-        self, node: Any, subject: Any, lit: str, lit_node: Any, prefix: bool, suffix: bool = False
+        self,
+        node: Any,
+        subject: Any,
+        lit: str,
+        lit_node: Any,
+        prefix: bool,
+        suffix: bool = False,
+        negated: bool = False,
     ) -> None:
         fname = short(self._fn_of(node))
         subject_text = text(subject)
@@ -1587,7 +1596,7 @@ class Extractor:
                 )
         elif mail_fn or re.search(r"\bkey\b|GetKey|GetName", subject_text):
             direct = not (prefix or suffix) and self._message_key(node, subject)
-            key = MailKey(lit, span, prefix, suffix, direct)
+            key = MailKey(lit, span, prefix, suffix, direct, negated=negated)
             self.out.mail_keys.append(_branch(key, node, self._reads_in))
 
     def _message_key(self, at: Any, subject: Any) -> bool:

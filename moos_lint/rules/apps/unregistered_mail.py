@@ -21,7 +21,9 @@ Left alone as well: a handler whose registration is commented out or under
 `#if 0` (taken out on purpose); a test that is one alternative of an `||` whose
 other name is registered (`key == "USM_FORCE_X" || key == "CURRENT_X"`: the
 branch runs on the new name); a branch that does nothing (`{}`: the mail is
-ignored); the app templates' placeholders (`if(key == "FOO")`, `FOOBAR`). A key
+ignored); a `!=` test (the template's catch-all `else if(key != "APPCAST_REQ")`,
+whose branch runs on every other name); the app templates' placeholders
+(`if(key == "FOO")`, `FOOBAR`). A key
 that is only a `key=value` pair parsed from a message's text is not a message
 name. A wildcard registration (`Register("POWER_*", "*", 0)`) covers the names
 it matches. When a registered name is a near spelling of the handled one (`NAX_X` for
