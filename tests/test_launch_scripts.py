@@ -105,10 +105,12 @@ def test_vehicle_names_a_script_sets(tmp_path):
         "VNAME=$1\n"  # a name given at run time: none known
         'VNAME="${ARGI#--vname=}"\n'
         'VNAME3="two words"\n'
+        'VNAMES="abe:ben"  # a shoreside\'s list of its vehicles\n'
+        "VNAMES=$VNAME1:$VNAME2\n"  # names given elsewhere
         "nsplug meta_vehicle.moos targ_$VNAME1.moos VNAME=$VNAME1\n"
     )
     (tmp_path / "notes.txt").write_text('VNAME="not_a_script"\n')
-    assert vehicle_names(str(tmp_path)) == {"henry", "gilda", "shoreside"}
+    assert vehicle_names(str(tmp_path)) == {"henry", "gilda", "shoreside", "abe", "ben"}
 
 
 def test_programs_a_cmake_harness_starts_with_the_mission(tmp_path):

@@ -238,23 +238,29 @@ _CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 
 
 #: a launch script's assignment of a vehicle's name, a word written out: ``VNAME1="henry"``,
-#: ``export VNAME=abe`` (``VNAME=$1`` and ``VNAME="${ARGI#--vname=}"`` name none)
+#: ``export VNAME=abe``, or of a list of them, ``:`` between (a shoreside's
+#: ``VNAMES="abe:ben"``); ``VNAME=$1`` and ``VNAME="${ARGI#--vname=}"`` name none
 _VEHICLE_NAME_SET = re.compile(
-    r"^[ \t]*(?:export[ \t]+)?\w*VNAME\w*=([\"']?)([A-Za-z][\w-]*)\1[ \t]*(?:[;&#]|$)", re.M
+    r"^[ \t]*(?:export[ \t]+)?\w*VNAME\w*=([\"']?)([A-Za-z][\w-]*(?::[A-Za-z][\w-]*)*)\1"
+    r"[ \t]*(?:[;&#]|$)",
+    re.M,
 )
 
 
 def vehicle_names(folder: str) -> frozenset[str]:
     """The vehicle names the folder's shell scripts give their ``VNAME`` variables, as
-    written (``VNAME1="henry"``): what nsplug puts in ``$(VNAME)``. Read as text, never
-    run."""
+    written (``VNAME1="henry"``, each of ``VNAMES="abe:ben"``): what nsplug puts in
+    ``$(VNAME)``. Read as text, never run."""
     return _vehicle_names(shell_scripts(folder))
 
 
 @functools.lru_cache(maxsize=256)
 def _vehicle_names(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     return frozenset(
-        m.group(2) for _path, text in scripts for m in _VEHICLE_NAME_SET.finditer(text)
+        name
+        for _path, text in scripts
+        for m in _VEHICLE_NAME_SET.finditer(text)
+        for name in m.group(2).split(":")
     )
 
 

@@ -43,8 +43,9 @@ builds for one vehicle. Nor is an upper-case name joined to the name of a
 vehicle of the mission's folder, as that vehicle is named: its community
 (`Community = alpha` in `alpha.moos` beside the shoreside's `alpha_WPT_UPDATE`)
 or the `VNAME` a launch script of the folder sets (`VNAME1="henry"` for
-`RETURN_henry`). Such a name is one vehicle's copy of a variable, and the other
-end writes it the same way; unless the mission publishes it in upper case
+`RETURN_henry`, or a shoreside's list, `VNAMES="abe:ben"` for `ARRIVED_ben`).
+Such a name is one vehicle's copy of a variable, and the other end writes it
+the same way; unless the mission publishes it in upper case
 (`ALPHA_REPORT`), or its uFldShoreBroker bridges it in upper case (`qbridge =
 DEPLOY` bridges `DEPLOY_$V`, and the broker puts the community upper-cased in
 place of `$V`, ShoreBroker.cpp:546, 644-646: `DEPLOY_abe` is never bridged),
