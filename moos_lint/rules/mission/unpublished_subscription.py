@@ -23,7 +23,7 @@ variable that a logic condition waits for: behavior `condition` and
 - the behavior files: flags (`endflag`, `runflag`, ...), `initialize`,
   `set MODE` variables, the variables behaviors post, under names of their
   source (`AVD_STATUS`), names their parameters make (BHV_Timer's
-  `var_status_idle` with its `status_suffix`: `TIMER_IDLE_SECONDS_BASE`) and
+  `var_status_idle` with `status_suffix = BASE`: `TIMER_IDLE_SECONDS_BASE`) and
   prefixes followed by a contact's name (BHV_AvoidCollision's `RANGE_AVD_`);
 - a flag given in an update string of the mission or of a mission beside it
   (`button_two = STOP # LEG_UPDATE = midflag=FULL_STOPPING=true`: the behavior
