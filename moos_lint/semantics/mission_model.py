@@ -30,8 +30,9 @@ used and the model says so (:attr:`MissionModel.unresolved_behaviors`).
 from another community (pShare with an ``input`` route, uFldNodeBroker,
 uFldShoreBroker, pMOOSBridge), or that launches no MOOSDB (its processes join
 the database another mission file launches), may get any variable that the
-other missions of its folder publish; the model adds those. It also counts ``VAR=value``
-pairs that a ``uPokeDB`` command in a shell script beside the mission posts.
+other missions of its folder publish; the model adds those. It also counts
+``VAR=value`` pairs that a ``uPokeDB`` command in a shell script beside the
+mission posts.
 """
 
 from __future__ import annotations

@@ -119,7 +119,7 @@ class MailKey:
     #: the branch the test guards does nothing (``else if(key == "X") {}``: mail ignored)
     empty_branch: bool = False
     #: tested with ``!=``: the branch runs on every other name (the template's catch-all
-    #: ``else if(key != "APPCAST_REQ") reportRunWarning(...)``), and the name is let by
+    #: ``else if(key != "APPCAST_REQ") reportRunWarning(...)``); the name itself passes
     negated: bool = False
     #: the name's expression when it is not a literal (``m_moosvar_saturation``, a ``#define``)
     held_in: str = ""

@@ -132,4 +132,4 @@ def extends(longer: str, shorter: str) -> bool:
 def extends_one_of(name: str, names: frozenset[str]) -> bool:
     """Whether ``name`` :func:`extends` one of ``names`` (all lower case), looked up by
     the starts of ``name``: time in its length alone, however many names."""
-    return any(name[:k] in names and name[k].isalnum() for k in range(1, len(name)))
+    return any(name[:k] in names and extends(name, name[:k]) for k in range(1, len(name)))
