@@ -717,6 +717,9 @@ def unregistered_mail(
     (the branch runs on it), and a branch that does nothing. Beside a registration the
     configuration may rename, only names the app itself holds in a member or constant are
     judged. ``near`` names the registered name a handled one is a misspelling of, if any.
+    A ``!=`` test (the template's catch-all) is reported only when its name is a
+    misspelling of one the app receives and no ``==`` test takes: that name then runs
+    the branch.
     """
     if not app.is_app or not any(f.has_on_new_mail for f in app.files):
         return
@@ -731,6 +734,9 @@ def unregistered_mail(
     renamed = any(s.active and s.name.config_key for s in subs)
     patterns = [s.name.text.upper() for s in subs if s.name.text and s.name.wildcard]
     registered = sorted({s.name.text for s in subs if s.name.text and s.active})
+    handled = {k.text for k in app.mail_keys if k.direct and not k.negated}
+    # what a misspelt ``!=`` meant to pass over: mail that arrives and no ``==`` takes first
+    passed_over = (set(registered) | {n for n in UNASKED_MAIL if n.isupper()}) - handled
     known = {s.name.text.upper() for s in subs if s.name.text}  # inactive ones: on purpose
     known |= {n.upper() for f in app.files for n in f.commented_registrations}
     known |= {n.upper() for n in UNASKED_MAIL | TEMPLATE_MAIL_KEYS}
@@ -745,12 +751,21 @@ def unregistered_mail(
         name = k.text.upper()
         if not name or name in known or name.endswith(COMMAND_KEY_SUFFIX) or k.empty_branch:
             continue
-        if k.negated:
-            continue  # ``key != "X"``: the branch runs on every other name
         if (k.span.path, k.either_at) in runs_on_other or (renamed and not k.held_in):
             continue
         if any(fnmatch.fnmatchcase(name, p) for p in patterns):
             continue  # ``Register("POWER_*", "*", 0)``
+        if k.negated:  # ``key != "X"``: the branch runs on every other name
+            meant = near(k.text, sorted(passed_over)) if near is not None else None
+            if meant:  # ``key != "APPCASE_REQ"``: the name it meant to pass over runs it
+                known.add(name)
+                yield (
+                    k.span,
+                    f"{_app_label(app)} passes over mail `{k.text}` (`!=`), which it never "
+                    f"registers for: `{meant}`, a near spelling it does receive, is not "
+                    f"passed over, so this branch runs on it",
+                )
+            continue
         known.add(name)
         held = f" (held in `{k.held_in}`)" if k.held_in and k.held_in != k.text else ""
         meant = near(k.text, registered) if near is not None else None
