@@ -13,10 +13,14 @@ MOOS reads on past the end of the intended block: the next
 `ProcessConfig = Y` line becomes a parameter of this block, and the next
 block's parameters are read by this app. The next app may never find its own
 block. MOOS prints at most an easily missed `missing "}"` message. The last
-block of a file, left open, is lost whole: MOOS's reader reaches the end of
-the file still looking for the `}` and answers that there is no block, so
-the app runs on its defaults (pLogger logs nothing it was told to; an
-AppCasting app warns `No mission config block found`).
+block of a file, left open, is answered as missing: MOOS's reader reaches the
+end of the file still looking for the `}` and says there is no block, though
+it has listed the block's lines. What the app then runs with depends on how it
+reads them: `AppTick`, `CommsTick` and every parameter asked for by name
+(`GetConfigurationParam`) fall back to their defaults; an app that checks the
+answer loses the whole block (pLogger logs nothing it was told to); an app that
+reads the list anyway keeps the lines and warns `No config block found`
+(pMarineViewer and the AppCasting template).
 
 ## Example
 ```moos
@@ -48,8 +52,11 @@ def check(ctx):
         what = f"block `{block.name}`" if block.name else "block"
         if _runs_to_the_end(ctx.moos, block, line):
             effect = (
-                "MOOS reads to the end of the file looking for it, and then takes the "
-                "block for missing: the app runs without its configuration"
+                "MOOS reads to the end of the file looking for it and answers that the "
+                "block is missing: AppTick, CommsTick and parameters asked for by name "
+                "fall back to their defaults, an app that checks the answer (pLogger) "
+                "loses the block, and one that reads its lines anyway warns "
+                "`No config block found`"
             )
         else:
             effect = "MOOS reads the following lines into it"
