@@ -101,7 +101,10 @@ MOOS-IvP caveats, deliberately not reported:
   keys of the libraries it links (`flip:N` for pEchoVar);
 - a key one of two apps of one name in the linted repository reads (a course
   repository holding two students' `pPointAssign`): which copy a mission runs
-  depends on what its machine built.
+  depends on what its machine built;
+- the block of an app of the linted repository whose C++ holds an unresolved
+  merge conflict (`<<<<<<< HEAD`): which side's keys it reads is not known,
+  and the file does not compile as committed.
 """
 
 import difflib

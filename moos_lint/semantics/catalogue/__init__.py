@@ -565,6 +565,9 @@ def _generic_bhv_keys() -> frozenset[str]:
 
 
 _UNHANDLED = re.compile(r"reportUnhandledConfigWarning")
+#: a merge conflict left in the app's C++ (``<<<<<<< HEAD``): which side's keys the app
+#: reads is not known, and the file does not compile as it is
+_CONFLICT = re.compile(r"^<{7}(?:[ \t]|$)", re.M)
 #: an AppCasting app whose start-up declares its block optional (``OnStartUpDirectives(
 #: "must_have_moosblock=false")``); any other app needs its block
 OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
@@ -660,9 +663,9 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     """What the app's own C++ (named ``name``) says it reads, publishes and subscribes to.
 
     It is strict (other keys are reported) only when the app reports
-    unhandled lines and hands no key to code elsewhere. An app that the stock
-    catalogue also knows (a fork of a MOOS-IvP app, or MOOS-IvP itself) keeps
-    what the stock entry knows too: the keys of the libraries it links, the
+    unhandled lines, hands no key to code elsewhere and holds no merge conflict.
+    An app that the stock catalogue also knows (a fork of a MOOS-IvP app, or
+    MOOS-IvP itself) keeps what the stock entry knows too: the keys of the libraries it links, the
     variables it names at run time (``prefix + "_SPEED"``) and the hand
     corrections, none of which its own files show.
     """
@@ -675,8 +678,11 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         params={c.text for c in app.config_params if not c.prefix} | _base_keys(),
         param_prefixes={c.text for c in app.config_params if c.prefix},
         # the list is the whole parser: the app reports other keys, or reads none of its
-        # own (the template's loop, left as generated, silently drops every line)
-        strict=not DELEGATE.search(text) and (bool(_UNHANDLED.search(text)) or _template_only(app)),
+        # own (the template's loop, left as generated, silently drops every line); not
+        # while a merge conflict leaves two versions of it
+        strict=not DELEGATE.search(text)
+        and not _CONFLICT.search(text)
+        and (bool(_UNHANDLED.search(text)) or _template_only(app)),
         publishes=pubs,
         publish_prefixes=prefixes,
         publishes_dynamic=dynamic,
