@@ -12,6 +12,8 @@
 - :func:`extends`: a program name that is another with a word or number added
   (``iRemoteMod`` of ``iRemote``): a renamed copy whose source moos-lint cannot see,
   which most often still connects under the name it was copied from.
+- :func:`app_example`: a file that is one app's example configuration, whose ANTLER
+  block is a list the app reads (a watchdog's processes), not a launch.
 """
 
 from __future__ import annotations
@@ -133,3 +135,20 @@ def extends_one_of(name: str, names: frozenset[str]) -> bool:
     """Whether ``name`` :func:`extends` one of ``names`` (all lower case), looked up by
     the starts of ``name``: time in its length alone, however many names."""
     return any(name[:k] in names and extends(name, name[:k]) for k in range(1, len(name)))
+
+
+def app_example(ctx) -> bool:
+    """Whether the mission is an app's example configuration, not a mission to launch.
+
+    A file named after one of its blocks (``src/pCoroner/pCoroner.moos``), with no
+    global setting (no ``ServerPort``, no ``Community``: a fragment), that no other
+    file includes, and whose ANTLER block does not launch that app: the block lists
+    what the app reads (a watchdog's processes to watch), and the app is started
+    with the file (``pCoroner file.moos``)."""
+    moos = ctx.moos
+    if moos.globals or ctx.path in ctx.run.included_elsewhere:
+        return False
+    stem = os.path.splitext(os.path.basename(ctx.path))[0].lower()
+    if not any(b.header is not None and b.lname == stem for b in moos.blocks):
+        return False
+    return not any(stem in (run.program.lower(), (run.name or "").lower()) for run in moos.runs)

@@ -74,7 +74,12 @@ MOOS-IvP caveats, deliberately not reported:
   catalogue nor in the linted C++ whose name is that of a block no Run line
   starts, a word or number longer (`Run = iRemoteMod` beside `ProcessConfig =
   iRemote`), most often still connects under the name it was copied from, and
-  reads that block (unlaunched-process-config takes the block as its, too).
+  reads that block (unlaunched-process-config takes the block as its, too);
+- an app's example configuration (`src/pCoroner/pCoroner.moos`: a file named
+  after one of its blocks, with no `ServerPort` or `Community`, that no other
+  file includes) whose ANTLER block does not launch that app: the block is a
+  list the app itself reads (a watchdog's processes to watch), and the app is
+  started with the file (`pCoroner pCoroner.moos`).
 A Run line and a block in mutually exclusive `#ifdef` branches do not count as
 a match: in the branch that launches the process, the block is missing.
 """
@@ -82,6 +87,7 @@ a match: in the branch that launches the process, the block is missing.
 from moos_lint.files.diagnostics import Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import (
+    app_example,
     exclusive,
     extends_one_of,
     names_match,
@@ -101,8 +107,8 @@ from moos_lint.semantics.catalogue import catalogue_for
 )
 def check(ctx):
     moos = ctx.moos
-    if ctx.expansion.incomplete:
-        return
+    if ctx.expansion.incomplete or app_example(ctx):
+        return  # (an app's example: its ANTLER block is a list the app reads)
     given = ctx.options.get("needs-no-config")
     if isinstance(given, str):
         given = [given]

@@ -69,6 +69,11 @@ suppress the finding on the header line.
 
 MOOS-IvP caveats, deliberately not reported:
 - the ANTLER block itself;
+- an app's example configuration (`src/pCoroner/pCoroner.moos`: a file named
+  after one of its blocks, with no `ServerPort` or `Community`, that no other
+  file includes) whose ANTLER block does not launch that app: the app is
+  started with the file (`pCoroner pCoroner.moos`), and the ANTLER block is a
+  list it reads (a watchdog's processes to watch);
 - in a mission whose ANTLER block starts the MOOSDB alone (an app's bench
   file, `iYellowSubDAQ.moos` beside its source), the block of an app that is
   not one of MOOS's or MOOS-IvP's: the project's driver is started by hand
@@ -139,7 +144,14 @@ from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
-from moos_lint.rules.hygiene._shared import exclusive, extends, names_match, near_name, where
+from moos_lint.rules.hygiene._shared import (
+    app_example,
+    exclusive,
+    extends,
+    names_match,
+    near_name,
+    where,
+)
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for, stock
@@ -163,6 +175,8 @@ def check(ctx):
         return
     if any(b.macro_lines for b in moos.antler_blocks):
         return  # a line the launch script gives (`$(RUN)`) may launch any block's process
+    if app_example(ctx):
+        return  # an app's example configuration: the app is started with the file
     # pAntler starts the MOOSDB alone: the project's own apps are started by hand
     db_alone = all(run.program.lower() == "moosdb" for run in moos.runs)
     given = ctx.options.get("manual-apps")
