@@ -10,7 +10,8 @@ followed by an upper-case letter or a digit (`iGPS`, `pHelmIvP`, `uXMS`,
 - an alias given through `ExtraProcessParams` as `--alias=NAME`;
 - in a file without `Run` lines (a plug that missions include), a
   `ProcessConfig = NAME` header, unless a mission of the run launches the
-  name (it is reported there once, on its `Run` line). In a mission, a block
+  name (it is reported there once, on its `Run` line) or the linted C++
+  builds it (an app's sample block: reported once, on the app). In a mission, a block
   that no `Run` line launches runs under no name: unlaunched-process-config
   reports it (or keeps quiet when its `Run` line is commented out on purpose).
   A header with its `{` on the same line (`ProcessConfig = MyApp {`) names no
@@ -46,11 +47,11 @@ and none clearly this app). It reports on the `Run` literal, or on the app class
 name comes from CMake or the folder. A folder that builds several programs
 (`add_executable(source_node source_node.cpp)`, `add_executable(sink_node
 sink_node.cpp)`) has each of them judged. A program the linted C++ builds is reported
-there once, not again on each Run line that launches it. Only folders with a class derived from
-CMOOSApp, AppCastingMOOSApp or CMOOSInstrument are apps. A name in capitals
-with an underscore (`add_executable(MOOSAPPFACTORY_NAME ...)`) is the
-placeholder of a template an app generator copies, not judged: the app is
-named when it is generated.
+there once, not again on each Run line that launches it nor on its sample block.
+Only folders with a class derived from CMOOSApp, AppCastingMOOSApp or
+CMOOSInstrument are apps. A name in capitals with an underscore
+(`add_executable(MOOSAPPFACTORY_NAME ...)`) is the placeholder of a template an
+app generator copies, not judged: the app is named when it is generated.
 
 ## Why is this bad?
 The MOOS Conventions (section 4.1) name every application by what it does:
@@ -181,6 +182,9 @@ def check(ctx):
             continue  # MOOS never finds the block: it names no process (brace-on-header)
         if not block.params:
             continue  # configures nothing: a sentinel that ends the block before it
+        info = cat.app(name)
+        if info is not None and info.own:
+            continue  # an app of the linted C++ (its sample block): reported where defined
         if not check_aliases and (low in aliases or low in elsewhere_aliases):
             continue
         if not conforms(name, exempt):
