@@ -43,7 +43,8 @@ builds for one vehicle. Nor is an upper-case name joined to the name of a
 vehicle of the mission's folder, as that vehicle is named: its community
 (`Community = alpha` in `alpha.moos` beside the shoreside's `alpha_WPT_UPDATE`)
 or the `VNAME` a launch script of the folder sets (`VNAME1="henry"` for
-`RETURN_henry`, or a shoreside's list, `VNAMES="abe:ben"` for `ARRIVED_ben`).
+`RETURN_henry`, or a shoreside's list, `VNAMES="abe:ben"` for `ARRIVED_ben`),
+at either end or between two upper-case words (`WAYPOINT_alpha_UPDATES`).
 Such a name is one vehicle's copy of a variable, and the other end writes it
 the same way; unless the mission publishes it in upper case
 (`ALPHA_REPORT`), or its uFldShoreBroker bridges it in upper case (`qbridge =
@@ -279,9 +280,9 @@ def _macro_ended(lines) -> frozenset[str]:
 def _named_for_vehicle(ctx, name: str, vehicles: frozenset[str]) -> bool:
     """Whether ``name`` is an upper-case name joined to the name of one of ``vehicles``
     (the vehicles of the mission's folder, :func:`_vehicles_beside`) as that vehicle is
-    named (``henry_REFUEL_START``, ``RETURN_aux``). Not when the mission publishes the
-    name in upper case, or its uFldShoreBroker bridges it so (``DEPLOY_<VNAME>``): the
-    name as written then reads nothing."""
+    named (``henry_REFUEL_START``, ``RETURN_aux``, ``WAYPOINT_alpha_UPDATES``). Not when
+    the mission publishes the name in upper case, or its uFldShoreBroker bridges it so
+    (``DEPLOY_<VNAME>``): the name as written then reads nothing."""
     for i, ch in enumerate(name):
         if ch != "_":
             continue
@@ -290,6 +291,15 @@ def _named_for_vehicle(ctx, name: str, vehicles: frozenset[str]) -> bool:
             tail in vehicles and _UPPER.fullmatch(head)
         ):
             return not (_bridged_as(ctx, name, vehicles) or _posted_in_upper_case(ctx, name))
+        # the vehicle's name between two upper-case words (`WAYPOINT_alpha_UPDATES`)
+        end = name.find("_", i + 1)
+        if (
+            end > i + 1
+            and name[i + 1 : end] in vehicles
+            and _UPPER.fullmatch(head)
+            and _UPPER.fullmatch(name[end + 1 :])
+        ):
+            return not _posted_in_upper_case(ctx, name)
     return False
 
 
