@@ -584,6 +584,13 @@ TEMPLATE_MAIL_KEYS = frozenset({"FOO", "FOOBAR"})
 #: client puts in the mail itself (``CMOOSMsg Msg(MOOS_TIMING, "_async_timing", ...)``:
 #: MOOSAsyncCommClient.cpp:289)
 UNASKED_MAIL = frozenset({"APPCAST_REQ", "_async_timing"})
+#: apps that watch other processes of their MOOSDB, by the parameter that lists them (lower
+#: case). uProcessWatch's ``watch = pHelmIvP, pLogger:LOGGER_OK`` puts each name without a
+#: ``*`` on its watch list at once, whatever is launched (ProcessWatch.cpp:174,
+#: handleConfigWatchItem :468-516), matches it exactly against the MOOSDB's ``DB_CLIENTS``
+#: (isAlive :411-426), and posts ``PROC_WATCH_ALL_OK = false`` while one is missing
+#: (:350-365, :135-138): moos-ivp a2a9b716 ivp/src/uProcessWatch
+WATCH_LISTS = {"uprocesswatch": "watch"}
 #: CMOOSApp registers ``<APP NAME>_CMD`` itself when an app enables command messages
 #: (``GetCommandKey``, ``EnableCommandMessageFiltering``: MOOSApp.cpp:1429-1460)
 COMMAND_KEY_SUFFIX = "_CMD"
