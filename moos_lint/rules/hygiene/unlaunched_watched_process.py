@@ -15,14 +15,14 @@ chain.
 ## Why is this bad?
 uProcessWatch puts every name of a `watch` list on its watch list at once,
 whatever is launched, and checks it against the MOOSDB's clients. A name no
-process connects under is missing for the whole run: uProcessWatch reports it
-`AWOL` and posts `PROC_WATCH_ALL_OK = false` from start to end, so the check
-that the vehicle's processes are all running says no, and a real crash goes
-unseen among the false alarms (ProcessWatch.cpp, `handleConfigWatchItem`,
-`isAlive`). The usual cause is a plug kept after the mission changed: the list
-still names `uSimMarine` and `pMarinePID` after the mission moved to
-`uSimMarineV22` and `pMarinePIDV22`, or `pLogger` after its Run line was
-commented out.
+process connects under is missing for the whole run (unless someone starts it
+by hand): uProcessWatch reports it `AWOL` and posts `PROC_WATCH_ALL_OK = false`
+from start to end, so the check that the vehicle's processes are all running
+says no, and a real crash goes unseen among the false alarms (ProcessWatch.cpp,
+`handleConfigWatchItem`, `isAlive`). The usual cause is a plug kept after the
+mission changed: the list still names `uSimMarine` and `pMarinePID` after the
+mission moved to `uSimMarineV22` and `pMarinePIDV22`, or `pLogger` after its
+Run line was commented out.
 
 Deliberately not reported:
 - names with a `*` (a pattern: it watches what matches, when it runs), and
@@ -140,9 +140,10 @@ def check(ctx):
                 at = p.value_start + start
                 yield ctx.report(
                     p.line.span(at, at + len(name)),
-                    f"uProcessWatch watches `{name}`, which never connects ({why}): it "
-                    "reports the process AWOL and posts `PROC_WATCH_ALL_OK = false` for the "
-                    f"whole run{hint}",
+                    f"uProcessWatch watches `{name}`, which no process of the mission "
+                    f"connects as ({why}): it reports the process AWOL and posts "
+                    "`PROC_WATCH_ALL_OK = false` as long as it is missing (the whole run, "
+                    f"unless it is started another way){hint}",
                     line=p.line,
                 )
 
