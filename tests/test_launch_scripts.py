@@ -78,6 +78,21 @@ def test_programs_a_script_or_a_patch_starts_with_the_mission(tmp_path):
     assert patch_launches(str(tmp_path)) == {"plogger", "utimerscript", "utimerscript_ping"}
 
 
+def test_a_script_without_a_suffix_and_commands_after_a_semicolon(tmp_path):
+    """``script-200`` (no suffix, no ``#!``) runs pAntler and then the helm by hand on the
+    output ``splug`` (nsplug's name before 2011) writes from the template: both start
+    with the template too. A note or a data file without a suffix is no script."""
+    (tmp_path / "script-200").write_text(
+        "pAntler K200.moos &; sleep 1; pHelmIvP K200.moos ../missions/200-loiter.bhv &\n"
+    )
+    (tmp_path / "Expand.sh").write_text("#!/bin/sh\n\nsplug META_K200.moos K200.moos\n")
+    (tmp_path / "waypoints").write_text("uSimMarine K300.moos\n")
+    assert script_launches(str(tmp_path), "K200.moos") == {"pantler", "phelmivp"}
+    # (and splug itself, which reads the template)
+    assert {"pantler", "phelmivp"} <= script_launches(str(tmp_path), "META_K200.moos")
+    assert script_launches(str(tmp_path), "K300.moos") == frozenset()
+
+
 def test_keys_a_script_gives_pantler_for_the_mission(tmp_path):
     (tmp_path / "launch_alpha.sh").write_text(
         'COMMUNITY="alpha"\npAntler $COMMUNITY.moos --MOOSTimeWarp=$TIME_WARP >& /dev/null &\n'

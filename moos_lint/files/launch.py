@@ -15,6 +15,7 @@ from __future__ import annotations
 import functools
 import os
 import re
+import stat
 
 from moos_lint.files.project import is_within, vcs_top
 from moos_lint.files.source import read_head
@@ -151,15 +152,47 @@ def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
 _REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
 #: ``nsplug IN OUT ...``: the template nsplug reads and the file it writes (options may
 #: come first)
-_NSPLUG_RUN = re.compile(r"\bnsplug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
+#: ``nsplug TEMPLATE OUTPUT`` (``splug``: its name in MOOS-IvP's releases of 2008-2010)
+_NSPLUG_RUN = re.compile(r"\bn?splug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
 _RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
 
 
 def shell_scripts(folder: str) -> tuple[tuple[str, str], ...]:
-    """``(path, text)`` of each shell script (``*.sh``) of ``folder``, by name: read as
-    text, never run, and kept while every script keeps its (mtime, size) (the language
-    server asks again at each edit of a mission of the folder)."""
-    return _texts(folder, ".sh")
+    """``(path, text)`` of each shell script of ``folder``, by name: ``*.sh``, and a file
+    without a suffix that starts with ``#!`` or runs pAntler (``script-200``: ``pAntler
+    K200.moos &; pHelmIvP K200.moos ...``). Read as text, never run, and kept while every
+    script keeps its (mtime, size) (the language server asks again at each edit of a
+    mission of the folder)."""
+    return _texts(folder, ".sh") + _plain_scripts(folder)
+
+
+#: a command line of a script without a suffix: it runs pAntler
+_RUNS_ANTLER = re.compile(r"(?:^|[;&|])[ \t]*(?:\S*/)?pAntler\b", re.M)
+
+
+def _plain_scripts(folder: str) -> tuple[tuple[str, str], ...]:
+    """The files of ``folder`` without a suffix (no ``.`` in the name, not a README) that
+    are shell scripts: they start with ``#!``, or run pAntler."""
+    try:
+        names = sorted(
+            n for n in os.listdir(folder) if "." not in n and not n.lower().startswith("readme")
+        )
+    except OSError:
+        return ()
+    stamps = []
+    for n in names:
+        path = os.path.join(folder, n)
+        try:
+            st = os.stat(path)
+        except OSError:
+            continue
+        if stat.S_ISREG(st.st_mode):
+            stamps.append((path, st.st_mtime_ns, st.st_size))
+    return tuple(
+        (path, text)
+        for path, text in _read_scripts(tuple(stamps))
+        if "\x00" not in text and (text.startswith("#!") or _RUNS_ANTLER.search(text))
+    )
 
 
 def notes(folder: str) -> tuple[tuple[str, str], ...]:
@@ -278,7 +311,7 @@ def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, 
     for path, text in scripts:
         for lineno, line in enumerate(text.splitlines(), 1):
             if (
-                "nsplug" not in line
+                "splug" not in line
                 and "cd" not in line
                 and "pushd" not in line
                 and "popd" not in line
@@ -331,7 +364,9 @@ def _patch_runs(patches: tuple[tuple[str, str], ...]) -> frozenset[str]:
 
 
 #: a shell command given a mission file: its program (first word) and its words
-_STARTS_MISSION = re.compile(r"^[ \t]*([^\s;&|#]+)([^\n;&|#]*)", re.M)
+#: a command, at the start of a line or after `;`, `&` or `|` (``pAntler a.moos &; pHelmIvP
+#: a.moos``)
+_STARTS_MISSION = re.compile(r"(?:^|(?<=[;&|]))[ \t]*([^\s;&|#]+)([^\n;&|#]*)", re.M)
 _MOOS_SUFFIX = re.compile(r"\.moos\b")
 _ARG_CHARS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.${}-/")
 _ALIAS_ARG = re.compile(r"--alias=[\"']?([A-Za-z_][\w\-]*)")
@@ -339,12 +374,19 @@ _ALIAS_ARG = re.compile(r"--alias=[\"']?([A-Za-z_][\w\-]*)")
 
 def script_launches(folder: str, mission: str) -> frozenset[str]:
     """The lower-case names of the processes the shell scripts of ``folder`` start with
-    the file ``mission`` (``uMAC targ_shoreside.moos`` for ``meta_shoreside.moos``,
+    the file ``mission`` or an nsplug output of it written by a script of the folder
+    (``uMAC targ_shoreside.moos`` for ``meta_shoreside.moos``,
     ``"$BIN" targ_shoreside.moos --alias=pTraffic``): the program's own name, and the name
     ``--alias=`` gives it. Read as text, never run."""
     name = os.path.basename(mission)
     started = (*_started(shell_scripts(folder)), *_cmake_started(cmake_scripts(folder)))
-    return frozenset(p for p, arg in started if _names_mission(arg, name))
+    # nsplug's outputs of the mission (``nsplug META_K200.moos K200.moos``)
+    outputs = {
+        os.path.basename(o) for _, _, t, o in nsplug_runs(folder) if os.path.basename(t) == name
+    }
+    return frozenset(
+        p for p, arg in started if _names_mission(arg, name) or os.path.basename(arg) in outputs
+    )
 
 
 def antler_overrides(folder: str, mission: str) -> frozenset[str]:
