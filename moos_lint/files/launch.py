@@ -15,7 +15,7 @@ from __future__ import annotations
 import functools
 import os
 import re
-import stat
+from collections.abc import Callable
 
 from moos_lint.files.project import is_within, vcs_top
 from moos_lint.files.source import read_head
@@ -173,24 +173,10 @@ _RUNS_ANTLER = re.compile(r"(?:^|[;&|])[ \t]*(?:\S*/)?pAntler\b", re.M)
 def _plain_scripts(folder: str) -> tuple[tuple[str, str], ...]:
     """The files of ``folder`` without a suffix (no ``.`` in the name, not a README) that
     are shell scripts: they start with ``#!``, or run pAntler."""
-    try:
-        names = sorted(
-            n for n in os.listdir(folder) if "." not in n and not n.lower().startswith("readme")
-        )
-    except OSError:
-        return ()
-    stamps = []
-    for n in names:
-        path = os.path.join(folder, n)
-        try:
-            st = os.stat(path)
-        except OSError:
-            continue
-        if stat.S_ISREG(st.st_mode):
-            stamps.append((path, st.st_mtime_ns, st.st_size))
+    texts = _named_texts(folder, lambda n: "." not in n and not n.lower().startswith("readme"))
     return tuple(
         (path, text)
-        for path, text in _read_scripts(tuple(stamps))
+        for path, text in texts
         if "\x00" not in text and (text.startswith("#!") or _RUNS_ANTLER.search(text))
     )
 
@@ -207,12 +193,16 @@ def _texts(
     """``(path, text)`` of each file of ``folder`` whose name ends in ``suffix`` (or, with
     ``readme``, starts with ``README`` in any case), by name, kept while every one keeps
     its (mtime, size)."""
+    return _named_texts(
+        folder, lambda n: n.endswith(suffix) or (readme and n.lower().startswith("readme"))
+    )
+
+
+def _named_texts(folder: str, keep: Callable[[str], bool]) -> tuple[tuple[str, str], ...]:
+    """``(path, text)`` of each regular file of ``folder`` whose name ``keep`` accepts, by
+    name, kept while every one keeps its (mtime, size)."""
     try:
-        names = sorted(
-            n
-            for n in os.listdir(folder)
-            if n.endswith(suffix) or (readme and n.lower().startswith("readme"))
-        )
+        names = sorted(n for n in os.listdir(folder) if keep(n))
     except OSError:
         return ()
     stamps = []

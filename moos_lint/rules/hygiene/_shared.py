@@ -1,4 +1,4 @@
-"""Helpers shared by the configuration-hygiene rules (H001-H005).
+"""Helpers shared by the configuration-hygiene rules (H001-H007).
 
 - :func:`exclusive`: two lines that never both survive nsplug, either because they
   sit in different branches of one ``#ifdef`` or because their ``#ifdef``
@@ -26,6 +26,11 @@ from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.spelling import typos
 
 _MACRO = re.compile(r"[$%]\([^()]*\)")
+
+#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */` (group 1: the program as
+#: written): not comments to MOOS, but a Run line its author meant to switch off all the
+#: same (pAntler launches only the lines whose key is `Run`)
+COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*([^\s@~]+)", re.I)
 
 
 def _ifdef_values(cond: str | None) -> tuple[str, frozenset[str]] | None:

@@ -145,6 +145,7 @@ from moos_lint.frontends.nsplug import derived
 from moos_lint.frontends.parsers.moos import strip_comment
 from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
 from moos_lint.rules.hygiene._shared import (
+    COMMENTED_RUN,
     app_example,
     exclusive,
     extends,
@@ -155,11 +156,6 @@ from moos_lint.rules.hygiene._shared import (
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
 from moos_lint.semantics.catalogue import catalogue_for, stock
-
-#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS,
-#: but a Run line its author meant to switch off all the same (pAntler launches only the
-#: lines whose key is `Run`)
-_COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*\S", re.I)
 
 
 @rule(
@@ -464,7 +460,7 @@ def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, 
                 break
             if not inside:
                 continue
-            m = _COMMENTED_RUN.match(line.text)
+            m = COMMENTED_RUN.match(line.text)
             if not m:
                 continue
             here = where(line)

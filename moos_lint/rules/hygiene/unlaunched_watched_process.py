@@ -64,20 +64,17 @@ None.
 """
 
 import os
-import re
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches
 from moos_lint.frontends.nsplug import parsed
 from moos_lint.frontends.parsers.moos import parse_moos
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import exclusive, near_name, where
+from moos_lint.rules.hygiene._shared import COMMENTED_RUN, exclusive, near_name, where
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.catalogue import WATCH_LISTS, catalogue_for
 from moos_lint.semantics.mission_model import missions_beside
 
-#: `//Run = X` and the like in an ANTLER block (see unlaunched-process-config)
-_COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*([^\s@~]+)", re.I)
 #: the MOOS infrastructure, never a client of the MOOSDB's own list
 _NOT_CLIENTS = {"moosdb", "pantler"}
 
@@ -175,7 +172,7 @@ def _commented(moos, name: str) -> str | None:
             elif line is antler.close:
                 break
             elif inside:
-                m = _COMMENTED_RUN.match(line.text)
+                m = COMMENTED_RUN.match(line.text)
                 if m and m.group(1).replace("\\", "/").rsplit("/", 1)[-1] == name:
                     return f"its Run line is commented out at {where(line)}"
     return None
