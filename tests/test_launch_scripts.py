@@ -91,6 +91,7 @@ def test_a_script_without_a_suffix_and_commands_after_a_semicolon(tmp_path):
     # (and splug itself, which reads the template)
     assert {"pantler", "phelmivp"} <= script_launches(str(tmp_path), "META_K200.moos")
     assert script_launches(str(tmp_path), "K300.moos") == frozenset()
+    assert "K200.moos" in made_by_scripts(str(tmp_path))  # made at launch, absent at rest
 
 
 def test_keys_a_script_gives_pantler_for_the_mission(tmp_path):

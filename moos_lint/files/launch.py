@@ -238,7 +238,7 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     out: set[str] = set()
     for _path, text in scripts:
         for line in text.splitlines():
-            if ">" not in line and "nsplug" not in line and "rm" not in line:
+            if ">" not in line and "splug" not in line and "rm" not in line:
                 continue  # most lines: none of the three patterns can match
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
