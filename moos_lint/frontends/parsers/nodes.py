@@ -58,6 +58,11 @@ def conflict_marker(text: str) -> bool:
     return _CONFLICT.match(text) is not None
 
 
+#: where a conflict left in a whole text opens (``<<<<<<< HEAD`` at a line's start), for
+#: a search of the text at once
+CONFLICT_OPENED = re.compile(r"^<{7}(?:[ \t]|$)", re.M)
+
+
 def has_macro(text: str) -> bool:
     """True when ``text`` still holds an unexpanded nsplug macro."""
     return "$(" in text or "%(" in text

@@ -22,11 +22,11 @@ Left alone as well: a handler whose registration is commented out or under
 other name is registered (`key == "USM_FORCE_X" || key == "CURRENT_X"`: the
 branch runs on the new name); a branch that does nothing (`{}`: the mail is
 ignored); a `!=` test (the template's catch-all `else if(key != "APPCAST_REQ")`,
-whose branch runs on every other name); the app templates' placeholders
-(`if(key == "FOO")`, `FOOBAR`). A `!=` test is reported only when its name is
-a near spelling of one the app receives (`key != "APPCASE_REQ"`): the name it
-meant to pass over then runs the branch (an "Unhandled Mail" warning on every
-`APPCAST_REQ`). A key
+whose branch runs on every other name), unless its name is a near spelling of
+one the app receives and no `==` test takes (`key != "APPCASE_REQ"`): the name
+it meant to pass over then runs the branch (an "Unhandled Mail" warning on every
+`APPCAST_REQ`), and that is reported; the app templates' placeholders
+(`if(key == "FOO")`, `FOOBAR`). A key
 that is only a `key=value` pair parsed from a message's text is not a message
 name. A wildcard registration (`Register("POWER_*", "*", 0)`) covers the names
 it matches. When a registered name is a near spelling of the handled one (`NAX_X` for

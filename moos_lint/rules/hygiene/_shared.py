@@ -14,6 +14,8 @@
   which most often still connects under the name it was copied from.
 - :func:`app_example`: a file that is one app's example configuration, whose ANTLER
   block is a list the app reads (a watchdog's processes), not a launch.
+- :func:`commented_runs`: where the commented-out Run lines of a mission's ANTLER
+  block are (`//Run = pLogger`), by the names their processes would run under.
 """
 
 from __future__ import annotations
@@ -21,16 +23,19 @@ from __future__ import annotations
 import os
 import re
 
+from moos_lint.files.launch import script_names
 from moos_lint.frontends.nsplug import Expansion, Line
-from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.frontends.parsers.moos import strip_comment
+from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
+from moos_lint.rules.kit.per_run import per_run
 from moos_lint.rules.kit.spelling import typos
 
 _MACRO = re.compile(r"[$%]\([^()]*\)")
 
-#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */` (group 1: the program as
-#: written): not comments to MOOS, but a Run line its author meant to switch off all the
-#: same (pAntler launches only the lines whose key is `Run`)
-COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*([^\s@~]+)", re.I)
+#: `//Run = X`, and `#Run = X`, `/Run = X` or `/* Run = X */`: not comments to MOOS,
+#: but a Run line its author meant to switch off all the same (pAntler launches only the
+#: lines whose key is `Run`)
+_COMMENTED_RUN = re.compile(r"^\s*(?:/+\**|#+)\s*run\s*=\s*\S", re.I)
 
 
 def _ifdef_values(cond: str | None) -> tuple[str, frozenset[str]] | None:
@@ -157,3 +162,60 @@ def app_example(ctx) -> bool:
     if not any(b.header is not None and b.lname == stem for b in moos.blocks):
         return False
     return not any(stem in (run.program.lower(), (run.name or "").lower()) for run in moos.runs)
+
+
+def commented_runs(run, moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
+    """:func:`_commented_runs` of a mission, worked out once per run (the check of the
+    mission and the facts gathered across the missions both ask for it)."""
+    memo: dict[str, tuple[dict[str, str], dict[str, str]]] = per_run(
+        run, "commented-runs", lambda units: {}
+    )
+    found = memo.get(mission)
+    if found is None:
+        found = memo[mission] = _commented_runs(moos, cat, mission)
+    return found
+
+
+def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
+    """Where a ``//Run = NAME`` line (or ``#Run = NAME``) sits in an ANTLER block, by the
+    lower-case name of every block its process would read were it launched (the first
+    such line): the line is read as a live one is, so an app whose ``main`` hard-codes its name
+    (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
+    quotes count too. Second, where each line is whose program moos-lint knows nothing
+    of, by its lower-case name."""
+    found: dict[str, str] = {}
+    unknown: dict[str, str] = {}
+    for antler in moos.antler_blocks:
+        if antler.open is None:
+            continue
+        inside = False
+        for line in moos.lines:
+            if line is antler.open:
+                inside = True
+                continue
+            if line is antler.close:
+                break
+            if not inside:
+                continue
+            m = _COMMENTED_RUN.match(line.text)
+            if not m:
+                continue
+            here = where(line)
+            eq = line.text.index("=")  # the one of `// Run =`: the key holds none
+            # a trailing comment, as on a live line (`//Run = X @ NewConsole = false //~Y`)
+            value = strip_comment(line.text[eq + 1 :]).rstrip()
+            if value.endswith("*/"):  # `/* Run = X @ NewConsole = false */`
+                value = value[:-2]
+            run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)
+            # its name or alias, a script's stem (`// Run = ./iPydyna.py` would read
+            # `ProcessConfig = iPydyna`), and the name its app's main hard-codes
+            for name in (*run.block_names, *cat.block_names(run)):
+                found.setdefault(name.lower(), here)
+            if cat.program_name(run.program) is None:
+                # an app whose source is not linted: its main may hard-code a shorter
+                # name (iRemoteMod reads `iRemote`), which unlaunched-process-config looks for
+                unknown.setdefault(run.name.lower(), here)
+            if run.script_block is not None and not has_macro(run.binary):
+                for name in script_names(mission, run.binary) or ():
+                    found.setdefault(name, here)
+    return found, unknown

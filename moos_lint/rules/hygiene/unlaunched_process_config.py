@@ -142,16 +142,14 @@ import re
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches, script_names
 from moos_lint.frontends.nsplug import derived
-from moos_lint.frontends.parsers.moos import strip_comment
-from moos_lint.frontends.parsers.nodes import Param, has_macro, parse_run
+from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.hygiene._shared import (
-    COMMENTED_RUN,
     app_example,
+    commented_runs,
     exclusive,
     extends,
     names_match,
     near_name,
-    where,
 )
 from moos_lint.rules.kit.declare import Scope, rule
 from moos_lint.rules.kit.per_run import per_run
@@ -234,7 +232,7 @@ def check(ctx):
         advice = "rename the block"
         near = None
         if why is None:
-            lines, unknown = _commented(ctx.run, moos, cat, ctx.path)
+            lines, unknown = commented_runs(ctx.run, moos, cat, ctx.path)
             hint = lines.get(block.lname) or _extends(block.lname, unknown)
             if hint and switched:
                 continue  # switched off on purpose
@@ -300,7 +298,7 @@ def _names_by_fragment(run, units, cat, switched: bool) -> dict[str, set[str]]:
         launched = {name for r in moos.runs for name in cat.block_names(r)}
         included = [path for path in unit.expansion.sources if path != unit.path]
         if switched and included:
-            launched |= set(_commented(run, moos, cat, unit.path)[0])
+            launched |= set(commented_runs(run, moos, cat, unit.path)[0])
         for path in included:
             found.setdefault(path, set()).update(launched)
     return found
@@ -386,7 +384,7 @@ def _across(run, units, cat) -> tuple[dict[str, int], set[str], set[str]]:
             if has_macro(r.name):
                 macros.add(r.name)
             launched.update(name.lower() for name in cat.block_names(r))
-        launched.update(_commented(run, moos, cat, unit.path)[0])
+        launched.update(commented_runs(run, moos, cat, unit.path)[0])
     return configured, launched, macros
 
 
@@ -425,60 +423,3 @@ def _holds(name: str, unread: dict[str, str]) -> str | None:
         if re.search(rf"(?:^|_){re.escape(stem)}(?:_|$)", name):
             return program
     return None
-
-
-def _commented(run, moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
-    """:func:`_commented_runs` of a mission, worked out once per run (the check of the
-    mission and the facts gathered across the missions both ask for it)."""
-    memo: dict[str, tuple[dict[str, str], dict[str, str]]] = per_run(
-        run, "commented-runs", lambda units: {}
-    )
-    found = memo.get(mission)
-    if found is None:
-        found = memo[mission] = _commented_runs(moos, cat, mission)
-    return found
-
-
-def _commented_runs(moos, cat, mission: str) -> tuple[dict[str, str], dict[str, str]]:
-    """Where a ``//Run = NAME`` line (or ``#Run = NAME``) sits in an ANTLER block, by the
-    lower-case name of every block its process would read were it launched (the first
-    such line): the line is read as a live one is, so an app whose ``main`` hard-codes its name
-    (``Run("iRemote", ...)`` in iRemoteMod) and a script that connects under a name it
-    quotes count too. Second, where each line is whose program moos-lint knows nothing
-    of, by its lower-case name."""
-    found: dict[str, str] = {}
-    unknown: dict[str, str] = {}
-    for antler in moos.antler_blocks:
-        if antler.open is None:
-            continue
-        inside = False
-        for line in moos.lines:
-            if line is antler.open:
-                inside = True
-                continue
-            if line is antler.close:
-                break
-            if not inside:
-                continue
-            m = COMMENTED_RUN.match(line.text)
-            if not m:
-                continue
-            here = where(line)
-            eq = line.text.index("=")  # the one of `// Run =`: the key holds none
-            # a trailing comment, as on a live line (`//Run = X @ NewConsole = false //~Y`)
-            value = strip_comment(line.text[eq + 1 :]).rstrip()
-            if value.endswith("*/"):  # `/* Run = X @ NewConsole = false */`
-                value = value[:-2]
-            run = parse_run(Param("Run", value.strip(), line, 0, eq + 1, len(line.text)), antler)
-            # its name or alias, a script's stem (`// Run = ./iPydyna.py` would read
-            # `ProcessConfig = iPydyna`), and the name its app's main hard-codes
-            for name in (*run.block_names, *cat.block_names(run)):
-                found.setdefault(name.lower(), here)
-            if cat.program_name(run.program) is None:
-                # an app whose source is not linted: its main may hard-code a shorter
-                # name (iRemoteMod reads `iRemote`), which `_extends` looks for
-                unknown.setdefault(run.name.lower(), here)
-            if run.script_block is not None and not has_macro(run.binary):
-                for name in script_names(mission, run.binary) or ():
-                    found.setdefault(name, here)
-    return found, unknown

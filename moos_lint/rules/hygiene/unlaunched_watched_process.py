@@ -67,13 +67,11 @@ import os
 
 from moos_lint.files.diagnostics import Severity
 from moos_lint.files.launch import patch_launches, script_launches
-from moos_lint.frontends.nsplug import parsed
-from moos_lint.frontends.parsers.moos import parse_moos
 from moos_lint.frontends.parsers.nodes import has_macro
-from moos_lint.rules.hygiene._shared import COMMENTED_RUN, exclusive, near_name, where
+from moos_lint.rules.hygiene._shared import commented_runs, exclusive, near_name
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.semantics.catalogue import WATCH_LISTS, catalogue_for
-from moos_lint.semantics.mission_model import missions_beside
+from moos_lint.semantics.mission_model import missions_beside, sibling_model
 
 #: the MOOS infrastructure, never a client of the MOOSDB's own list
 _NOT_CLIENTS = {"moosdb", "pantler"}
@@ -130,7 +128,12 @@ def check(ctx):
                         "compares names in their case"
                     )
                 else:
-                    why = _commented(moos, name) or "no Run line of the mission starts it"
+                    at_line = commented_runs(ctx.run, moos, cat, ctx.path)[0].get(name.lower())
+                    why = (
+                        f"its Run line is commented out at {at_line}"
+                        if at_line
+                        else "no Run line of the mission starts it"
+                    )
                     near = near_name(name, sorted(names))
                     if near is not None:
                         hint = f"; `{near}` is launched: is it the one meant?"
@@ -162,22 +165,6 @@ def _items(value: str):
             yield name, here + item.index(text)
 
 
-def _commented(moos, name: str) -> str | None:
-    """Where a commented-out Run line of an ANTLER block starts ``name``, as a reason."""
-    for antler in moos.antler_blocks:
-        inside = False
-        for line in moos.lines:
-            if line is antler.open:
-                inside = True
-            elif line is antler.close:
-                break
-            elif inside:
-                m = COMMENTED_RUN.match(line.text)
-                if m and m.group(1).replace("\\", "/").rsplit("/", 1)[-1] == name:
-                    return f"its Run line is commented out at {where(line)}"
-    return None
-
-
 def _started_elsewhere(ctx, cat) -> frozenset[str]:
     """The lower-case names of processes started beside the mission's own Run lines: by an
     nspatch patch or a shell script of its folder, by a mission file of its folder that
@@ -185,15 +172,9 @@ def _started_elsewhere(ctx, cat) -> frozenset[str]:
     folder = os.path.dirname(os.path.abspath(ctx.path))
     found = set(patch_launches(folder) | script_launches(folder, ctx.path))
     found.update(cat.started_by_hand())
-    pre = ctx.run.preprocessor
     me = os.path.normcase(os.path.abspath(ctx.path))
     for cand in missions_beside(ctx.run, folder, True):
-        if os.path.normcase(cand) == me:
-            continue
-        exp = pre.expand(cand)
-        if exp.read_problem is not None:
-            continue
-        other = parsed(exp, parse_moos)
-        if other.is_mission and not any(r.program.lower() == "moosdb" for r in other.runs):
-            found.update(n.lower() for r in other.runs for n in cat.block_names(r))
+        other = None if os.path.normcase(cand) == me else sibling_model(ctx.run, cand)
+        if other is not None and other.joins:
+            found.update(n.lower() for r in other.moos.runs for n in cat.block_names(r))
     return frozenset(found)

@@ -41,6 +41,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
+from moos_lint.frontends.parsers.nodes import CONFLICT_OPENED
 from moos_lint.frontends.text_format_apps import (  # re-exported: the catalogue answers for apps
     TextFormatApp as TextFormatApp,
 )
@@ -565,9 +566,6 @@ def _generic_bhv_keys() -> frozenset[str]:
 
 
 _UNHANDLED = re.compile(r"reportUnhandledConfigWarning")
-#: a merge conflict left in the app's C++ (``<<<<<<< HEAD``): which side's keys the app
-#: reads is not known, and the file does not compile as it is
-_CONFLICT = re.compile(r"^<{7}(?:[ \t]|$)", re.M)
 #: an AppCasting app whose start-up declares its block optional (``OnStartUpDirectives(
 #: "must_have_moosblock=false")``); any other app needs its block
 OPTIONAL_BLOCK = re.compile(r"must_have_moosblock\s*=\s*false")
@@ -670,9 +668,10 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
     """What the app's own C++ (named ``name``) says it reads, publishes and subscribes to.
 
     It is strict (other keys are reported) only when the app reports
-    unhandled lines, hands no key to code elsewhere and holds no merge conflict.
-    An app that the stock catalogue also knows (a fork of a MOOS-IvP app, or
-    MOOS-IvP itself) keeps what the stock entry knows too: the keys of the libraries it links, the
+    unhandled lines, hands no key to code elsewhere and holds no merge conflict
+    (``<<<<<<< HEAD``: which side's keys it reads is not known). An app that the
+    stock catalogue also knows (a fork of a MOOS-IvP app, or MOOS-IvP itself)
+    keeps what the stock entry knows too: the keys of the libraries it links, the
     variables it names at run time (``prefix + "_SPEED"``) and the hand
     corrections, none of which its own files show.
     """
@@ -688,7 +687,7 @@ def _repo_app(app: AppModel, name: str, sources: dict[str, SourceFile]) -> AppIn
         # own (the template's loop, left as generated, silently drops every line); not
         # while a merge conflict leaves two versions of it
         strict=not DELEGATE.search(text)
-        and not _CONFLICT.search(text)
+        and not CONFLICT_OPENED.search(text)
         and (bool(_UNHANDLED.search(text)) or _template_only(app)),
         publishes=pubs,
         publish_prefixes=prefixes,
