@@ -186,6 +186,8 @@ class Expansion:
     conditions: dict[tuple[int, int], str] = field(default_factory=dict)
     #: the facts each branch holds about macros of unknown value (see ``Line.facts``)
     facts: dict[tuple[int, int], frozenset] = field(default_factory=dict, repr=False)
+    #: the branches whose condition could not be decided (a macro of unknown value)
+    undecided: set[tuple[int, int]] = field(default_factory=set, repr=False)
     #: how many times each macro was ``#define``d so far: facts hold per version
     define_counts: dict[str, int] = field(default_factory=dict, repr=False)
     facts_memo: dict[tuple, frozenset] = field(default_factory=dict, repr=False, compare=False)
@@ -721,6 +723,8 @@ class Preprocessor:
                 state = self.eval_ifndef(rest, macros)
             frame = _Frame(left[1:], next(self._groups), 0, state, state == "T", here)
             frame.any_unknown = state == "U"
+            if state == "U":
+                exp.undecided.add((frame.group, 0))
             frames.append(frame)
             exp.conditions[(frame.group, 0)] = f"{left[1:]} {rest}"
             pos, neg = self._facts(left[1:], rest, macros, exp)
@@ -759,6 +763,8 @@ class Preprocessor:
                 top.state = self.eval_ifdef(rest, macros)
                 top.matched = top.state == "T"
                 top.any_unknown = top.any_unknown or top.state == "U"
+            if top.state != "F" and top.any_unknown:  # this branch, or one before, may hold
+                exp.undecided.add((top.group, top.branch))
             return
         # #else
         top.seen_else = True
@@ -769,6 +775,7 @@ class Preprocessor:
             top.state = "F"
         elif top.any_unknown:
             top.state = "U"
+            exp.undecided.add((top.group, top.branch))
         else:
             top.state = "T"
             top.matched = True
