@@ -71,3 +71,20 @@ def test_a_template_is_linted_as_its_kind(tmp_path):
     assert not any(name.endswith((".unity.meta", ".ckpt-1.meta")) for name, _ in found)
     kinds = {Path(u.path).name: u.kind.value for u in result.units}
     assert kinds["moos.meta"] == "moos" and kinds["bhv.meta"] == "bhv"
+
+
+def test_a_file_a_launch_script_makes_with_nsplug_is_not_linted_twice(tmp_path):
+    """``splug META_K200.moos K200.moos`` in a script without a suffix: K200.moos is the
+    template's output (its findings are the template's); a file named on the command
+    line is linted, and so is one whose template is not beside it."""
+    (tmp_path / "META_K200.moos").write_text("ServerPort = 9000\n")
+    (tmp_path / "K200.moos").write_text("ServerPort = 9000\n")
+    (tmp_path / "K201.moos").write_text("ServerPort = 9001\n")
+    (tmp_path / "Expand").write_text(
+        "#!/bin/sh\nsplug META_K200.moos K200.moos\nsplug META_K201.moos K201.moos\n"
+    )
+    found = discover([tmp_path], [], str(tmp_path))
+    assert sorted(Path(f).name for f in found.files) == ["K201.moos", "META_K200.moos"]
+    assert str(tmp_path / "Expand") in found.ignore_files  # an edit of the script is noticed
+    given = discover([tmp_path / "K200.moos"], [], str(tmp_path)).files
+    assert [Path(f).name for f in given] == ["K200.moos"]

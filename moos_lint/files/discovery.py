@@ -74,7 +74,8 @@ class Discovered:
     that, so a list kept with these times is never taken for the newer listing), and
     the ignore files (``.gitignore``, ...) that decided, present or not
     (:mod:`moos_lint.files.gitignore`), with the files whose own text decided whether
-    they are linted (a ``targ_`` file on its own)."""
+    they are linted (a ``targ_`` file on its own) and the launch scripts whose nsplug
+    commands did (a file they make from a template beside it is not linted)."""
 
     __slots__ = ("files", "folders", "ignore_files", "missing")
 
@@ -194,6 +195,7 @@ def discover(
             if frame is not None and keep:
                 frames[dirpath] = frame
             present = set(filenames)
+            outputs = _nsplug_outputs(dirpath, present, decided)
             for f in filenames:
                 # (a template named for no kind is read to know its kind)
                 named = os.path.join(dirpath, f) if f.lower().endswith(TEMPLATE_SUFFIXES) else f
@@ -205,7 +207,7 @@ def discover(
                 if made is None:  # a ``targ_`` file on its own: its text decides
                     decided.append(os.path.join(dirpath, f))
                     made = not _holds_directives(os.path.join(dirpath, f))
-                if made:
+                if made or f in outputs:
                     continue  # nsplug's output of a template
                 if f.lower().endswith(".def") and module_definition(os.path.join(dirpath, f)):
                     continue  # a Windows DLL's exports (``proj.def``), not nsplug definitions
@@ -242,6 +244,34 @@ def _generated_beside_template(name: str, present: set[str]) -> bool | None:
     if any(p.endswith(".sh") for p in present):
         return False
     return None
+
+
+def _nsplug_outputs(folder: str, present: set[str], decided: list[str]) -> frozenset[str]:
+    """The files of ``folder`` that a launch script of the folder writes with nsplug from a
+    template in the folder or one below it (``splug META_K200.moos K200.moos``, ``nsplug
+    aux_files/META_remus.moos remus.moos``): made at launch, their findings are the
+    template's, reported there. The scripts read join ``decided`` (an edit of theirs may
+    change what is linted)."""
+    if not any(n.endswith(".sh") or "." not in n for n in present):
+        return frozenset()
+    from moos_lint.files.launch import nsplug_runs, shell_scripts
+
+    scripts = shell_scripts(folder)
+    if not scripts:
+        return frozenset()
+    decided.extend(path for path, _text in scripts)
+    out = set()
+    for _script, _line, template, output in nsplug_runs(folder):
+        template = os.path.normpath(template)
+        if "$" in template + output or "/" in output or template.startswith(".."):
+            continue
+        if (
+            output in present
+            and output != template
+            and os.path.isfile(os.path.join(folder, template))
+        ):
+            out.add(output)
+    return frozenset(out)
 
 
 #: an nsplug directive at the start of a line, which nsplug's output never holds
