@@ -70,6 +70,9 @@ def test_commands_in_a_line_and_what_is_no_call(tmp_path):
         "nsplug -f meta.moos z.moos\n"  # nsplug takes the template only as its first argument
         "nsplug $META w.moos\n"
         "nsplug meta.moos 'unclosed.moos\n"
+        "cat <<EOF\n"
+        "  nsplug meta.moos usage.moos VNAME=abe\n"
+        "EOF\n"
         "cd ../other\n"
         "nsplug meta.moos later.moos\n",
     )

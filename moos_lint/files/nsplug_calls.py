@@ -83,6 +83,8 @@ DEFINED = "<defined>"
 _CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 #: ``NAME=value`` at the start of a line: a shell variable's assignment
 _ASSIGNMENT = re.compile(r"^[ \t]*(?:export[ \t]+|local[ \t]+)?(\w+)\+?=(.*)$", re.M)
+#: the start of a here-document, and the word that ends it
+_HEREDOC = re.compile(r"<<-?[ \t]*[\"']?(\w+)[\"']?")
 #: words before a command that are not the command
 _PREFIXES = frozenset({"then", "do", "else", "elif", "if", "while", "until", "!", "time", "exec"})
 _SEPARATORS = frozenset({";", "&", "&&", "|", "||", ";;", "(", ")", "{", "}"})
@@ -95,11 +97,18 @@ _VARIABLE = re.compile(r"^\$(?:\{(\w+)\}|(\w+))$")
 
 def _logical_lines(text: str) -> list[tuple[int, str]]:
     """The script's lines with ``\\``-continued lines joined, each with its first line's
-    number."""
+    number; here-documents left out."""
     out: list[tuple[int, str]] = []
     pending: list[str] = []
     start = 0
+    heredoc: str | None = None  # the word that ends the here-document being read
     for lineno, line in enumerate(text.splitlines(), 1):
+        if heredoc is not None:
+            if line.strip() == heredoc:
+                heredoc = None
+            continue  # a here-document's text (a usage message), no command
+        if "<<" in line and (m := _HEREDOC.search(line)) is not None:
+            heredoc = m.group(1)
         if not pending:
             start = lineno
         if line.endswith("\\"):
