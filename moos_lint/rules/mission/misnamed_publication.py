@@ -12,7 +12,9 @@ whose name is a typo from the name of exactly one variable that is read: the
 same words but one, with a letter left out, added, changed or two swapped
 (`endflag = RETRUN = true` where the return behavior waits for `RETURN`,
 `MOOS_MANUAL_OVERIDE`), or its letters in another order
-(`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`). That read name must be
+(`SBR_RANGE_REQUEST` for `BRS_RANGE_REQUEST`); or whose name is a read
+one with an underscore more or less (`FRONT_SURVEY` for `FRONTSURVEY`,
+`STATIONKEEP` for `STATION_KEEP`). A typo's read name must be
 settled: read by an app's or a behavior's code, or published in the mission
 too; a name only a condition waits for may be the misspelt one, and
 unpublished-subscription reports it there. A posting a typo away from a
@@ -94,12 +96,19 @@ def check(ctx):
         return
     names, unread = judged
     by_words: dict[tuple[str, ...], set[str]] = {}
+    by_letters: dict[str, set[str]] = {}  # the names without their underscores
     for read in names:
         if _NAME.fullmatch(read) and not read.endswith("_"):
             by_words.setdefault(words(read), set()).add(read)
+            by_letters.setdefault(read.replace("_", ""), set()).add(read)
     postings = [(ref, name) for ref, name in unread if _NAME.fullmatch(name)]
     # the postings no read name has the words of: each may be a typo of one
-    unmatched = [name for _ref, name in postings if not by_words.get(words(name), set()) - {name}]
+    unmatched = [
+        name
+        for _ref, name in postings
+        if not by_words.get(words(name), set()) - {name}
+        and not by_letters.get(name.replace("_", ""), set()) - {name}
+    ]
     fits = sized_like(unmatched)
     speller: VariableSpeller | None = None
     updates: VariableSpeller | None = None
@@ -107,6 +116,10 @@ def check(ctx):
         meant = sorted(by_words.get(words(name), set()) - {name})
         how = "with the same words"
         either = False
+        letters = name.replace("_", "")
+        if not meant and len(letters) > 4:
+            meant = sorted(by_letters.get(letters, set()) - {name})
+            how = "the same but for its underscores"
         if not meant:
             if speller is None:
                 speller = VariableSpeller(_settled(ctx, by_words, fits))
