@@ -69,7 +69,7 @@ _KEY = re.compile(r"[A-Za-z_][\w.]*")
 def check(ctx):
     model = mission_model(ctx)
     #: an updates variable -> (behavior name, kind, its parameters, its file) of each reader
-    readers: dict[str, list[tuple[str, str, frozenset[str], str]]] = {}
+    readers: dict[str, list[tuple[str, str, set[str], str]]] = {}
     for path, bf in model.behavior_files:
         for bhv in bf.behaviors:
             updates = [p.value.strip() for p in bhv.params if p.lkey == "updates"]
@@ -80,8 +80,7 @@ def check(ctx):
             if info is None or not info.params:
                 continue
             name = bhv.name.value.strip() if bhv.name is not None else ""
-            params = frozenset(info.params) | own_source_keys(ctx, kind, path)
-            readers.setdefault(updates[-1], []).append((name, info.name, params, path))
+            readers.setdefault(updates[-1], []).append((name, info.name, info.params, path))
     if not readers:
         return
     cat = catalogue_for(ctx.run)
@@ -98,8 +97,11 @@ def check(ctx):
         named = [v.strip() for key, _sep, v in pieces if key.strip().lower() == "name"]
         updated = [r for r in readers[ref.name] if not named or named[-1] == r[0]]
         lacking = []  # (behavior, kind, the keys it lacks)
-        for bname, kind, params, _path in updated:
+        for bname, kind, params, path in updated:
             bad = [k for k in keys if k.lower() != "name" and k.lower().lstrip("_") not in params]
+            if bad:  # (what the project's own copy of the behavior reads, asked only now)
+                own = own_source_keys(ctx, kind, path)
+                bad = [k for k in bad if k.lower().lstrip("_") not in own]
             if bad:
                 lacking.append((bname or kind, kind, bad))
         if not lacking:
