@@ -17,11 +17,13 @@ with a default (`$(NAME=1)`), a line in an `#ifdef` branch that the call's
 values do not decide (`VTYPE=$TYPE` against `#ifdef VTYPE kayak`), a call
 with an argument whose words cannot be read from the script (`$MACROS`,
 `"$@"`, `--macros=file`; a variable that holds only options, as
-`NSFLAGS="--strict --force"`, is read), and a macro that no call gives: it
-may be for the app itself (pMarineViewer's `$(XPOS)`, uTimerScript's
-`$(DBTIME)`), which reads it as written. Scripts are read in the template's
-folder, up to a command that changes folder. A macro is reported once per
-file, at its first use, with the number of other lines using it.
+`NSFLAGS="--strict --force"`, is read), a `ServerPort` every other call
+gives as 9000 (MOOS takes a value that is no number as not given and uses
+port 9000, the one meant), and a macro that no call gives: it may be for
+the app itself (pMarineViewer's `$(XPOS)`, uTimerScript's `$(DBTIME)`),
+which reads it as written. Scripts are read in the template's folder, up to
+a command that changes folder. A macro is reported once per file, at its
+first use, with the number of other lines using it.
 
 ## Why is this bad?
 nsplug leaves the whole line unexpanded, the call's other macros included
@@ -71,6 +73,13 @@ _REF = re.compile(r"[$%]\(([^()=:$%\s]+)\)")
 _BACKUP = re.compile(r"(?:^|[_\-.])(?:og|old|bak|backup|orig|copy)(?:[_\-.]|$)", re.I)
 
 
+#: the mission's ``ServerPort`` line: MOOS takes a value that is no number as not given,
+#: and the MOOSDB and the apps use port 9000 (``CMOOSFileReader::GetValue`` of an int,
+#: ``MOOSDB.cpp`` and ``MOOSApp.cpp``)
+_SERVER_PORT = re.compile(r"\s*serverport\s*=", re.I)
+_DEFAULT_PORT = "9000"
+
+
 @rule(
     code="P010",
     name="undefined-launch-macro",
@@ -84,9 +93,11 @@ def check(ctx):
     if len(calls) < 2:
         return
     given: dict[str, NsplugCall] = {}  # a macro -> the first call that gives it
+    values: dict[str, set[str | None]] = {}  # a macro -> the values the calls give it
     for call in calls:
-        for name, _value in call.macros or ():
+        for name, value in call.macros or ():
             given.setdefault(name, call)
+            values.setdefault(name, set()).add(value)
     #: (file, macro) -> where it is first used, the lines using it, the calls lacking it
     missing: dict[tuple[str, str], tuple[Line, int, set[int], list[NsplugCall]]] = {}
     # every macro the template uses, in any branch (read as the linter expands it)
@@ -110,10 +121,13 @@ def check(ctx):
             used.update(m.group(1) for m in refs)  # (an include the linter could not follow)
             if any(b in exp.undecided for b in line.branches):
                 continue
+            port = _SERVER_PORT.match(line.raw) is not None
             for m in refs:
                 name = m.group(1)
                 if name in mine or name in defined or name not in given:
                     continue
+                if port and values[name] == {_DEFAULT_PORT}:
+                    continue  # MOOS reads no number there and takes the port meant, 9000
                 first = missing.setdefault((line.path, name), (line, m.start(), set(), []))
                 first[2].add(line.lineno)
                 if call not in first[3]:
