@@ -257,7 +257,7 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
 
 
 #: a command that changes the script's folder: later relative names are not known
-_CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
+CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 
 
 #: a launch script's assignment of a vehicle's name, a word written out: ``VNAME1="henry"``,
@@ -308,7 +308,7 @@ def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, 
             ):
                 continue  # most lines: neither pattern can match
             code = line.split("#", 1)[0]
-            if _CHANGES_FOLDER.search(code):
+            if CHANGES_FOLDER.search(code):
                 break
             m = _NSPLUG_RUN.search(code)
             if m:

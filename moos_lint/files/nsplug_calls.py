@@ -16,7 +16,7 @@ import os
 import re
 from dataclasses import dataclass
 
-from moos_lint.files.launch import shell_scripts
+from moos_lint.files.launch import CHANGES_FOLDER, shell_scripts
 
 
 @dataclass(frozen=True)
@@ -25,7 +25,7 @@ class NsplugCall:
 
     script: str
     line: int
-    #: the template's path, from the script's folder
+    #: the template's path (the script's folder joined with the name it gives)
     template: str
     output: str
     #: the macros the call defines, each with its value (None: a shell expansion, whose
@@ -50,10 +50,9 @@ def _calls(scripts: tuple[tuple[str, str], ...]) -> tuple[NsplugCall, ...]:
     for path, text in scripts:
         if "splug" not in text:
             continue
-        folder = os.path.dirname(path)
         assigned = _assignments(text)
         for lineno, line in _logical_lines(text):
-            if _CHANGES_FOLDER.search(line.split("#", 1)[0]):
+            if CHANGES_FOLDER.search(line.split("#", 1)[0]):
                 break
             if "splug" not in line:
                 continue
@@ -62,25 +61,13 @@ def _calls(scripts: tuple[tuple[str, str], ...]) -> tuple[NsplugCall, ...]:
                 continue
             for args in _commands_of(words):
                 call = _call(path, lineno, args, assigned)
-                if call is not None and "$" not in call.template:
-                    out.append(
-                        NsplugCall(
-                            call.script,
-                            call.line,
-                            os.path.normpath(os.path.join(folder, call.template)),
-                            call.output,
-                            call.macros,
-                            call.strict,
-                            call.lenient,
-                        )
-                    )
+                if call is not None:
+                    out.append(call)
     return tuple(out)
 
 
 #: nsplug's value of a macro given as a bare ``NAME``
 DEFINED = "<defined>"
-#: a command that changes the script's folder: later relative names are not known
-_CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 #: ``NAME=value`` at the start of a line: a shell variable's assignment
 _ASSIGNMENT = re.compile(r"^[ \t]*(?:export[ \t]+|local[ \t]+)?(\w+)\+?=(.*)$", re.M)
 #: the start of a here-document, and the word that ends it
@@ -182,8 +169,9 @@ def _call(
     script: str, lineno: int, args: list[str], assigned: dict[str, list[str]]
 ) -> NsplugCall | None:
     """The call of ``args`` (``nsplug IN OUT ...``): nsplug takes its first argument as
-    the template and its second as the output only there, never after an option."""
-    if len(args) < 3 or args[1].startswith("-") or args[2].startswith("-"):
+    the template and its second as the output only there, never after an option; None
+    when the template's name holds a shell expansion."""
+    if len(args) < 3 or args[1].startswith("-") or args[2].startswith("-") or "$" in args[1]:
         return None
     macros: dict[str, str | None] | None = {}
     strict = lenient = False
@@ -226,7 +214,7 @@ def _call(
     return NsplugCall(
         script,
         lineno,
-        args[1],
+        os.path.normpath(os.path.join(os.path.dirname(script), args[1])),
         args[2],
         None if macros is None else tuple(sorted(macros.items())),
         strict,

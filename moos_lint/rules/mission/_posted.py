@@ -71,6 +71,8 @@ def value_after(ref) -> str | None:
     m = re.match(r"\s*=\s*", text[ref.start + len(ref.name) :])
     if m is not None:
         rest = text[ref.start + len(ref.name) + m.end() :]
+        if rest.startswith('"') and '"' in rest[1:]:  # quoted: a `#` inside is the value's
+            return clean(rest[: rest.index('"', 1) + 1])
         cut = _VALUE_END.search(rest)
         return clean(rest[: cut.start()] if cut else rest)
     if ref.param == "event":

@@ -48,6 +48,7 @@ import re
 from moos_lint.files.diagnostics import Severity, Subject
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
+from moos_lint.rules.kit.wording import listed
 from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission._posted import value_after
 from moos_lint.rules.mission.unknown_parameter import suggestions
@@ -87,8 +88,8 @@ def check(ctx):
     for ref in model.refs:
         if ref.role != PUBLISH or ref.name not in readers:
             continue
-        value = _quoted_value(ref) or value_after(ref)
-        if value is None or "[" in value or "$" in value:
+        value = value_after(ref)  # (None when it holds a macro or a placeholder)
+        if value is None:
             continue
         pieces = [piece.strip().strip("\"'").partition("=") for piece in value.split("#")]
         if any(not sep or not _KEY.fullmatch(key.strip()) for key, sep, _v in pieces):
@@ -114,36 +115,23 @@ def check(ctx):
         )
 
 
-def _quoted_value(ref) -> str | None:
-    """The value of ``VAR = "a=1 # b=2"``, whole: the `#` inside its quotes separates the
-    update's pieces, not the posting's."""
-    rest = ref.line.text[ref.start + len(ref.name) :].lstrip()
-    if not rest.startswith("="):
-        return None
-    rest = rest[1:].lstrip()
-    if not rest.startswith('"') or rest.find('"', 1) < 0:
-        return None
-    return rest[1 : rest.find('"', 1)].strip() or None
-
-
 def _message(cat, var: str, updated, lacking, pieces: int) -> str:
     """What the update sets that its behaviors do not have, and what the helm does."""
-    named = [f"`{b or k}` ({k})" for b, k, _p, _f in updated]
-    who = named[0] if len(named) == 1 else f"{', '.join(named[:-1])} and {named[-1]}"
+    who = listed([f"`{b or k}` ({k})" for b, k, _p, _f in updated])
     first_bad = lacking[0][2]
     same = all(bad == first_bad for _b, _k, bad in lacking) and len(lacking) == len(updated)
-    listed = ", ".join(f"`{k}`" for k in first_bad)
+    keys = ", ".join(f"`{k}`" for k in first_bad)
     if len(updated) == 1:
-        what = f"`{var}` updates behavior {who}, which has no parameter {listed}"
+        what = f"`{var}` updates behavior {who}, which has no parameter {keys}"
     elif same:
         none = "neither" if len(updated) == 2 else "none of them"
-        what = f"`{var}` updates {who}, and {none} has a parameter {listed}"
+        what = f"`{var}` updates {who}, and {none} has a parameter {keys}"
     else:
         by_bad: dict[tuple[str, ...], list[str]] = {}
         for b, _k, bad in lacking:
             by_bad.setdefault(tuple(bad), []).append(f"`{b}`")
         each = "; ".join(
-            " and ".join(names)
+            listed(names)
             + (" have" if len(names) > 1 else " has")
             + " no parameter "
             + ", ".join(f"`{k}`" for k in bad)

@@ -65,6 +65,7 @@ from moos_lint.files.nsplug_calls import NsplugCall, nsplug_calls
 from moos_lint.frontends.nsplug import UNKNOWN, Expansion, Line, Preprocessor
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.spelling import typos
+from moos_lint.rules.kit.wording import listed
 
 #: a macro reference without a default: ``$(NAME)`` or ``%(NAME)``
 _REF = re.compile(r"[$%]\(([^()=:$%\s]+)\)")
@@ -175,8 +176,8 @@ def _message(
     template = ""
     if os.path.normcase(line.path) != os.path.normcase(os.path.abspath(ctx.path)):
         template = f" on `{os.path.relpath(os.path.abspath(ctx.path), where)}`"
-    what = _listed([f"`{n}`" for n in names], "or")
-    refs = _listed([f"`$({n})`" for n in names], "and")
+    what = listed([f"`{n}`" for n in names], "or")
+    refs = listed([f"`$({n})`" for n in names], "and")
     reader = "the helm" if ctx.bhv is not None else "the app"
     if first.strict:
         effect = "nsplug --strict stops at this line and writes no file (an older one stays)"
@@ -196,11 +197,6 @@ def _message(
         f"The nsplug call{template} at {at}{more} does not give {what}, which "
         f"{os.path.relpath(giver.script, where)}:{giver.line} gives: {effect}{hint}"
     )
-
-
-def _listed(items: list[str], last: str) -> str:
-    """``a``, ``a or b``, ``a, b or c``."""
-    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} {last} {items[-1]}"
 
 
 def _near(name: str, unused: set[str]) -> str | None:
