@@ -16,7 +16,7 @@ from moos_lint.frontends.cpp import angle_exprs as angles
 from moos_lint.frontends.cpp import facts, values
 from moos_lint.frontends.cpp.app import sibling_apps
 from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
-from moos_lint.frontends.cpp.names import axis_of
+from moos_lint.frontends.cpp.names import axis_of, words
 from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
 from moos_lint.semantics.process_names import PREFIXED, placeholder, prefix_problem
 from moos_lint.semantics.variables import STANDARD_ACTUATORS
@@ -185,14 +185,65 @@ _SIGN_SLIPS = (
 
 
 def yaw_heading_sign(app: AppModel) -> Iterator[Finding]:
+    said: set[Span] = set()
     for published_as, unit, sense, hint_ok, what, rule in _SIGN_SLIPS:
         for p, v in _valued(app, published_as):
             if v is None or v.unit != unit or v.sense != sense or (v.hint and not hint_ok):
                 continue
+            said.add(p.value.span)  # type: ignore[union-attr]
             yield (
                 p.value.span,  # type: ignore[union-attr]
                 f"{_shown(p)} is {what} without the minus sign{_because(v)}; {rule}",
             )
+    for yaw, heading in _same_sign_pairs(app):
+        if yaw.value.span in said or heading.value.span in said:  # type: ignore[union-attr]
+            continue
+        said.add(yaw.value.span)  # type: ignore[union-attr]
+        at = values.place(heading.span.path, heading.span.line)
+        yield (
+            yaw.value.span,  # type: ignore[union-attr]
+            f"{_shown(yaw)} and {_shown(heading)} ({at}) are one angle published with the "
+            f"same sign (`{_flat(yaw.value.text)}`, `{_flat(heading.value.text)}`): "  # type: ignore[union-attr]
+            "yaw is −heading·π/180, so one of them turns the wrong way (a device's yaw "
+            "about Z-down turns clockwise, as a heading does: negate it for the yaw)",
+        )
+
+
+#: words of a name that say its angle is in another frame than MOOS's, on purpose
+_FRAME_WORDS = frozenset({"NED", "ENU", "NWU", "FRD", "FLU", "BODY", "MATH"})
+
+
+def _same_sign_pairs(app: AppModel) -> Iterator[tuple[Publication, Publication]]:
+    """A yaw and a heading one function publishes from the same angle, one of them
+    converted from the other's unit, with the same sign: ``Notify("GP9_YAW", e)`` and
+    ``Notify("GP9_HEADING", angle360(e*180/M_PI))``, or a yaw ``h*M_PI/180`` beside the
+    heading ``h``. MOOS's yaw is −heading·π/180: one of the two has its sign wrong,
+    whatever the angle is."""
+    yaws: dict[str, list[tuple[Publication, tuple[int, str, str | None]]]] = {}
+    headings: list[tuple[Publication, tuple[int, str, str | None]]] = []
+    for p in app.publications:
+        name = p.name.last
+        if not name or p.value is None or p.value.type not in NUMERIC:
+            continue
+        is_yaw, is_heading = angles.is_yaw_var(name), angles.is_heading_var(name)
+        if not (is_yaw or is_heading) or _FRAME_WORDS & {w.upper() for w in words(name)}:
+            continue
+        v = p.value.abstract
+        if is_yaw and v is not None and v.unit == "deg":
+            continue  # (a yaw in degrees: yaw-in-degrees says so)
+        form = angles.angle_conversion(p.value.expanded)
+        if p.value.number is not None or re.fullmatch(r"[-+\d.eE]+[fF]?", form[1]):
+            continue
+        if is_yaw:
+            yaws.setdefault(p.function, []).append((p, form))
+        else:
+            headings.append((p, form))
+    for heading, (h_sign, h_angle, h_conv) in headings:
+        for yaw, (y_sign, y_angle, y_conv) in yaws.get(heading.function, ()):
+            if y_angle != h_angle or y_sign != h_sign:
+                continue
+            if (y_conv, h_conv) in (("rad", None), (None, "deg")):
+                yield yaw, heading
 
 
 def heading_in_radians(app: AppModel) -> Iterator[Finding]:

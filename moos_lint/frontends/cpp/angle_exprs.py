@@ -278,3 +278,154 @@ def heading_term(expr: str) -> str | None:
 
 def literal_over_two_pi(number: float | None) -> bool:
     return number is not None and abs(number) > 2 * math.pi + 1e-9
+
+
+# -- one angle, two units ---------------------------------------------------------
+
+#: calls that keep an angle in its unit and only wrap it (their argument is the angle)
+_WRAPS = frozenset({*WRAP_PI, *WRAP_2PI, "angle180", "angle360"})
+_PI_FACTOR = re.compile(
+    PI + r"|\(?\s*4(?:\.0*)?\s*\*\s*(?:std::)?atan\s*\(\s*1(?:\.0*)?\s*\)\s*\)?"
+)
+_180 = re.compile(r"180(?:\.0*)?[fF]?")
+_DEG_PER_RAD = re.compile(r"57\.29\d*[fF]?")  # 180/π written out
+_RAD_PER_DEG = re.compile(r"0?\.01745\d*[fF]?")  # π/180 written out
+
+
+def _call_of(e: str, names) -> tuple[str, str] | None:
+    """(name, argument) when ``e`` is one call of one of ``names`` with one argument."""
+    m = re.match(r"(?:std::)?(\w+)\s*\(", e)
+    if m is None or m.group(1) not in names or not e.endswith(")"):
+        return None
+    inner = e[m.end() : -1]
+    if not _balanced(inner) or _top_level(inner, ","):
+        return None
+    return m.group(1), inner.strip()
+
+
+def _top_level(e: str, chars: str) -> list[int]:
+    """Where ``chars`` stand in ``e`` outside parentheses and brackets (a sign that follows
+    an operator, or opens the expression, is not a binary operator: left out)."""
+    found, depth, prev = [], 0, ""
+    for i, ch in enumerate(e):
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        elif depth == 0 and ch in chars:
+            unary = ch in "+-" and (not prev or prev in "(*/+-,=<>!?:" or e[i - 1 : i + 1] == "e-")
+            if not unary and not (ch == "-" and e[i : i + 2] == "->"):
+                found.append(i)
+        if not ch.isspace():
+            prev = ch
+    return found
+
+
+def _unsigned(e: str) -> tuple[int, str]:
+    """``e`` without its outer parentheses and leading minus signs, and the sign they made."""
+    sign = 1
+    while True:
+        e = _strip_outer_parens(e.strip())
+        if e.startswith("-") and not _top_level(e[1:], "+-"):
+            sign, e = -sign, e[1:]
+        elif e.startswith("+") and not _top_level(e[1:], "+-"):
+            e = e[1:]
+        else:
+            return sign, e
+
+
+def angle_conversion(expr: str) -> tuple[int, str, str | None]:
+    """What a published angle is made of: ``(sign, angle, conversion)``, wraps left out.
+    ``conversion`` is ``"rad"`` for ``angle·π/180`` (``MOOSDeg2Rad(angle)``, ``π/180·angle``),
+    ``"deg"`` for ``angle·180/π``, None when the value is ``angle`` itself; ``sign`` is -1
+    when a minus sign (or a ``-180``) stands before it. ``angle`` is the expression's text
+    without spaces: ``-(angle360(h*180/M_PI))`` gives ``(-1, "h", "deg")``."""
+    sign, e = _unsigned(expr)
+    conversion = None
+    for _ in range(8):
+        call = _call_of(e, _WRAPS)
+        if call is None and conversion is None:
+            call = _call_of(e, {*DEG2RAD_CALLS, *RAD2DEG_CALLS, "degrees", "radians"})
+            if call is not None:
+                conversion = "rad" if call[0] in (*DEG2RAD_CALLS, "radians") else "deg"
+        elif call is None:
+            break
+        if call is None:
+            product = _product(e) if conversion is None else None
+            if product is None:
+                break
+            conversion, e = product[1], product[2]
+            sign *= product[0]
+        else:
+            e = call[1]
+        s, e = _unsigned(e)
+        sign *= s
+    return sign, re.sub(r"\s+", "", e), conversion
+
+
+def _product(e: str) -> tuple[int, str, str] | None:
+    """``(sign, conversion, angle)`` when ``e`` is ``angle`` times π/180 or 180/π (in any
+    order of its factors), else None."""
+    if _top_level(e, "+-?"):
+        return None
+    cuts = _top_level(e, "*/")
+    parts, start, ops = [], 0, ["*"]
+    for at in cuts:
+        parts.append(e[start:at])
+        ops.append(e[at])
+        start = at + 1
+    parts.append(e[start:])
+    factors: list[tuple[str, str]] = []  # (op, factor)
+    for op, part in zip(ops, parts, strict=True):
+        s, f = _unsigned(part)
+        inner = _product_factors(f)
+        if s < 0:
+            factors.append(("*", "-1"))
+        if inner is None:
+            factors.append((op, f))
+        else:  # `(M_PI/180.0)`: its factors, turned over under a division
+            flip = {"*": "/", "/": "*"}
+            factors.extend((o if op == "*" else flip[o], x) for o, x in inner)
+    sign, pi, deg, rest = 1, 0, 0, []
+    for op, f in factors:
+        up = 1 if op == "*" else -1
+        neg = f.startswith("-")
+        f = f.lstrip("-").strip()
+        if neg:
+            sign = -sign
+        if f == "1":
+            continue
+        if _PI_FACTOR.fullmatch(f):
+            pi += up
+        elif _180.fullmatch(f):
+            deg += up
+        elif _DEG_PER_RAD.fullmatch(f):
+            deg, pi = deg + up, pi - up
+        elif _RAD_PER_DEG.fullmatch(f):
+            deg, pi = deg - up, pi + up
+        elif up == 1:
+            rest.append(f)
+        else:
+            return None
+    if len(rest) != 1:
+        return None
+    if (pi, deg) == (1, -1):
+        return sign, "rad", rest[0]
+    if (pi, deg) == (-1, 1):
+        return sign, "deg", rest[0]
+    return None
+
+
+def _product_factors(e: str) -> list[tuple[str, str]] | None:
+    """The factors of ``e`` when it is a product of numbers and π only (``M_PI/180.0``)."""
+    if _top_level(e, "+-?") or not _top_level(e, "*/"):
+        return None
+    out, start, op = [], 0, "*"
+    for at in [*_top_level(e, "*/"), len(e)]:
+        f = _strip_outer_parens(e[start:at].strip())
+        if not (_PI_FACTOR.fullmatch(f.lstrip("-")) or re.fullmatch(r"-?[\d.]+[fF]?", f)):
+            return None
+        out.append((op, f))
+        op = e[at] if at < len(e) else op
+        start = at + 1
+    return out

@@ -17,6 +17,15 @@ is one MOOS gives (`NAV_YAW` read by mail, or a value negated from a heading).
 A variable merely named yaw is not taken as one: a device's yaw may be about
 Z-down, which turns as a heading does.
 
+A yaw and a heading that one function publishes from the same angle, one
+made from the other by `·π/180` or `·180/π` (a wrap aside) with the same sign,
+are reported at the yaw, whatever the angle is: `Notify("AHRS_YAW", e)` beside
+`Notify("AHRS_HEADING", angle360(e*180/M_PI))`, or `HEX_YAW` as
+`h*(M_PI/180)` beside `HEX_HEADING` as `h`. One of the two turns the wrong
+way; most often the yaw, a device's yaw about Z-down (NED) that turns
+clockwise as a heading does. A name that gives its frame (`AHRS_YAW_NED`,
+`_ENU`, `_BODY`) is left alone.
+
 The value comes from moos-lint's value analysis of C++, which follows it
 through locals, members, functions anywhere in the repository and struct fields
 (README, "C++ apps"). The finding says why, as a chain; what the analysis

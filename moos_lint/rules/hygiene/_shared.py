@@ -124,8 +124,10 @@ def near_name(name: str, others) -> str | None:
         if lo == low or has_macro(other) or len(other) < 5:
             continue
         longer, shorter = (lo, low) if len(lo) > len(low) else (low, lo)
-        added = longer.startswith(shorter) and len(longer) - len(shorter) <= 8
-        if (added or typos(lo, low) <= 2) and other not in found:
+        gap = len(longer) - len(shorter)
+        added = gap <= 8 and longer.startswith(shorter)
+        # (no fewer typos than the lengths differ by)
+        if (added or (gap <= 2 and typos(lo, low) <= 2)) and other not in found:
             found.append(other)
     return found[0] if len(found) == 1 else None
 
