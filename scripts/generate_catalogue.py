@@ -751,6 +751,14 @@ _INFO_VARS = re.compile(r"addInfoVars\(\s*\"([^\"]+)\"")
 #: a behavior's constructor setting its duration to a number other than IvPBehavior's -1
 #: (``m_duration = 0;``: BHV_ConstantSpeed times out at once unless given a duration)
 _DURATION_DEFAULT = re.compile(r"^\s*m_duration\s*=\s*(-?[\d.]+)\s*;", re.MULTILINE)
+#: a behavior that stops the helm when the helm's domain lacks a variable it decides:
+#: ``if(!m_domain.hasDomain("depth")) { postEMessage(...); return(0); }`` in its
+#: onRunState (BHV_ConstantDepth.cpp). postEMessage posts BHV_ERROR and marks the behavior's
+#: state not ok (IvPBehavior.cpp), and the helm engine then halts the helm
+#: (HelmEngine.cpp: ``if(!m_bhv_set->stateOK(bhv_ix)) m_helm_report.setHalted(true)``)
+_DOMAIN_NEEDED = re.compile(
+    r"if\s*\(\s*!\s*m_domain\.hasDomain\(\s*\"(\w+)\"\s*\)\s*\)\s*\{?\s*postEMessage\("
+)
 _DELEGATE_MEMBER = re.compile(r"\b(m_\w+)\s*(?:\.|->)\s*setParam\s*\(\s*param\b")
 _TAIL = re.compile(r"\+\s*\"([A-Z0-9_]+)\"\s*\)?$")
 
@@ -939,6 +947,12 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             line = text.count("\n", 0, dur.start(1)) + 1
             at = f"{_rel(path, src)}:{line}"
             entry["defaults"] = {"duration": {"value": dur.group(1), "at": at}}
+        needed = {}
+        for m in _DOMAIN_NEEDED.finditer(text):
+            line = text.count("\n", 0, m.start()) + 1
+            needed.setdefault(m.group(1), f"{_rel(path, src)}:{line}")
+        if needed:
+            entry["domains"] = dict(sorted(needed.items()))
         bhv_corr = BEHAVIOR_CORRECTIONS.get(cls)
         if bhv_corr:
             entry["param_forms"] = dict(sorted({**forms, **bhv_corr["param_forms"]}.items()))

@@ -177,6 +177,25 @@ def test_a_behaviors_own_duration_default_comes_from_its_constructor():
     assert "duration" not in cat.behavior("BHV_Timer").defaults
 
 
+def test_the_domains_a_behavior_halts_without_come_from_its_run_state():
+    cat = stock()
+    needs = {
+        "BHV_ConstantDepth": "depth",
+        "BHV_GoToDepth": "depth",
+        "BHV_MaxDepth": "depth",
+        "BHV_ConstantHeading": "course",
+        "BHV_ConstantSpeed": "speed",
+        "BHV_MaxSpeed": "speed",
+    }
+    for kind, var in needs.items():
+        domains = cat.behavior(kind).domains
+        assert list(domains) == [var], kind
+        assert _EVIDENCE.search(domains[var]) and kind + ".cpp" in domains[var]
+    # a behavior that reads the domain without halting the helm needs none
+    assert cat.behavior("BHV_Waypoint").domains == {}
+    assert cat.behavior("BHV_AvoidCollision").domains == {}
+
+
 def test_the_helm_posts_mode_only_as_its_set_blocks_name_it():
     # ModeSet::evaluate posts the variables its set blocks name: the mission model reads
     # them from the behavior files, and the catalogue does not list MODE for every helm

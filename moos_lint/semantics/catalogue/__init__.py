@@ -155,6 +155,9 @@ class BehaviorInfo:
     #: (lower case) -> (value, the MOOS-IvP line that sets it): BHV_ConstantSpeed's
     #: ``duration`` is 0, not "no time limit"
     defaults: dict[str, tuple[str, str]] = field(default_factory=dict)
+    #: the helm domain variables the behavior needs (``depth``) -> the MOOS-IvP line where,
+    #: running without it, it posts BHV_ERROR and so halts the helm
+    domains: dict[str, str] = field(default_factory=dict)
 
 
 class CatalogueError(Exception):
@@ -427,6 +430,9 @@ def stock() -> Catalogue:
                 provenance=f"moos-ivp {commit[:8]} {d.get('source', '')}",
                 forms=_forms(d, commit),
                 defaults=_defaults(d, commit),
+                domains={
+                    str(k): f"moos-ivp {commit[:8]} {at}" for k, at in d.get("domains", {}).items()
+                },
             )
         )
     for name in data.get("editor_behaviors", {}):
