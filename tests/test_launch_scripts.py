@@ -36,18 +36,21 @@ def test_files_a_launch_writes_or_cleans_away(tmp_path):
 
 def test_nsplug_writes_its_output_also_from_a_scripts_folder(tmp_path):
     """``scripts/launch.sh`` running ``nsplug bhv.meta current.bhv`` makes current.bhv
-    beside the templates; an output named by a shell variable is not known."""
+    beside the templates; an output named by a shell variable is not known, and nsplug
+    takes its template and output only as its first two arguments (main.cpp: an option
+    first makes ``moos.meta`` the output of no template, and ``last.moos`` a macro)."""
     (tmp_path / "scripts").mkdir()
     (tmp_path / "scripts" / "launch.sh").write_text(
         "#!/bin/bash\n"
         "nsplug bhv.meta current.bhv -f ${FLAGS}\n"
-        "nsplug -i moos.meta 'last.moos' -f WARP=$W\n"
+        "nsplug 'first.meta' 'last.moos' -f WARP=$W\n"
+        "nsplug -i moos.meta 'never.moos' -f WARP=$W\n"
         "nsplug meta_vehicle.moos targ_$VNAME.moos\n"
     )
     made = made_by_scripts(str(tmp_path))
     assert {"current.bhv", "last.moos"} <= made
     assert not any("$" in m for m in made)
-    assert "bhv.meta" not in made and "moos.meta" not in made
+    assert "bhv.meta" not in made and "moos.meta" not in made and "never.moos" not in made
 
 
 def test_a_launched_script_and_the_scripts_beside_a_mission(tmp_path):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 
-from moos_lint.files.nsplug_calls import nsplug_calls
+from moos_lint.files.launch import made_by_scripts, nsplug_calls
 
 
 def _calls(folder, text: str, name: str = "launch.sh"):
@@ -68,7 +68,7 @@ def test_commands_in_a_line_and_what_is_no_call(tmp_path):
         "nsplug meta.moos a.moos A=1 && pAntler a.moos & sleep 1; splug old.moos b.moos B\n"
         "echo nsplug meta.moos x.moos   # nsplug meta.moos y.moos\n"
         "nsplug -f meta.moos z.moos\n"  # nsplug takes the template only as its first argument
-        "nsplug $META w.moos\n"
+        "nsplug $META w.moos\n"  # a template named by a variable: a call, its path not known
         "nsplug meta.moos 'unclosed.moos\n"
         "cat <<EOF\n"
         "  nsplug meta.moos usage.moos VNAME=abe\n"
@@ -79,7 +79,18 @@ def test_commands_in_a_line_and_what_is_no_call(tmp_path):
     assert [(c.output, dict(c.macros or {})) for c in calls] == [
         ("a.moos", {"A": "1"}),
         ("b.moos", {"B": "<defined>"}),
+        ("w.moos", {}),
     ]
+    assert calls[-1].template.endswith("$META")
+
+
+def test_outputs_after_a_change_of_folder_are_made_at_launch(tmp_path):
+    (tmp_path / "launch.sh").write_text(
+        "nsplug meta.moos here.moos\ncd sub\nnsplug meta_sub.moos there.moos\n"
+    )
+    assert [c.output for c in nsplug_calls(str(tmp_path))] == ["here.moos"]
+    made = made_by_scripts(str(tmp_path))
+    assert {"here.moos", "there.moos"} <= made
 
 
 def test_scripts_are_read_again_when_edited(tmp_path):

@@ -29,12 +29,14 @@ def _csv(values: list[str] | None) -> list[str]:
 
 
 def _defines(values: list[str] | None) -> dict[str, str]:
+    from moos_lint.files.nsplug_calls import DEFINED  # (the value nsplug gives a bare NAME)
+
     out = {}
     for v in values or []:
         name, eq, value = v.partition("=")
         if not name:
             raise SystemExit(_usage_error(f"--define needs NAME=VALUE, got {v!r}"))
-        out[name] = value if eq else "<defined>"
+        out[name] = value if eq else DEFINED
     return out
 
 

@@ -254,15 +254,15 @@ def _nsplug_outputs(folder: str, present: set[str], decided: list[str]) -> froze
     change what is linted)."""
     if not any(n.endswith(".sh") or "." not in n for n in present):
         return frozenset()
-    from moos_lint.files.launch import nsplug_runs, shell_scripts
+    from moos_lint.files.launch import nsplug_calls, shell_scripts
 
     scripts = shell_scripts(folder)
     if not scripts:
         return frozenset()
     decided.extend(path for path, _text in scripts)
     out = set()
-    for _script, _line, template, output in nsplug_runs(folder):
-        template = os.path.normpath(template)
+    for call in nsplug_calls(folder):
+        template, output = os.path.relpath(call.template, folder), call.output
         if "$" in template + output or "/" in output or template.startswith(".."):
             continue
         if (

@@ -17,6 +17,7 @@ import os
 import re
 from collections.abc import Callable
 
+from moos_lint.files.nsplug_calls import NsplugCall, calls_in
 from moos_lint.files.project import is_within, vcs_top
 from moos_lint.files.source import read_head
 from moos_lint.files.stamps import folder_mtime
@@ -150,10 +151,6 @@ def _quoted_in(path: str, _mtime: int, _size: int) -> frozenset[str] | None:
 
 
 _REDIRECT = re.compile(r">>?[ \t]*[\"']?([\w./-]+)")
-#: ``nsplug IN OUT ...``: the template nsplug reads and the file it writes (options may
-#: come first)
-#: ``nsplug TEMPLATE OUTPUT`` (``splug``: its name in MOOS-IvP's releases of 2008-2010)
-_NSPLUG_RUN = re.compile(r"\bn?splug(?:[ \t]+-\S+)*[ \t]+([^\s;&|-]\S*)[ \t]+([^\s;&|-]\S*)")
 _RM = re.compile(r"(?:^|[;&|][ \t]*)rm[ \t]+([^\n;&|]*)", re.M)
 
 
@@ -235,16 +232,18 @@ def made_by_scripts(folder: str) -> frozenset[str]:
 
 @functools.lru_cache(maxsize=256)
 def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
-    out: set[str] = set()
+    # nsplug's outputs, wherever the script runs it (only their names are compared)
+    out = {
+        os.path.basename(call.output)
+        for call in calls_in(scripts, past_folder_change=True)
+        if "$" not in call.output
+    }
     for _path, text in scripts:
         for line in text.splitlines():
-            if ">" not in line and "splug" not in line and "rm" not in line:
-                continue  # most lines: none of the three patterns can match
+            if ">" not in line and "rm" not in line:
+                continue  # most lines: neither pattern can match
             code = line.split("#", 1)[0]
             out.update(os.path.basename(m.group(1)) for m in _REDIRECT.finditer(code))
-            m = _NSPLUG_RUN.search(code)
-            if m and "$" not in m.group(2):
-                out.add(os.path.basename(m.group(2).strip("\"'")))
             for m in _RM.finditer(code):
                 for word in m.group(1).split():
                     word = word.strip("\"'")
@@ -254,10 +253,6 @@ def _made_by(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     out.discard("/dev/null")
     out.discard("null")
     return frozenset(out)
-
-
-#: a command that changes the script's folder: later relative names are not known
-CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 
 
 #: a launch script's assignment of a vehicle's name, a word written out: ``VNAME1="henry"``,
@@ -287,33 +282,12 @@ def _vehicle_names(scripts: tuple[tuple[str, str], ...]) -> frozenset[str]:
     )
 
 
-def nsplug_runs(folder: str) -> tuple[tuple[str, int, str, str], ...]:
-    """``(script, line, template, output)`` of each ``nsplug TEMPLATE OUTPUT`` command of
-    the folder's own shell scripts, up to the first command that changes folder (a
-    launch script runs from the mission folder: its relative names are read from
-    there). Read as text, never run."""
-    return _nsplug_runs(shell_scripts(folder))
-
-
-@functools.lru_cache(maxsize=256)
-def _nsplug_runs(scripts: tuple[tuple[str, str], ...]) -> tuple[tuple[str, int, str, str], ...]:
-    out = []
-    for path, text in scripts:
-        for lineno, line in enumerate(text.splitlines(), 1):
-            if (
-                "splug" not in line
-                and "cd" not in line
-                and "pushd" not in line
-                and "popd" not in line
-            ):
-                continue  # most lines: neither pattern can match
-            code = line.split("#", 1)[0]
-            if CHANGES_FOLDER.search(code):
-                break
-            m = _NSPLUG_RUN.search(code)
-            if m:
-                out.append((path, lineno, m.group(1).strip("\"'"), m.group(2).strip("\"'")))
-    return tuple(out)
+def nsplug_calls(folder: str) -> tuple[NsplugCall, ...]:
+    """Each nsplug command of the folder's own shell scripts, with its macros (see
+    :mod:`moos_lint.files.nsplug_calls`), up to the first command of a script that
+    changes folder (a launch script runs from the mission folder: its relative names are
+    read from there). Read as text, never run."""
+    return calls_in(shell_scripts(folder))
 
 
 def nsplug_working_folders(folder: str) -> tuple[str, ...]:
@@ -324,9 +298,8 @@ def nsplug_working_folders(folder: str) -> tuple[str, ...]:
     parent = os.path.dirname(folder)
     if not parent or parent == folder:
         return ()
-    for _script, _line, template, _output in nsplug_runs(parent):
-        sub = os.path.dirname(template)
-        if sub and "$" not in sub and os.path.normpath(os.path.join(parent, sub)) == folder:
+    for call in nsplug_calls(parent):
+        if os.path.dirname(call.template) == folder:
             return (parent,)
     return ()
 
@@ -372,7 +345,9 @@ def script_launches(folder: str, mission: str) -> frozenset[str]:
     started = (*_started(shell_scripts(folder)), *_cmake_started(cmake_scripts(folder)))
     # nsplug's outputs of the mission (``nsplug META_K200.moos K200.moos``)
     outputs = {
-        os.path.basename(o) for _, _, t, o in nsplug_runs(folder) if os.path.basename(t) == name
+        os.path.basename(call.output)
+        for call in nsplug_calls(folder)
+        if os.path.basename(call.template) == name
     }
     return frozenset(
         p for p, arg in started if _names_mission(arg, name) or os.path.basename(arg) in outputs

@@ -16,8 +16,6 @@ import os
 import re
 from dataclasses import dataclass
 
-from moos_lint.files.launch import CHANGES_FOLDER, shell_scripts
-
 
 @dataclass(frozen=True)
 class NsplugCall:
@@ -25,7 +23,8 @@ class NsplugCall:
 
     script: str
     line: int
-    #: the template's path (the script's folder joined with the name it gives)
+    #: the template's path (the script's folder joined with the name it gives, which may
+    #: hold a shell expansion: ``$META``)
     template: str
     output: str
     #: the macros the call defines, each with its value (None: a shell expansion, whose
@@ -38,21 +37,25 @@ class NsplugCall:
     lenient: bool
 
 
-def nsplug_calls(folder: str) -> tuple[NsplugCall, ...]:
-    """Each nsplug command of the folder's own shell scripts whose template is named
-    by a literal path, up to the first command of a script that changes folder."""
-    return _calls(shell_scripts(folder))
+#: a command that changes the script's folder: later relative names are not known
+CHANGES_FOLDER = re.compile(r"(?:^|[;&|(][ \t]*)(?:cd|pushd|popd)\b")
 
 
 @functools.lru_cache(maxsize=256)
-def _calls(scripts: tuple[tuple[str, str], ...]) -> tuple[NsplugCall, ...]:
+def calls_in(
+    scripts: tuple[tuple[str, str], ...], past_folder_change: bool = False
+) -> tuple[NsplugCall, ...]:
+    """Each nsplug command of the scripts (``(path, text)``, each run from its own
+    folder), up to the first command of a script that changes folder: a relative name
+    after it is not known. ``past_folder_change``: every command, for what only the
+    names of the files matter to (the outputs a launch makes)."""
     out: list[NsplugCall] = []
     for path, text in scripts:
         if "splug" not in text:
             continue
         assigned = _assignments(text)
         for lineno, line in _logical_lines(text):
-            if CHANGES_FOLDER.search(line.split("#", 1)[0]):
+            if not past_folder_change and CHANGES_FOLDER.search(line.split("#", 1)[0]):
                 break
             if "splug" not in line:
                 continue
@@ -66,7 +69,8 @@ def _calls(scripts: tuple[tuple[str, str], ...]) -> tuple[NsplugCall, ...]:
     return tuple(out)
 
 
-#: nsplug's value of a macro given as a bare ``NAME``
+#: nsplug's value of a macro given as a bare ``NAME`` (on its command line, or
+#: ``#define NAME`` with no value)
 DEFINED = "<defined>"
 #: ``NAME=value`` at the start of a line: a shell variable's assignment
 _ASSIGNMENT = re.compile(r"^[ \t]*(?:export[ \t]+|local[ \t]+)?(\w+)\+?=(.*)$", re.M)
@@ -169,9 +173,9 @@ def _call(
     script: str, lineno: int, args: list[str], assigned: dict[str, list[str]]
 ) -> NsplugCall | None:
     """The call of ``args`` (``nsplug IN OUT ...``): nsplug takes its first argument as
-    the template and its second as the output only there, never after an option; None
-    when the template's name holds a shell expansion."""
-    if len(args) < 3 or args[1].startswith("-") or args[2].startswith("-") or "$" in args[1]:
+    the template and its second as the output only there, never after an option
+    (``main.cpp``: ``setInFile(argv[1])``, ``setOutFile(argv[2])``)."""
+    if len(args) < 3 or args[1].startswith("-") or args[2].startswith("-"):
         return None
     macros: dict[str, str | None] | None = {}
     strict = lenient = False

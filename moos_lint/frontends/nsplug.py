@@ -36,6 +36,7 @@ from pathlib import Path
 from typing import Any
 
 from moos_lint.files.diagnostics import IncludeSite, Span
+from moos_lint.files.nsplug_calls import DEFINED
 from moos_lint.files.source import ReadProblem, SourceFile, read_source
 from moos_lint.files.stamps import folder_mtime
 
@@ -59,8 +60,6 @@ def written_for_cpp(lines: Iterable[str]) -> bool:
 
 #: A macro whose value depends on the branch taken: its value is unknown.
 UNKNOWN = object()
-#: nsplug's value for ``#define NAME`` with no value.
-DEFINED = "<defined>"
 #: Real missions nest includes a few levels deep. Each linted file expands its
 #: whole include tree, so a deeper chain costs every file above it time and memory.
 MAX_INCLUDE_DEPTH = 100

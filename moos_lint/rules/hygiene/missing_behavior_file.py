@@ -71,7 +71,7 @@ from moos_lint.files.launch import (
     find_relative,
     launch_folders,
     made_by_scripts,
-    nsplug_runs,
+    nsplug_calls,
     project_folder,
 )
 from moos_lint.frontends.parsers.nodes import has_macro
@@ -110,19 +110,22 @@ def _missing_template(folder: str, name: str) -> str | None:
     that writes ``name`` reads a template that does not exist (None when none writes it,
     or one template exists, is made at launch, or is named by a variable)."""
     wanted = _MACRO.sub("*", os.path.basename(name))
-    runs = [r for r in nsplug_runs(folder) if fnmatch.fnmatchcase(wanted, _MACRO.sub("*", r[3]))]
-    if not runs:
+    calls = [
+        c for c in nsplug_calls(folder) if fnmatch.fnmatchcase(wanted, _MACRO.sub("*", c.output))
+    ]
+    if not calls:
         return None
     made = made_by_scripts(folder)
-    for _script, _line, template, _output in runs:
+    for call in calls:
+        template = call.template
         if "$" in template or "`" in template or os.path.basename(template) in made:
             return None
-        if os.path.exists(os.path.join(folder, template)):
+        if os.path.exists(template):
             return None
-    script, line, template, _output = runs[0]
+    first = calls[0]
     return (
-        f"{os.path.basename(script)}:{line} makes it with nsplug from `{template}`, "
-        "which does not exist"
+        f"{os.path.basename(first.script)}:{first.line} makes it with nsplug from "
+        f"`{os.path.relpath(first.template, folder)}`, which does not exist"
     )
 
 

@@ -60,8 +60,8 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity, Span
-from moos_lint.files.launch import script_include_paths
-from moos_lint.files.nsplug_calls import NsplugCall, nsplug_calls
+from moos_lint.files.launch import nsplug_calls, script_include_paths
+from moos_lint.files.nsplug_calls import NsplugCall
 from moos_lint.frontends.nsplug import UNKNOWN, Expansion, Line, Preprocessor
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.spelling import typos
