@@ -21,9 +21,11 @@ with an argument whose words cannot be read from the script (`$MACROS`,
 gives as 9000 (MOOS takes a value that is no number as not given and uses
 port 9000, the one meant), and a macro that no call gives: it may be for
 the app itself (pMarineViewer's `$(XPOS)`, uTimerScript's `$(DBTIME)`),
-which reads it as written. Scripts are read in the template's folder, up to
-a command that changes folder. A macro is reported once per file, at its
-first use, with the number of other lines using it.
+which reads it as written. Scripts are read in the template's folder and
+in the folder above it (within the project: `nsplug bhvs/meta_vehicle.bhv
+...` run from the mission folder), up to a command that changes folder. A
+macro is reported once per file, at its first use, with the number of other
+lines using it.
 
 ## Why is this bad?
 nsplug leaves the whole line unexpanded, the call's other macros included
@@ -60,7 +62,12 @@ import os
 import re
 
 from moos_lint.files.diagnostics import Severity, Span
-from moos_lint.files.launch import nsplug_calls, script_include_paths
+from moos_lint.files.launch import (
+    launch_folders,
+    nsplug_calls,
+    project_folder,
+    script_include_paths,
+)
 from moos_lint.files.nsplug_calls import NsplugCall
 from moos_lint.frontends.nsplug import UNKNOWN, Expansion, Line, Preprocessor
 from moos_lint.rules.kit.declare import Kind, Scope, rule
@@ -90,7 +97,10 @@ _DEFAULT_PORT = "9000"
 )
 def check(ctx):
     path = os.path.normcase(os.path.abspath(ctx.path))
-    calls = [c for c in nsplug_calls(os.path.dirname(path)) if os.path.normcase(c.template) == path]
+    # the scripts of the template's folder, and of the one above it in the project (a
+    # script there runs `nsplug bhvs/meta_vehicle.bhv targ_$VNAME.bhv`)
+    folders = launch_folders(ctx.path, project_folder(ctx.settings, ctx.path))[:2]
+    calls = [c for f in folders for c in nsplug_calls(f) if os.path.normcase(c.template) == path]
     if len(calls) < 2:
         return
     given: dict[str, NsplugCall] = {}  # a macro -> the first call that gives it
