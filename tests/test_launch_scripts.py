@@ -159,3 +159,16 @@ def test_a_script_line_of_any_length_is_read_in_one_pass(tmp_path):
         [sys.executable, "-c", script, str(tmp_path)], capture_output=True, text=True, timeout=60
     )
     assert done.returncode == 0 and done.stdout.strip() == "[]"
+
+
+def test_a_run_lists_a_folders_scripts_once_and_the_next_run_again(tmp_path):
+    """Within a lint run (``read_once``) a folder's scripts are listed and stamped once,
+    however many missions and rules ask; the next run sees a script added or edited."""
+    from moos_lint.files.launch import nsplug_calls, read_once
+
+    (tmp_path / "launch.sh").write_text("nsplug m.moos a.moos\n")
+    with read_once():
+        assert [c.output for c in nsplug_calls(str(tmp_path))] == ["a.moos"]
+        (tmp_path / "launch_b.sh").write_text("nsplug m.moos b.moos\n")
+        assert [c.output for c in nsplug_calls(str(tmp_path))] == ["a.moos"]
+    assert [c.output for c in nsplug_calls(str(tmp_path))] == ["a.moos", "b.moos"]

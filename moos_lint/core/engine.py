@@ -36,6 +36,7 @@ from moos_lint.files.diagnostics import (
     Subject,
 )
 from moos_lint.files.discovery import discover, kind_of
+from moos_lint.files.launch import read_once
 from moos_lint.files.source import ReadProblem, SourceFile
 from moos_lint.frontends.nsplug import Expansion, FileCache, Line, Preprocessor, parsed
 from moos_lint.frontends.parsers.bhv import is_behavior_fragment, parse_bhv
@@ -342,6 +343,21 @@ def lint_files(
     lint raises :class:`LintStopped` (the language server's time budget and
     cancellation).
     """
+    with read_once():  # the scripts beside the missions, listed once for the whole run
+        return _lint_files(files, settings, rules, cache, jobs, checked, progress, parallel, stop)
+
+
+def _lint_files(
+    files: list[str],
+    settings: Settings,
+    rules: list[Rule] | None,
+    cache: FileCache | None,
+    jobs: int | None,
+    checked: Callable[[Unit], bool] | None,
+    progress: Progress | None,
+    parallel: Parallel | None,
+    stop: Callable[[], bool] | None,
+) -> Result:
     bound = Boundary(settings.project_root) if settings.project_root else None
     outside_links: list[str] = []
     if bound is not None:  # a link to a file outside the project is not linted
@@ -462,6 +478,19 @@ def lint_paths(
     from outside (:func:`moos_lint.speed.cache.cached_lint`).
     """
     paths = list(paths) or [Path(".")]
+    with read_once():
+        return _lint_paths(paths, settings, context, cache, jobs, progress, parallel)
+
+
+def _lint_paths(
+    paths: list[Path],
+    settings: Settings,
+    context: bool,
+    cache: FileCache | None,
+    jobs: int | None,
+    progress: Progress | None,
+    parallel: Parallel | None,
+) -> Result:
     found = discover(paths, settings.exclude, settings.root, settings.respect_gitignore)
     if not context:
         result = lint_files(

@@ -12,15 +12,17 @@ when none of them holds it.
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import os
 import re
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
 
 from moos_lint.files.nsplug_calls import NsplugCall, calls_in
 from moos_lint.files.project import is_within, vcs_top
 from moos_lint.files.source import read_head
-from moos_lint.files.stamps import folder_mtime
+from moos_lint.files.stamps import file_stamp, folder_mtime
 from moos_lint.files.suffixes import script_stem
 
 
@@ -170,7 +172,9 @@ _RUNS_ANTLER = re.compile(r"(?:^|[;&|])[ \t]*(?:\S*/)?pAntler\b", re.M)
 def _plain_scripts(folder: str) -> tuple[tuple[str, str], ...]:
     """The files of ``folder`` without a suffix (no ``.`` in the name, not a README) that
     are shell scripts: they start with ``#!``, or run pAntler."""
-    texts = _named_texts(folder, lambda n: "." not in n and not n.lower().startswith("readme"))
+    texts = _named_texts(
+        folder, "plain", lambda n: "." not in n and not n.lower().startswith("readme")
+    )
     return tuple(
         (path, text)
         for path, text in texts
@@ -191,26 +195,77 @@ def _texts(
     ``readme``, starts with ``README`` in any case), by name, kept while every one keeps
     its (mtime, size)."""
     return _named_texts(
-        folder, lambda n: n.endswith(suffix) or (readme and n.lower().startswith("readme"))
+        folder,
+        (suffix, readme),
+        lambda n: n.endswith(suffix) or (readme and n.lower().startswith("readme")),
     )
 
 
-def _named_texts(folder: str, keep: Callable[[str], bool]) -> tuple[tuple[str, str], ...]:
+def _named_texts(
+    folder: str, kind: object, keep: Callable[[str], bool]
+) -> tuple[tuple[str, str], ...]:
     """``(path, text)`` of each regular file of ``folder`` whose name ``keep`` accepts, by
-    name, kept while every one keeps its (mtime, size)."""
-    try:
-        names = sorted(n for n in os.listdir(folder) if keep(n))
-    except OSError:
-        return ()
+    name, kept while every one keeps its (mtime, size); ``kind`` names ``keep`` (the
+    same for the same files), for :func:`read_once`."""
+    memo = getattr(_ONCE, "memo", None)
+    key = ("texts", folder, kind)
+    if memo is not None and key in memo:
+        return memo[key]
     stamps = []
-    for n in names:
+    for n in sorted(n for n in _listing(folder) if keep(n)):
         path = os.path.join(folder, n)
-        try:
-            st = os.stat(path)
-        except OSError:
-            continue
-        stamps.append((path, st.st_mtime_ns, st.st_size))
-    return _read_scripts(tuple(stamps))
+        stamp = _stamp(path)
+        if stamp is not None:
+            stamps.append((path, *stamp))
+    texts = _read_scripts(tuple(stamps))
+    if memo is not None:
+        memo[key] = texts
+    return texts
+
+
+#: per thread (the language server may lint in two at once): the folders listed and the
+#: files stamped during a lint run, while :func:`read_once` holds
+_ONCE = threading.local()
+
+
+@contextlib.contextmanager
+def read_once() -> Iterator[None]:
+    """Within it, each folder's scripts and notes are listed and stamped once: a lint run
+    asks for them many times (each mission of a folder, each rule), and what it reads
+    does not change under it. Outside it, at every ask (an edit is seen at the next)."""
+    outer = getattr(_ONCE, "memo", None)
+    if outer is None:
+        _ONCE.memo = {}
+    try:
+        yield
+    finally:
+        if outer is None:
+            _ONCE.memo = None
+
+
+def _listing(folder: str) -> list[str]:
+    memo = getattr(_ONCE, "memo", None)
+    key = ("list", folder)
+    if memo is not None and key in memo:
+        return memo[key]
+    try:
+        names = os.listdir(folder)
+    except OSError:
+        names = []
+    if memo is not None:
+        memo[key] = names
+    return names
+
+
+def _stamp(path: str) -> tuple[int, int] | None:
+    memo = getattr(_ONCE, "memo", None)
+    key = ("stamp", path)
+    if memo is not None and key in memo:
+        return memo[key]
+    stamp = file_stamp(path)
+    if memo is not None:
+        memo[key] = stamp
+    return stamp
 
 
 @functools.lru_cache(maxsize=256)
