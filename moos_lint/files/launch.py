@@ -32,7 +32,8 @@ def project_folder(settings, path: str) -> str:
     config = getattr(settings, "config_path", None)
     if config:
         return os.path.dirname(os.path.abspath(config))
-    top = vcs_top(path)
+    path = os.path.abspath(path)
+    top = _checkout_top(path if os.path.isdir(path) else os.path.dirname(path))
     if top is not None:
         return top
     here = os.getcwd()
@@ -241,6 +242,18 @@ def read_once() -> Iterator[None]:
     finally:
         if outer is None:
             _ONCE.memo = None
+
+
+def _checkout_top(folder: str) -> str | None:
+    """:func:`vcs_top` of ``folder``, asked once per folder during :func:`read_once`."""
+    memo = getattr(_ONCE, "memo", None)
+    key = ("top", folder)
+    if memo is not None and key in memo:
+        return memo[key]
+    top = vcs_top(folder)
+    if memo is not None:
+        memo[key] = top
+    return top
 
 
 def _listing(folder: str) -> list[str]:
