@@ -25,6 +25,12 @@ from moos_lint.files.source import read_head
 from moos_lint.files.stamps import file_stamp, folder_mtime
 from moos_lint.files.suffixes import script_stem
 
+TYPE_CHECKING = False  # typing itself is not imported at run time
+if TYPE_CHECKING:
+    from typing import TypeVar
+
+    _T = TypeVar("_T")
+
 
 def project_folder(settings, path: str) -> str:
     """The project root for a file: the config's folder, the checkout's top, or the
@@ -208,24 +214,21 @@ def _named_texts(
     """``(path, text)`` of each regular file of ``folder`` whose name ``keep`` accepts, by
     name, kept while every one keeps its (mtime, size); ``kind`` names ``keep`` (the
     same for the same files), for :func:`read_once`."""
-    memo = getattr(_ONCE, "memo", None)
-    key = ("texts", folder, kind)
-    if memo is not None and key in memo:
-        return memo[key]
-    stamps = []
-    for n in sorted(n for n in _listing(folder) if keep(n)):
-        path = os.path.join(folder, n)
-        stamp = _stamp(path)
-        if stamp is not None:
-            stamps.append((path, *stamp))
-    texts = _read_scripts(tuple(stamps))
-    if memo is not None:
-        memo[key] = texts
-    return texts
+
+    def read() -> tuple[tuple[str, str], ...]:
+        stamps = []
+        for n in sorted(n for n in _listing(folder) if keep(n)):
+            path = os.path.join(folder, n)
+            stamp = _once(("stamp", path), functools.partial(file_stamp, path))
+            if stamp is not None:
+                stamps.append((path, *stamp))
+        return _read_scripts(tuple(stamps))
+
+    return _once(("texts", folder, kind), read)
 
 
-#: per thread (the language server may lint in two at once): the folders listed and the
-#: files stamped during a lint run, while :func:`read_once` holds
+#: per thread (the language server may lint in two at once): what was listed, stamped
+#: and looked for during a lint run, while :func:`read_once` holds
 _ONCE = threading.local()
 
 
@@ -244,41 +247,29 @@ def read_once() -> Iterator[None]:
             _ONCE.memo = None
 
 
-def _checkout_top(folder: str) -> str | None:
-    """:func:`vcs_top` of ``folder``, asked once per folder during :func:`read_once`."""
+def _once(key: tuple, compute: Callable[[], _T]) -> _T:
+    """``compute()``, once per ``key`` while :func:`read_once` holds."""
     memo = getattr(_ONCE, "memo", None)
-    key = ("top", folder)
-    if memo is not None and key in memo:
-        return memo[key]
-    top = vcs_top(folder)
-    if memo is not None:
-        memo[key] = top
-    return top
+    if memo is None:
+        return compute()
+    if key not in memo:
+        memo[key] = compute()
+    return memo[key]
+
+
+def _checkout_top(folder: str) -> str | None:
+    """:func:`vcs_top` of ``folder``, looked for once per folder during a run."""
+    return _once(("top", folder), lambda: vcs_top(folder))
 
 
 def _listing(folder: str) -> list[str]:
-    memo = getattr(_ONCE, "memo", None)
-    key = ("list", folder)
-    if memo is not None and key in memo:
-        return memo[key]
-    try:
-        names = os.listdir(folder)
-    except OSError:
-        names = []
-    if memo is not None:
-        memo[key] = names
-    return names
+    def names() -> list[str]:
+        try:
+            return os.listdir(folder)
+        except OSError:
+            return []
 
-
-def _stamp(path: str) -> tuple[int, int] | None:
-    memo = getattr(_ONCE, "memo", None)
-    key = ("stamp", path)
-    if memo is not None and key in memo:
-        return memo[key]
-    stamp = file_stamp(path)
-    if memo is not None:
-        memo[key] = stamp
-    return stamp
+    return _once(("list", folder), names)
 
 
 @functools.lru_cache(maxsize=256)
