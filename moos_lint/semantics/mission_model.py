@@ -320,7 +320,7 @@ def behavior_paths(value: str, folder: str, *parents: str) -> tuple[list[str], b
         meta = os.path.join(where, "meta_" + base[len("targ_") :])
         if not has_macro(meta) and os.path.isfile(meta):
             return [_norm(meta)], True
-        metas = sorted(glob.glob(os.path.join(glob.escape(where), "meta_*" + ext)))
+        metas = meta_templates(where, ext)
         if len(metas) == 1:
             return [_norm(metas[0])], True
         vehicle = [m for m in metas if "vehicle" in os.path.basename(m)]
@@ -663,6 +663,12 @@ def _configured_posts(bhv: Behavior, info: BehaviorInfo) -> list[tuple[str, Line
     return found
 
 
+def meta_templates(folder: str, ext: str) -> list[str]:
+    """The nsplug templates ``meta_*`` of ``folder`` ending in ``ext`` (``.bhv``), sorted:
+    those a ``targ_$(VNAME)`` name may be made from."""
+    return sorted(glob.glob(os.path.join(glob.escape(folder), "meta_*" + ext)))
+
+
 def missions_beside(run: RunView, folder: str, generated: bool = False) -> list[str]:
     """The ``.moos`` files of ``folder`` that may be missions (normalised, sorted), once
     per run: the missions of a folder all look at the same ones. nsplug's outputs
@@ -845,6 +851,7 @@ __all__ = [
     "Process",
     "Publisher",
     "behavior_paths",
+    "meta_templates",
     "mission_model",
     "missions_beside",
     "model_of",

@@ -334,6 +334,13 @@ def _unsigned(e: str) -> tuple[int, str]:
             return sign, e
 
 
+#: the calls that turn an angle into the other unit -> the unit they give
+_CONVERSIONS = {
+    **{name: "rad" for name in (*DEG2RAD_CALLS, "radians")},
+    **{name: "deg" for name in (*RAD2DEG_CALLS, "degrees")},
+}
+
+
 def angle_conversion(expr: str) -> tuple[int, str, str | None]:
     """What a published angle is made of: ``(sign, angle, conversion)``, wraps left out.
     ``conversion`` is ``"rad"`` for ``angle·π/180`` (``MOOSDeg2Rad(angle)``, ``π/180·angle``),
@@ -342,57 +349,56 @@ def angle_conversion(expr: str) -> tuple[int, str, str | None]:
     without spaces: ``-(angle360(h*180/M_PI))`` gives ``(-1, "h", "deg")``."""
     sign, e = _unsigned(expr)
     conversion = None
-    for _ in range(8):
-        call = _call_of(e, _WRAPS)
-        if call is None and conversion is None:
-            call = _call_of(e, {*DEG2RAD_CALLS, *RAD2DEG_CALLS, "degrees", "radians"})
-            if call is not None:
-                conversion = "rad" if call[0] in (*DEG2RAD_CALLS, "radians") else "deg"
-        elif call is None:
-            break
-        if call is None:
-            product = _product(e) if conversion is None else None
-            if product is None:
-                break
-            conversion, e = product[1], product[2]
-            sign *= product[0]
+    while True:  # (each step takes a call or factors off: ``e`` gets shorter)
+        wrap = _call_of(e, _WRAPS)
+        if wrap is not None:
+            e = wrap[1]
+        elif conversion is not None:
+            break  # (after the conversion, only wraps are taken off)
+        elif (call := _call_of(e, _CONVERSIONS)) is not None:
+            conversion, e = _CONVERSIONS[call[0]], call[1]
+        elif (product := _product(e)) is not None:
+            s, conversion, e = product
+            sign *= s
         else:
-            e = call[1]
+            break
         s, e = _unsigned(e)
         sign *= s
     return sign, re.sub(r"\s+", "", e), conversion
 
 
+def _factors(e: str) -> list[tuple[str, str]] | None:
+    """``e``'s factors, each with the operator before it (``*`` for the first), when ``e``
+    is a product or quotient; None when it has a top-level sum or condition."""
+    if _top_level(e, "+-?"):
+        return None
+    out, start, op = [], 0, "*"
+    for at in [*_top_level(e, "*/"), len(e)]:
+        out.append((op, e[start:at]))
+        op = e[at] if at < len(e) else op
+        start = at + 1
+    return out
+
+
 def _product(e: str) -> tuple[int, str, str] | None:
     """``(sign, conversion, angle)`` when ``e`` is ``angle`` times π/180 or 180/π (in any
     order of its factors), else None."""
-    if _top_level(e, "+-?"):
-        return None
-    cuts = _top_level(e, "*/")
-    parts, start, ops = [], 0, ["*"]
-    for at in cuts:
-        parts.append(e[start:at])
-        ops.append(e[at])
-        start = at + 1
-    parts.append(e[start:])
-    factors: list[tuple[str, str]] = []  # (op, factor)
-    for op, part in zip(ops, parts, strict=True):
+    factors: list[tuple[str, str]] = []  # (op, factor), products in parentheses opened
+    flip = {"*": "/", "/": "*"}
+    for op, part in _factors(e) or ():
         s, f = _unsigned(part)
-        inner = _product_factors(f)
         if s < 0:
             factors.append(("*", "-1"))
+        inner = _constant_factors(f)
         if inner is None:
             factors.append((op, f))
         else:  # `(M_PI/180.0)`: its factors, turned over under a division
-            flip = {"*": "/", "/": "*"}
             factors.extend((o if op == "*" else flip[o], x) for o, x in inner)
     sign, pi, deg, rest = 1, 0, 0, []
     for op, f in factors:
         up = 1 if op == "*" else -1
-        neg = f.startswith("-")
-        f = f.lstrip("-").strip()
-        if neg:
-            sign = -sign
+        if f.startswith("-"):
+            sign, f = -sign, f.lstrip("-").strip()
         if f == "1":
             continue
         if _PI_FACTOR.fullmatch(f):
@@ -416,16 +422,13 @@ def _product(e: str) -> tuple[int, str, str] | None:
     return None
 
 
-def _product_factors(e: str) -> list[tuple[str, str]] | None:
+def _constant_factors(e: str) -> list[tuple[str, str]] | None:
     """The factors of ``e`` when it is a product of numbers and π only (``M_PI/180.0``)."""
-    if _top_level(e, "+-?") or not _top_level(e, "*/"):
+    factors = _factors(e)
+    if factors is None or len(factors) < 2:
         return None
-    out, start, op = [], 0, "*"
-    for at in [*_top_level(e, "*/"), len(e)]:
-        f = _strip_outer_parens(e[start:at].strip())
-        if not (_PI_FACTOR.fullmatch(f.lstrip("-")) or re.fullmatch(r"-?[\d.]+[fF]?", f)):
-            return None
-        out.append((op, f))
-        op = e[at] if at < len(e) else op
-        start = at + 1
-    return out
+    out = [(op, _strip_outer_parens(f.strip())) for op, f in factors]
+    constant = re.compile(r"-?[\d.]+[fF]?")
+    if all(_PI_FACTOR.fullmatch(f.lstrip("-")) or constant.fullmatch(f) for _op, f in out):
+        return out
+    return None

@@ -56,7 +56,6 @@ None.
 
 from __future__ import annotations
 
-import glob
 import os
 
 from moos_lint.files.diagnostics import Severity, Subject
@@ -64,7 +63,7 @@ from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.wording import listed
 from moos_lint.rules.mission._behaviors import repo_classes
-from moos_lint.semantics.mission_model import mission_model
+from moos_lint.semantics.mission_model import meta_templates, mission_model
 
 
 @rule(
@@ -136,7 +135,7 @@ def _one_file(value: str, folder: str) -> bool:
         return False
     where = os.path.join(folder, os.path.dirname(name))
     ext = os.path.splitext(base)[1] or ".bhv"
-    return len(glob.glob(os.path.join(glob.escape(where), "meta_*" + ext))) == 1
+    return len(meta_templates(where, ext)) == 1
 
 
 def _short(path: str) -> str:
