@@ -4,7 +4,13 @@ from __future__ import annotations
 
 import pytest
 
-from moos_lint.rules.kit.spelling import VariableSpeller, cased_like, misspelling_of, typos
+from moos_lint.rules.kit.spelling import (
+    VariableSpeller,
+    cased_like,
+    misspelling_of,
+    slip,
+    typos,
+)
 
 
 @pytest.mark.parametrize(
@@ -30,6 +36,27 @@ def test_typos_count_swaps_as_one():
     assert typos("deploy", "DEPLOY") == 0
     assert misspelling_of("RETRUN", ["RETURN", "DEPLOY"], 1) == "RETURN"
     assert misspelling_of("RETRUN", ["RETURN", "RETRUNS"], 1) is None
+
+
+@pytest.mark.parametrize(
+    ("written", "meant", "fixable"),
+    [
+        ("ouptut", "output", True),  # two letters swapped
+        ("CommsTic", "CommsTick", True),
+        ("resetmax", "reset_max", True),  # only an underscore
+        ("MAX_RUDDER", "maxrudder", True),
+        ("SUMARRY_WAIT", "SUMMARY_WAIT", True),  # two slips in a long key
+        ("CommunTick", "CommsTick", False),  # two in a short one
+        ("MODBUS_PORT", "MOOS_PORT", False),  # another word
+        ("southbound", "outbound", False),
+        ("TRY_SHORE_PORT", "TRY_SHORE_HOST", False),
+        ("thrust_mapping", "thrust_map", False),
+    ],
+)
+def test_a_respelling_is_a_fix_only_for_a_slip(written, meant, fixable):
+    """A close key is named in the message either way; it is written into the file
+    only when it undoes a slip of the keyboard."""
+    assert slip(written, meant) is fixable
 
 
 @pytest.mark.parametrize(

@@ -33,6 +33,30 @@ def misspelling_of(name: str, candidates: Iterable[str], most: int) -> str | Non
     return near[0] if len(near) == 1 else None
 
 
+def slip(written: str, meant: str) -> bool:
+    """Whether ``meant`` is ``written`` with a slip of the keyboard undone, so that a
+    fix may respell one as the other: the same letters but for case and underscores
+    (``resetmax``, ``reset_max``), one letter inserted, deleted, replaced or two
+    swapped (``ouptut``), or two slips in a name of twelve letters or more
+    (``SUMARRY_WAIT``) that leave no short word another word. A close name that
+    differs by more is another key: a hint may name it, but writing it in would set
+    what the author did not mean (``MODBUS_PORT`` is no misspelt ``MOOS_PORT``,
+    ``southbound`` no ``outbound``, ``TRY_SHORE_PORT`` no ``TRY_SHORE_HOST``)."""
+    a, b = written.lower(), meant.lower()
+    if a.replace("_", "") == b.replace("_", ""):
+        return True
+    n = typos(a, b)
+    if n <= 1:
+        return True
+    if n > 2 or min(len(a), len(b)) < 12:
+        return False
+    words_a, words_b = a.split("_"), b.split("_")
+    if len(words_a) != len(words_b):
+        return False
+    pairs = zip(words_a, words_b, strict=True)
+    return all(min(len(x), len(y)) >= 7 or typos(x, y) < 2 for x, y in pairs)
+
+
 _DIGITS = re.compile(r"[0-9]+")
 
 

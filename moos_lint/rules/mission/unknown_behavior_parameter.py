@@ -7,7 +7,9 @@ generic keys: `name`, `pwt`, `condition`, `endflag`, `updates`, ...;
 `IvPContactBehavior`'s contact keys) nor the helm's behavior spec
 (`templating`, `max_spawnings`) accept. Keys are compared as the helm compares
 them: in lower case, with a leading `_` ignored. A close known parameter is
-suggested, and when there is exactly one it is offered as a fix.
+suggested, and when there is exactly one, a slip away from the key (one
+letter inserted, deleted, replaced or two swapped, as unknown-parameter
+counts them) or a key an older release read, it is offered as a fix.
 
 A parameter an older MOOS-IvP's behavior read is reported as such
 (`activation_dist`, which BHV_AvoidObstacle read in 2015), with a respelling
@@ -54,7 +56,7 @@ MOOS-IvP caveats, deliberately not reported:
 from moos_lint.files.diagnostics import Edit, Fix, Severity
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
-from moos_lint.rules.kit.spelling import cased_like
+from moos_lint.rules.kit.spelling import cased_like, slip
 from moos_lint.rules.mission._behaviors import lookup, own_source_keys
 from moos_lint.rules.mission.unknown_parameter import suggestions
 from moos_lint.semantics.catalogue import catalogue_for
@@ -91,6 +93,6 @@ def check(ctx):
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
-            if len(close) == 1:
+            if len(close) == 1 and (old is not None or slip(p.key.strip(), close[0])):
                 fix = Fix(f"respell as `{close[0]}`", (Edit(p.key_span, close[0]),))
             yield ctx.report(p.key_span, msg, line=p.line, fix=fix)

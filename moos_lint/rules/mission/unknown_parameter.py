@@ -6,7 +6,11 @@ for an alias such as `pShare ~ ShareA`, otherwise the block name) in the app
 catalogue, and reports a parameter that the app's configuration parser does
 not handle. It says which known parameter is close (`did you mean ...?`,
 compared without regard to case, as MOOS compares keys), and offers a fix
-that respells the key when exactly one known parameter is close.
+that respells the key when exactly one known parameter is close and differs
+from the key by a slip (one letter inserted, deleted, replaced or two
+swapped, two in a long key, or only underscores), or when the key is one an
+older release read (a renamed key): `MODBUS_PORT` is named beside
+`MOOS_PORT` but never respelled as it.
 
 The catalogue holds the apps whose C++ is linted in the same run (the keys
 their start-up compares with a literal, a `#define` or a member set to a
@@ -45,8 +49,8 @@ ProcessConfig = pMarinePIDV22
 
 ## How to fix
 Respell the key (`moos-lint check --fix` applies the suggestion when there is
-only one), or delete the line. For your own app, lint its C++ in the same run
-or describe it in a catalogue file.
+only one and it is a slip of the key), or delete the line. For your own app,
+lint its C++ in the same run or describe it in a catalogue file.
 
 ## Options
 None.
@@ -116,7 +120,7 @@ from moos_lint.files.launch import scripts_beside
 from moos_lint.frontends.parsers.nodes import has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.file_wide import built_keys, file_wide
-from moos_lint.rules.kit.spelling import cased_like
+from moos_lint.rules.kit.spelling import cased_like, slip
 from moos_lint.semantics.catalogue import catalogue_for, text_format_app, text_format_schema
 
 _WORD = re.compile(r"[a-z_][a-z0-9_]*")
@@ -265,7 +269,9 @@ def check(ctx):
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
-            if len(close) == 1:
+            # a key an older release read is most often renamed (`max_time`, now
+            # `halt_max_time`): the one close key is what the author meant
+            if len(close) == 1 and (old is not None or slip(written, close[0])):
                 fix = Fix(f"respell as `{close[0]}`", (Edit(span, close[0]),))
             yield ctx.report(p.key_span, msg + f" ({app.provenance})", line=p.line, fix=fix)
     schema = text_format_schema()
@@ -278,7 +284,7 @@ def check(ctx):
             fix = None
             if close:
                 msg += "; did you mean " + " or ".join(f"`{c}`" for c in close) + "?"
-            if len(close) == 1:
+            if len(close) == 1 and slip(f.name, close[0]):
                 fix = Fix(f"respell as `{close[0]}`", (Edit(f.name_span, close[0]),))
             src = schema.sources.get(message, "")
             yield ctx.report(f.name_span, msg + f" ({app.provenance}; {src})", line=f.line, fix=fix)
