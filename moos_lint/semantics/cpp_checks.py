@@ -19,7 +19,7 @@ from moos_lint.frontends.cpp.model import AppModel, GeodesyCall, Publication
 from moos_lint.frontends.cpp.names import axis_of, words
 from moos_lint.semantics.catalogue import COMMAND_KEY_SUFFIX, TEMPLATE_MAIL_KEYS, UNASKED_MAIL
 from moos_lint.semantics.process_names import PREFIXED, placeholder, prefix_problem
-from moos_lint.semantics.variables import STANDARD_ACTUATORS
+from moos_lint.semantics.variables import STANDARD_ACTUATORS, scoped_to_app
 
 Finding = tuple[Span, str]
 UPPER_SNAKE = re.compile(r"^[A-Z][A-Z0-9_]*$")
@@ -694,9 +694,12 @@ def _flat(text: str) -> str:
     return " ".join(text.split())
 
 
-def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[Finding]:
+def variable_name_case(
+    app: AppModel, allow: tuple[str, ...] = (), own_apps: frozenset[str] = frozenset()
+) -> Iterator[Finding]:
     """Each name once per app, at its first place (published before subscribed to), with
-    the number of other places that use it."""
+    the number of other places that use it; a name joined to the name of one of
+    ``own_apps`` (the repository's apps) takes that app's case (:func:`scoped_to_app`)."""
     places: dict[str, list[tuple[Span, str]]] = {}
     items: list[tuple[Any, str]] = [(p, "published") for p in app.publications]
     items += [(s, "subscribed to") for s in app.subscriptions]
@@ -709,6 +712,8 @@ def variable_name_case(app: AppModel, allow: tuple[str, ...] = ()) -> Iterator[F
             continue
         if re.search(r"\s", name) or any(fnmatch.fnmatchcase(name, a) for a in allow):
             continue  # not a variable name (a message or a format), or allowed
+        if scoped_to_app(name, own_apps):
+            continue  # `iWhoiMicroModem_CMD`: the app's name decides its case
         spans = places.setdefault(name, [])
         if all((s.path, s.line) != (item.name_span.path, item.name_span.line) for s, _ in spans):
             spans.append((item.name_span, verb))

@@ -76,7 +76,14 @@ concatenations of known parts, string constants and members assigned one
 literal, and `#define` string macros. Names built at run time are never
 reported, nor names built from a member the configuration sets
 (`m_sVehicleName = "UnNamed"` before `GetConfigurationParam("VehicleName",
-m_sVehicleName)`: the literal is only a default). Each name is reported once
+m_sVehicleName)`: the literal is only a default). Nor is an upper-case name
+joined to the name of one of the repository's own apps, as the app is named,
+in C++ or in a mission (`iWhoiMicroModem_CMD`, which iWhoiMicroModem registers
+as `GetAppName() + "_CMD"`): its publishers and subscribers must write the
+app's case. The repository's apps are those of the linted C++ and the C++
+folders named as processes are (`src/iWhoiMicroModem`). Core MOOS's apps
+upper-case such names themselves (`PHELMIVP_CMD`), so a stock app's name is
+not taken. Each name is reported once
 per app, at its first place, with the number of other places that use it.
 
 A name that a mission gives through a configuration key of one of the
@@ -128,12 +135,14 @@ from moos_lint.files.test_code import is_test_code
 from moos_lint.frontends.nsplug import derived
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.kit.per_run import per_run
+from moos_lint.semantics.process_names import PREFIXED
 from moos_lint.semantics.variables import (
     PUBLISH,
     bare_name,
     bhv_variables,
     moos_variables,
     one_alternative,
+    scoped_to_app,
     unit_variables,
     upper_vehicle_prefixes,
 )
@@ -175,6 +184,8 @@ def check(ctx):
             continue
         if _built_by_app(ctx, bare) or _built_by_macro(ctx, bare):
             continue  # `ACK_MESSAGE_abe`: an app's prefix and a vehicle's name as given
+        if scoped_to_app(bare, own_apps(ctx.run)):
+            continue  # `iWhoiMicroModem_CMD`: the app's name decides its case
         if ref.param.endswith("condition") and one_alternative(ref) and not _posted(ctx, bare):
             continue  # `(DEPLOY = true) or (alpha = one)`: an alternative nothing posts
         if vehicles is None:
@@ -386,5 +397,30 @@ def cpp_check(ctx):
     from moos_lint.semantics.cpp_checks import variable_name_case
 
     yield from cpp_findings(
-        ctx, variable_name_case, allow=tuple(str(a) for a in ctx.options.get("allow", []))
+        ctx,
+        variable_name_case,
+        allow=tuple(str(a) for a in ctx.options.get("allow", [])),
+        own_apps=own_apps(ctx.run),
     )
+
+
+def own_apps(run) -> frozenset[str]:
+    """The names of the repository's own apps: the process names of the apps of the
+    run's C++, and the names of its C++ folders and of the folders above them that are
+    process names (``src/iWhoiMicroModem/src``: an app's folder is named for it, also
+    where moos-lint cannot tell the app's name from its code)."""
+
+    def gather(units) -> frozenset[str]:
+        names: set[str] = set()
+        for u in units:
+            if u.cpp is None:
+                continue
+            if u.cpp.process_name:
+                names.add(u.cpp.process_name)
+            folder = os.path.normpath(u.cpp.folder)
+            for name in (os.path.basename(folder), os.path.basename(os.path.dirname(folder))):
+                if PREFIXED.match(name):
+                    names.add(name)
+        return frozenset(names)
+
+    return per_run(run, "own-app-names", gather)
