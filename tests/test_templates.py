@@ -5,9 +5,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from moos_lint.core.config import resolve_settings
 from moos_lint.core.engine import lint_paths
 from moos_lint.files.discovery import discover, kind_of
+from moos_lint.frontends.parsers.nodes import has_macro, has_placeholder
 
 MISSION = """ServerHost = localhost
 ServerPort = 9000
@@ -88,3 +91,21 @@ def test_a_file_a_launch_script_makes_with_nsplug_is_not_linted_twice(tmp_path):
     assert str(tmp_path / "Expand") in found.ignore_files  # an edit of the script is noticed
     given = discover([tmp_path / "K200.moos"], [], str(tmp_path)).files
     assert [Path(f).name for f in given] == ["K200.moos"]
+
+
+@pytest.mark.parametrize(
+    ("text", "placeholder"),
+    [
+        ("speed = {{SPEED}}", True),
+        ("start_pos = x={{ cfg.start_x }}, y=0", True),
+        ("points = $(POINTS)", False),  # nsplug's own macro: has_macro alone
+        # uTimerScript's arithmetic is no placeholder: the value is judged as written
+        ("event = var=POST_COUNT, val={{$[TCOUNT]+1}/2}, time=0.11", False),
+        ("val = {{$[A]+1}*{$[B]+2}}", False),
+    ],
+)
+def test_a_generator_placeholder_is_told_from_timer_arithmetic(text, placeholder):
+    """Another generator's ``{{NAME}}`` placeholder is left unjudged, as an nsplug macro
+    is; uTimerScript's ``{...}`` arithmetic is not one."""
+    assert has_placeholder(text) is placeholder
+    assert has_macro(text) is (placeholder or "$(" in text)

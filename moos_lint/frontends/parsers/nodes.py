@@ -64,8 +64,21 @@ CONFLICT_OPENED = re.compile(r"^<{7}(?:[ \t]|$)", re.M)
 
 
 def has_macro(text: str) -> bool:
-    """True when ``text`` still holds an unexpanded nsplug macro."""
-    return "$(" in text or "%(" in text
+    """True when ``text`` still holds an unexpanded nsplug macro, or a placeholder of
+    another template generator (:func:`has_placeholder`)."""
+    return "$(" in text or "%(" in text or has_placeholder(text)
+
+
+#: a placeholder of a template generator other than nsplug: ``{{SPEED}}``, ``{{ cfg.speed }}``
+#: (not uTimerScript's arithmetic, ``{{$[TCOUNT]+1}/2}``)
+_PLACEHOLDER = re.compile(r"\{\{\s*[A-Za-z_][\w.]*\s*\}\}")
+
+
+def has_placeholder(text: str) -> bool:
+    """True when ``text`` holds a placeholder of a template generator other than nsplug
+    (``speed = {{SPEED}}``, which a script fills in with ``str.replace`` or Jinja
+    before the file is launched)."""
+    return "{{" in text and _PLACEHOLDER.search(text) is not None
 
 
 @dataclass(slots=True)

@@ -57,7 +57,10 @@ MOOS-IvP caveats, deliberately not reported:
   would find it (`*.bhv`): behavior files deployed to the vehicle or written by
   a tool, kept out of the repository on purpose;
 - pMarineViewer's `tiff_file`: the viewer looks for it in the MOOS-IvP data
-  folder and in IVP_IMAGE_DIRS, not only next to the mission.
+  folder and in IVP_IMAGE_DIRS, not only next to the mission;
+- any file named by the template of another generator, a mission with
+  `{{NAME}}` placeholders (`speed = {{SPEED}}`): a script fills it in and
+  writes the mission, with its behavior file, where it launches it.
 """
 
 import fnmatch
@@ -74,7 +77,7 @@ from moos_lint.files.launch import (
     nsplug_calls,
     project_folder,
 )
-from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.frontends.parsers.nodes import has_macro, has_placeholder
 from moos_lint.rules.hygiene._shared import exclusive, names_match
 from moos_lint.rules.kit.declare import Scope, rule
 
@@ -140,6 +143,10 @@ def check(ctx):
     wanted = _params(ctx.options.get("file-params", FILE_PARAMS))
     folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
     seen: set[int] = set()
+    if any(has_placeholder(line.text) for line in ctx.expansion.lines):
+        # the template of a generator (`speed = {{SPEED}}`): the script writes the mission
+        # and its behavior file elsewhere, where the paths it names hold
+        return
     for run in ctx.moos.runs:
         keys = wanted.get(run.program.lower())
         if not keys or not run.name or has_macro(run.name):

@@ -120,7 +120,8 @@ Write the value in the form the parser reads: `0.5`, `true`,
 None.
 
 MOOS-IvP caveats, deliberately not reported:
-- values holding an nsplug macro;
+- values holding an nsplug macro, or the `{{NAME}}` placeholder of another
+  template generator (`speed = {{SPEED}}`, filled in by a script);
 - parameters whose parser the catalogue does not tie to one of these
   setters, fixed word sets or geometry parsers (other enums, and polygons
   read by other code, such as contact filters' regions, are not judged);
