@@ -143,10 +143,6 @@ def check(ctx):
     wanted = _params(ctx.options.get("file-params", FILE_PARAMS))
     folders = launch_folders(ctx.unit.path, project_folder(ctx.settings, ctx.unit.path))
     seen: set[int] = set()
-    if any(has_placeholder(line.text) for line in ctx.expansion.lines):
-        # the template of a generator (`speed = {{SPEED}}`): the script writes the mission
-        # and its behavior file elsewhere, where the paths it names hold
-        return
     for run in ctx.moos.runs:
         keys = wanted.get(run.program.lower())
         if not keys or not run.name or has_macro(run.name):
@@ -165,7 +161,7 @@ def check(ctx):
                     name = name[1:-1]
                 if not name:
                     continue
-                if find_relative(name, folders):
+                if find_relative(name, folders) or _templated(ctx):
                     continue
                 missing = _missing_template(folders[0], name)
                 if missing is not None:
@@ -193,6 +189,13 @@ def check(ctx):
                     f"`{p.key} = {name}`: no such file {where} ({os.path.basename(ctx.unit.path)})",
                     line=p.line,
                 )
+
+
+def _templated(ctx) -> bool:
+    """Whether the mission is the template of another generator (``speed = {{SPEED}}``):
+    the script that fills it in writes the mission, and the files it names, where it
+    launches it. (Asked only of a file name not found: most missions have none.)"""
+    return any(has_placeholder(line.text) for line in ctx.expansion.lines)
 
 
 def _kept_out(name: str, folders: list[str]) -> bool:
