@@ -759,6 +759,10 @@ _DURATION_DEFAULT = re.compile(r"^\s*m_duration\s*=\s*(-?[\d.]+)\s*;", re.MULTIL
 _DOMAIN_NEEDED = re.compile(
     r"if\s*\(\s*!\s*m_domain\.hasDomain\(\s*\"(\w+)\"\s*\)\s*\)\s*\{?\s*postEMessage\("
 )
+#: a behavior that ends by itself (not only when its duration runs out): it calls
+#: IvPBehavior's ``setComplete()``, which posts the endflags (IvPBehavior.cpp), or posts
+#: its endflags itself (BHV_LegRun: ``postFlags(m_end_flags)``)
+_COMPLETES = re.compile(r"\bsetComplete\s*\(|\bpostFlags\s*\(\s*(?:\"endflags\"|m_end_flags\b)")
 _DELEGATE_MEMBER = re.compile(r"\b(m_\w+)\s*(?:\.|->)\s*setParam\s*\(\s*param\b")
 _TAIL = re.compile(r"\+\s*\"([A-Z0-9_]+)\"\s*\)?$")
 
@@ -947,6 +951,9 @@ def generate(src: str, commit: str = "", repository: str = "", strict: bool = Tr
             line = text.count("\n", 0, dur.start(1)) + 1
             at = f"{_rel(path, src)}:{line}"
             entry["defaults"] = {"duration": {"value": dur.group(1), "at": at}}
+        completes = _completes(chain, class_file, src)
+        if completes is not None:
+            entry["completes"] = completes
         needed = {}
         for m in _DOMAIN_NEEDED.finditer(text):
             line = text.count("\n", 0, m.start()) + 1
@@ -1381,6 +1388,22 @@ def _forms(cf, src: str) -> dict[str, dict[str, str]]:
 
 def _param_like(p: str) -> bool:
     return bool(re.match(r"^[a-z0-9_@:.\[\]+-]+$", p)) and len(p) < 60
+
+
+def _completes(chain: list[str], class_file: dict[str, str], src: str) -> str | bool | None:
+    """Where a behavior of the class ``chain`` ends by itself (the first ``setComplete()``
+    or post of its endflags in its class or a base other than IvPBehavior, as
+    ``path:line``), False when none of them does (it ends only when a duration runs out,
+    or when a spawned behavior's contact is gone), None when a source is not found."""
+    for cls in chain[:-1]:  # (the last is IvPBehavior)
+        path = class_file.get(cls)
+        if path is None or not is_cpp_source(path):
+            return None
+        for n, line in enumerate(_read(path).splitlines(), 1):
+            code = line.split("//", 1)[0]
+            if _COMPLETES.search(code) and "::setComplete" not in code:  # (not its definition)
+                return f"{_rel(path, src)}:{n}"
+    return False
 
 
 def _bhv_chain(cls: str, bases: dict[str, list[str]]) -> list[str]:

@@ -196,6 +196,21 @@ def test_the_domains_a_behavior_halts_without_come_from_its_run_state():
     assert cat.behavior("BHV_AvoidCollision").domains == {}
 
 
+def test_whether_a_behavior_ends_by_itself_comes_from_its_sources():
+    """``completes``: the line where a kind calls setComplete() (or posts its endflags),
+    False for a kind that ends only when its duration runs out."""
+    cat = stock()
+    for kind in ("BHV_ConstantDepth", "BHV_ConstantSpeed", "BHV_StationKeep", "BHV_Timer"):
+        assert cat.behavior(kind).completes is False, kind
+    for kind, where in (
+        ("BHV_Waypoint", "BHV_Waypoint.cpp"),
+        ("BHV_LegRun", "BHV_LegRun.cpp"),  # postFlags(m_end_flags)
+        ("BHV_Shadow", "IvPContactBehavior.cpp"),  # a base class ends it
+    ):
+        at = cat.behavior(kind).completes
+        assert isinstance(at, str) and _EVIDENCE.search(at) and where in at, kind
+
+
 def test_the_helm_posts_mode_only_as_its_set_blocks_name_it():
     # ModeSet::evaluate posts the variables its set blocks name: the mission model reads
     # them from the behavior files, and the catalogue does not list MODE for every helm

@@ -158,6 +158,10 @@ class BehaviorInfo:
     #: the helm domain variables the behavior needs (``depth``) -> the MOOS-IvP line where,
     #: running without it, it posts BHV_ERROR and so halts the helm
     domains: dict[str, str] = field(default_factory=dict)
+    #: where the behavior ends by itself (the MOOS-IvP line that calls ``setComplete()``
+    #: or posts its endflags); False when it never does (it ends, and posts its endflags,
+    #: only when its duration runs out); None when not known (a behavior of no catalogue)
+    completes: str | bool | None = None
 
 
 class CatalogueError(Exception):
@@ -377,6 +381,14 @@ def single_valued(form: str) -> str | None:
     return "last"
 
 
+def _completes(d: dict[str, Any], commit: str) -> str | bool | None:
+    """A stock behavior's ``completes`` fact: where it ends by itself, or False."""
+    at = d.get("completes")
+    if isinstance(at, str):
+        return f"moos-ivp {commit[:8]} {at}"
+    return False if at is False else None
+
+
 def _defaults(d: dict[str, Any], commit: str) -> dict[str, tuple[str, str]]:
     """A stock behavior's own parameter defaults, each with the MOOS-IvP line that sets it."""
     out = {}
@@ -433,6 +445,7 @@ def stock() -> Catalogue:
                 domains={
                     str(k): f"moos-ivp {commit[:8]} {at}" for k, at in d.get("domains", {}).items()
                 },
+                completes=_completes(d, commit),
             )
         )
     for name in data.get("editor_behaviors", {}):
