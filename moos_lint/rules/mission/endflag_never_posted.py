@@ -14,7 +14,8 @@ duration to end it:
   once: behavior-completes-at-once reports those).
 
 It reports such a flag only where it matters: a condition of the mission (a
-behavior's, a mode's or an app's) reads the flag's variable, and nothing
+behavior's other than its own, a mode's or an app's) reads the flag's
+variable, and nothing
 else in the mission posts the variable with the flag's value (another
 behavior's flag, an `initialize`, a timer script or a button). A flag that only
 repeats another publisher, or that nobody reads, is left alone: it does
@@ -38,6 +39,14 @@ Behavior = BHV_ConstantDepth
   depth     = 10
   duration  = no-time-limit
   endflag   = SURFACED = true    // never posted
+}
+
+Behavior = BHV_Timer
+{
+  name      = at_surface
+  condition = SURFACED = true    // never true
+  duration  = 60
+  endflag   = SURFACED = false
 }
 ```
 
@@ -89,7 +98,7 @@ def check(ctx):
                 continue
             kind = bhv.kind.strip()
             info = model.catalogue.behavior(kind)
-            if info is None or info.completes is not False or kind.lower() in repo_classes(ctx):
+            if info is None or info.completes is not False:
                 continue
             if bhv.get("templating"):
                 continue  # a spawned behavior ends when its contact is gone
@@ -103,6 +112,8 @@ def check(ctx):
                 if found is None:
                     continue
                 var, waiting = found
+                if kind.lower() in repo_classes(ctx):
+                    break  # the project's own copy of the kind may end (asked only now)
                 yield ctx.report(
                     flag.value_span,
                     f"`endflag = {flag.value.strip()}`: `{name}` ({kind}) never ends by itself "
