@@ -1294,13 +1294,19 @@ def _guard_form(lines: list[str], n: int, rest: str) -> str | None:
     beyond); None for any other shape (a guard without ``!isNumber`` lets words through
     as 0, and is not read).
     """
-    if rest.split("//", 1)[0].strip() not in (") {", "){"):
+    # (one key of the branch, or one of its alternatives: `(param == "radius") ||
+    # (param == "capture_radius")) {`)
+    opening = "".join(_OTHER_KEY.sub("", rest.split("//", 1)[0]).split())
+    if opening not in ("){", ")){"):
         return None
     code = [ln.split("//", 1)[0].strip() for ln in lines[n : n + 4]]
-    k, local, value = 0, None, None
+    k, local, value, top = 0, None, None, False
     m = _ATOF_LOCAL.match(code[0]) if code else None
     if m:
         local, value, k = m.group(1), m.group(2), 1
+    else:  # a number the function reads before its branches (BHV_Waypoint's ``dval``)
+        local, value = _top_local(lines, n) or (None, None)
+        top = local is not None
     cond = _condition(code[k]) if k < len(code) else None
     if cond is None or code[k].startswith("else"):
         return None
@@ -1329,13 +1335,36 @@ def _guard_form(lines: list[str], n: int, rest: str) -> str | None:
             if hi is not None:
                 return None
             hi = (c, op == ">")
-    if not number:
+    # without ``!isNumber``, a word reads as 0: the guard tells the form only when it
+    # rejects 0 (``if(dval <= 0) return(false)``: BHV_Waypoint's ``radius``)
+    if not number and (not top or hi is not None or lo != (0.0, False)):
         return None
     if hi is None and lo in (None, (0.0, True), (0.0, False)):
         return {None: "number", (0.0, True): "nonneg", (0.0, False): "positive"}[lo]
     low = f"{'[' if lo[1] else '('}{lo[0]:g}" if lo else "("
     high = f"{hi[0]:g}{']' if hi[1] else ')'}" if hi else ")"
     return f"range:{low},{high}"
+
+
+#: another key the branch takes alike (``|| (param == "capture_radius")``)
+_OTHER_KEY = re.compile(r'\|\|\s*\(\s*\w+\s*==\s*"[^"]*"\s*\)')
+_SET_PARAM = re.compile(r"::setParam\s*\(\s*(?:const\s+)?(?:std::)?string\s*&?\s*\w+\s*,")
+
+
+def _top_local(lines: list[str], n: int) -> tuple[str, str] | None:
+    """(local, value) for ``double dval = atof(value.c_str());`` among the first lines of
+    the ``setParam`` that line ``n`` (1-based) lies in, before its first branch."""
+    for i in range(n - 2, max(-1, n - 600), -1):
+        if _SET_PARAM.search(lines[i]):
+            for line in lines[i + 1 : min(n - 1, i + 8)]:
+                code = line.split("//", 1)[0].strip()
+                m = _ATOF_LOCAL.match(code)
+                if m:
+                    return m.group(1), m.group(2)
+                if code.startswith(("if", "else")):
+                    return None
+            return None
+    return None
 
 
 def _forms(cf, src: str) -> dict[str, dict[str, str]]:

@@ -133,3 +133,49 @@ def guard_form_of(text: str) -> str | None:
 )
 def test_guard_forms(branch, form):
     assert guard_form_of(branch) == form
+
+
+SET_PARAM = """bool BHV_Waypoint::setParam(string param, string param_val)
+{
+  double dval = atof(param_val.c_str());
+  string param_val_lower = tolower(param_val);
+
+  if((param == "radius") || (param == "capture_radius")) {
+    if(dval <= 0)
+      return(false);
+    m_capture_radius = dval;
+    return(true);
+  }
+  else if(param == "nm_radius") {
+    if(dval < 0)
+      return(false);
+    m_nm_radius = dval;
+    return(true);
+  }
+  else if(param == "patience") {
+    if((dval < 1) || (dval > 99) || !isNumber(param_val))
+      return(false);
+    m_patience = dval;
+    return(true);
+  }
+"""
+
+
+@pytest.mark.parametrize(
+    ("key", "form"),
+    [
+        # the number read before the branches; a word reads as 0, which `<= 0` rejects
+        ("radius", "positive"),
+        ("capture_radius", "positive"),  # the branch's other key
+        # `< 0` lets a word through as 0: not read
+        ("nm_radius", None),
+        ("patience", "range:[1,99]"),
+    ],
+)
+def test_guard_forms_of_a_number_read_before_the_branches(key, form):
+    """BHV_Waypoint, BHV_Loiter and BHV_PeriodicSpeed read ``dval`` once, at the top of
+    setParam, and guard it in each key's branch."""
+    lines = SET_PARAM.splitlines()
+    n = next(i for i, line in enumerate(lines, 1) if f'"{key}")' in line)
+    text = lines[n - 1]
+    assert _guard_form(lines, n, text[text.index(f'"{key}"') + len(key) + 2 :]) == form

@@ -47,7 +47,8 @@ Keep one line, with the value meant.
 None.
 
 MOOS-IvP caveats, deliberately not reported: lines in different branches of
-an nsplug `#ifdef`, a value holding a macro, a boolean `toggle`, two lines
+an nsplug `#ifdef`, lines on the two sides of a merge conflict left in the
+file (bhv-invalid-line reports its markers), a value holding a macro, a boolean `toggle`, two lines
 with the same value, and two words one branch of the parser takes alike
 (uTimerScript's `reset_time = end` and `reset_time = all-posted` both set it
 to 0, TS_MOOSApp.cpp: the catalogue records such words with the key's form).
@@ -59,7 +60,7 @@ import os
 from typing import Any
 
 from moos_lint.files.diagnostics import Severity, Subject
-from moos_lint.frontends.parsers.nodes import has_macro
+from moos_lint.frontends.parsers.nodes import conflict_marker, has_macro
 from moos_lint.rules.kit.declare import Kind, Scope, rule
 from moos_lint.rules.mission._behaviors import lookup
 from moos_lint.rules.mission.invalid_parameter_value import problem
@@ -121,6 +122,8 @@ def _repeats(ctx, params, owner: str, forms: dict, single: dict, first_at: str, 
             continue  # two words the parser stores alike (`end`, `all-posted`)
         if earlier.line.excludes(p.line):
             continue  # two branches of one #ifdef
+        if _across_conflict(ctx, earlier.line, p.line):
+            continue  # the two sides of a merge conflict (bhv-invalid-line reports it)
         where = f"line {earlier.line.lineno}"
         if earlier.line.path != p.line.path:
             where += f" of {os.path.basename(earlier.line.path)}"
@@ -153,3 +156,16 @@ def _rejected(form: str, value: str) -> bool:
     if form.startswith("clip:") or form == "true_word":
         return False  # taken: as the bound, or as false (`perpetual = yes`)
     return problem(form, value) is not None
+
+
+def _across_conflict(ctx, first, second) -> bool:
+    """Whether a merge-conflict marker (``=======``) stands between two lines of one file:
+    they are the two sides of a conflict, and resolving it keeps one."""
+    if first.path != second.path:
+        return False
+    return any(
+        line.path == first.path
+        and first.lineno < line.lineno < second.lineno
+        and conflict_marker(line.text)
+        for line in ctx.expansion.lines
+    )

@@ -20,9 +20,10 @@ as recorded in the catalogue with the source line that enforces it:
   atof(val.c_str()); if((dval < 1) || (dval >= 360) || (!isNumber(val)))
   return(false);`): the PeriodicSurface behavior's `period` must be a number
   above 0, the HeadingChange behavior's `heading_delta` lie in [1, 360), the
-  StationKeep behavior's `outer_radius` be above 0 (42 such keys in
-  MOOS-IvP); a guard without `!isNumber` lets a word through as 0, and is not
-  read;
+  StationKeep behavior's `outer_radius` be above 0; the number may be read
+  once, before the branches (the Waypoint behavior's `radius`, `if(dval <= 0)
+  return(false)`); a guard without `!isNumber` lets a word through as 0, and
+  is read only where it rejects 0;
 - a number a behavior clips to bounds without a word (`m_desired_depth =
   vclip_min(dval, 0)`): the ConstantDepth behavior's `depth = -10` runs at the
   surface, taken as 0 (a depth is positive down; the conventions' Z is its
