@@ -17,7 +17,9 @@ digits and `_`, wherever a configuration value names a variable:
   in `moos_lint/semantics/variables.py`).
 
 Each name is reported once per file, at its first place, with the number of
-other places in the file (and its includes) that use it. In a mission, when
+other places in the file (and its includes) that use it. A boolean written
+where the key takes a variable's name (`duration_reset = true`, which the
+helm reads as a variable named `true`) is reported saying so. In a mission, when
 nothing publishes the name as written but an app or behavior of the mission
 publishes it in upper case (`Log = Nav_Speed` beside uSimMarine's `NAV_SPEED`),
 the finding says who: the name is then not only of the wrong style, it reads
@@ -148,6 +150,8 @@ from moos_lint.semantics.variables import (
 )
 
 _UPPER = re.compile(r"[A-Z0-9_]*")
+#: a value where a variable's name belongs (`duration_reset = true`)
+_BOOLEANS = frozenset({"true", "false"})
 _UPPER_WILD = re.compile(r"[A-Z0-9_*?]*")
 
 
@@ -197,6 +201,13 @@ def check(ctx):
             message = (
                 f"MOOS variable `{ref.name}` is not UPPER_SNAKE_CASE: {where} takes names "
                 "literally, so the wildcard matches no variable"
+            )
+        elif bare.lower() in _BOOLEANS:
+            # `duration_reset = true`: the helm bites a variable's name off the value
+            message = (
+                f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE: a boolean "
+                f"where `{ref.param}` takes a variable's name, so it names a variable "
+                f"called `{ref.name}`"
             )
         else:
             message = f"MOOS variable `{ref.name}` ({where}) is not UPPER_SNAKE_CASE"
