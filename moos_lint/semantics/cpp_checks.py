@@ -510,6 +510,19 @@ def decimal_comma(app: AppModel) -> Iterator[tuple[Span, str, Fix]]:
         )
 
 
+def case_never_matches(app: AppModel) -> Iterator[tuple[Span, str, Fix]]:
+    for c in app.case_mismatches:
+        meant = c.literal.lower() if c.case == "lower" else c.literal.upper()
+        always = "always true" if c.negated else "never true, and its branch never runs"
+        yield (
+            c.span,
+            f"`{c.subject}` is made {c.case} case at line {c.converted_at} "
+            f'(`{c.conversion}`), so comparing it with `"{c.literal}"` is {always}; '
+            f'compare with `"{meant}"`',
+            Fix(f'compare with `"{meant}"`', (Edit(c.span, f'"{meant}"'),)),
+        )
+
+
 def unreachable_branch(app: AppModel) -> Iterator[Finding]:
     for b in app.shadowed_branches:
         where = f" of `{b.function}`" if b.function else ""

@@ -8,6 +8,8 @@ and finishes the value analysis across the repository.
 from __future__ import annotations
 
 import os
+import re
+from typing import Any
 
 from moos_lint.files.source import SourceFile
 from moos_lint.files.suffixes import Kind
@@ -92,3 +94,30 @@ def _own_geodesy(apps: list[AppModel], paths: list[str]) -> None:
         own = [p for p in declared.get(g.function, []) if differs_from_geodesy(g.function, p)]
         if own:
             g.own_signature = tuple(own[0])
+        elif g.receiver and _declared_other_than_geodesy(g, paths, read_bytes):
+            # a method of that name of another class, whose declaration is not among
+            # the linted files (``Geodesy geod;`` of a library elsewhere): not judged
+            g.own_signature = ()
+
+
+def _declared_other_than_geodesy(g: Any, paths: list[str], read: Any) -> bool:
+    """Whether the call's object is declared, in the files of the call's folder, with a
+    type other than CMOOSGeodesy (``Geodesy geod;``, ``MyGeo* m_geo;``)."""
+    name = re.escape(g.receiver.rsplit(".", 1)[-1].rsplit("->", 1)[-1])
+    declaration = re.compile(
+        rb"\b([A-Za-z_][\w:]*)\s*[*&]?\s*\b" + name.encode() + rb"\s*[;=,)\[{(]"
+    )
+    folder = os.path.dirname(g.span.path)
+    for path in paths:
+        if os.path.dirname(path) != folder:
+            continue
+        for m in declaration.finditer(read(path) or b""):
+            kind = m.group(1).rsplit(b"::", 1)[-1]
+            if kind in _NOT_TYPES:
+                continue
+            return kind != b"CMOOSGeodesy"
+    return False
+
+
+#: words that come before a name without being its type (``return geod;``)
+_NOT_TYPES = frozenset({b"return", b"delete", b"new", b"sizeof", b"case", b"goto", b"else"})

@@ -23,6 +23,7 @@ from moos_lint.frontends.cpp.facts import (
 )
 from moos_lint.frontends.cpp.model import (
     Assignment,
+    CaseMismatch,
     ConfigParam,
     CppClass,
     CppFile,
@@ -1504,7 +1505,11 @@ class Extractor:
             given = [a for a in argv if a.type != "comment"]
             if len(given) == 4:
                 arguments = [(text(a), spans.of(a)) for a in given]
-                out.geodesy_calls.append(GeodesyCall(name, arguments, spans.of(call)))
+                obj = fn.child_by_field_name("argument") if fn.type == "field_expression" else None
+                receiver = text(obj).removeprefix("this->") if obj is not None else None
+                out.geodesy_calls.append(
+                    GeodesyCall(name, arguments, spans.of(call), None, receiver)
+                )
         elif name in BAUD_CALLS:
             out.io.append(IOUse("serial", name, spans.of(call)))
         elif (name in SOCKET_CALLS and fn.type == "identifier") or name in VEHICLE_LINK_CALLS:
@@ -1572,6 +1577,50 @@ class Extractor:
         op = cmp.child_by_field_name("operator")
         negated = op is not None and op.type == "!="
         self._compared(cmp, left, lit, right, prefix=False, negated=negated)
+        if left.type == "identifier" and re.search(r"[A-Za-z]", lit):
+            self._case_mismatch(cmp, text(left), lit, right, negated)
+
+    def _case_mismatch(self, cmp: Any, var: str, lit: str, lit_node: Any, negated: bool) -> None:
+        """``param == "TSS_FILE"`` after ``param = tolower(...)``: the last change of
+        ``param`` before the comparison, in its function, made its case one the literal
+        cannot have (:data:`_CASE_CHANGES`); any other assignment leaves it unknown."""
+        fn = self.pf.function_of(cmp)
+        if fn is None or in_if0(cmp):
+            return
+        before = self.pf.data[fn.start_byte : cmp.start_byte]
+        name = re.escape(var).encode()
+        last = None
+        for m in re.finditer(rb"\b" + name + rb"\s*=(?!=)\s*([\w:]+)?\s*(\()?", before):
+            last = m
+        if last is None or last.group(1) is None or last.group(2) is None:
+            return  # (not assigned in the function, or from no call: ``param = (x)``)
+        change = _CASE_CHANGES.get(last.group(1).decode())
+        if change is None:
+            return
+        # after the conversion: the variable changed in place, or handed to code that may
+        after = before[last.end() :]
+        if re.search(
+            rb"\b" + name + rb"\b\s*(?:[-+]?=(?!=)|\.(?!c_str|size|length|find)\w+\s*\()", after
+        ):
+            return
+        if re.search(rb"[(,]\s*&?\s*" + name + rb"\s*[,)]", after):
+            return
+        wrong = lit != (lit.lower() if change == "lower" else lit.upper())
+        if not wrong:
+            return
+        meant = lit.lower() if change == "lower" else lit.upper()
+        condition = _condition_of(cmp)
+        if (
+            condition is not None
+            and f'"{meant}"'.encode() in self.pf.data[condition.start_byte : condition.end_byte]
+        ):
+            return  # ``param == "NAME" || param == "name"``: the other side holds
+        line = self.pf.data[: fn.start_byte + last.start()].count(b"\n") + 1
+        self.out.case_mismatches.append(
+            CaseMismatch(
+                var, lit, last.group(1).decode(), change, line, self.pf.spans.of(lit_node), negated
+            )
+        )
 
     def _compared(
         self,
@@ -2080,3 +2129,29 @@ _RC_MODULE = re.compile(r"rc/(?:mpu|servo|motor|adc|encoder\w*|i2c|spi|uart|pwm|
 
 #: Qt headers included by class name that only a program with windows includes
 _QT_WINDOWS = frozenset({"qapplication", "qmainwindow", "qwidget", "qguiapplication"})
+
+
+#: calls that return a string in one case: MOOS-IvP's MBUtils, core MOOS's
+#: MOOSUtilityFunctions (its in-place overloads return nothing), boost
+_CASE_CHANGES = {
+    "tolower": "lower",
+    "toupper": "upper",
+    "MOOSToLower": "lower",
+    "MOOSToUpper": "upper",
+    "boost::to_lower_copy": "lower",
+    "boost::to_upper_copy": "upper",
+    "boost::algorithm::to_lower_copy": "lower",
+    "boost::algorithm::to_upper_copy": "upper",
+}
+
+
+def _condition_of(n: Any) -> Any:
+    """The whole condition a comparison is part of (up to its ``if``, loop or
+    statement), or None."""
+    while n.parent is not None and n.parent.type in (
+        "binary_expression",
+        "parenthesized_expression",
+        "unary_expression",
+    ):
+        n = n.parent
+    return n

@@ -188,6 +188,20 @@ class IOUse:
 
 
 @dataclass(slots=True)
+class CaseMismatch:
+    """A string compared with a literal that its case conversion rules out: after
+    ``param = tolower(...)``, ``param == "TSS_FILE"`` is never true."""
+
+    subject: str  # the variable compared (``param``)
+    literal: str  # the literal as written (``TSS_FILE``)
+    conversion: str  # the call that made its case (``tolower``)
+    case: str  # "lower" or "upper"
+    converted_at: int  # the line of that call
+    span: Span  # the literal, quotes included
+    negated: bool = False  # ``!=``: always true
+
+
+@dataclass(slots=True)
 class DecimalComma:
     """A number written with a decimal comma (``0,514444``), which C++ reads as the comma
     operator: the expression up to the comma, then the digits after it, thrown away."""
@@ -224,6 +238,9 @@ class GeodesyCall:
     #: the parameter names of a function of the same name that the repository declares
     #: itself, when they differ from CMOOSGeodesy's (its own order, which the call follows)
     own_signature: tuple[str, ...] | None = None
+    #: the object the call is made on, as written (``geod`` in ``geod.LatLong2LocalUTM``),
+    #: for a member call
+    receiver: str | None = None
 
 
 @dataclass(slots=True)
@@ -252,6 +269,7 @@ class CppFile:
     geodesy_calls: list[GeodesyCall] = field(default_factory=list)
     decimal_commas: list[DecimalComma] = field(default_factory=list)
     shadowed_branches: list[ShadowedBranch] = field(default_factory=list)
+    case_mismatches: list[CaseMismatch] = field(default_factory=list)
     trig_uses: list[TrigUse] = field(default_factory=list)
     #: calls of MOOS's angle functions (``angle360(h)``, ``MOOSDeg2Rad(h)``) with their
     #: argument's value
@@ -319,6 +337,10 @@ class AppModel:
     @property
     def shadowed_branches(self) -> list[ShadowedBranch]:
         return [b for f in self.files for b in f.shadowed_branches]
+
+    @property
+    def case_mismatches(self) -> list[CaseMismatch]:
+        return [c for f in self.files for c in f.case_mismatches]
 
     @property
     def mail_keys(self) -> list[MailKey]:

@@ -11,7 +11,10 @@ the reverse. A name that says nothing (`a`, `tmp`) or two things
 arguments are named alike. A function of the same name that the repository
 declares itself with other parameters (`LatLong2LocalUTM(double Lat, double
 Lon, double &x, double &y)`) has its own order: calls of that name are left
-alone.
+alone. So is a call on an object the app declares of another class than
+CMOOSGeodesy (`Geodesy geod;` beside `geod.LatLong2LocalGrid(...)`), even where
+that class's own declaration is not among the linted files (a library of the
+repository elsewhere, a partial checkout).
 
 ## Why is this bad?
 MOOS's local grid is East-North-Up: x is east, y is north. CMOOSGeodesy's
