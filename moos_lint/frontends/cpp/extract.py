@@ -794,6 +794,9 @@ class Extractor:
         self._places: dict[int, dict[int, int]] = {}
         #: a function's first byte -> how its locals hold a message's value (_value_read)
         self._reads_in: dict[int, tuple[dict[str, str], set[str]]] = {}
+        #: a function's first byte -> the variables it sets from a case conversion, and
+        #: the cases they are set to
+        self._case_set: dict[int, dict[bytes, set[str]]] = {}
 
     # -- names --------------------------------------------------------------
     def name(self, n: Any, depth: int = 0) -> Name:
@@ -1585,7 +1588,18 @@ class Extractor:
         ``param`` before the comparison, in its function, made its case one the literal
         cannot have (:data:`_CASE_CHANGES`); any other assignment leaves it unknown."""
         fn = self.pf.function_of(cmp)
-        if fn is None or in_if0(cmp):
+        if fn is None:
+            return
+        converted = self._case_set.get(fn.start_byte)
+        if converted is None:  # (one search of the function for all its comparisons)
+            converted = {}
+            for m in _CASE_SET.finditer(self.pf.data[fn.start_byte : fn.end_byte]):
+                converted.setdefault(m.group(1), set()).add(_CASE_CHANGES[m.group(2).decode()])
+            self._case_set[fn.start_byte] = converted
+        cases = converted.get(var.encode(), ())
+        if not any(lit != (lit.lower() if c == "lower" else lit.upper()) for c in cases):
+            return  # (most often: `param == "speed"` after a tolower)
+        if in_if0(cmp):
             return
         before = self.pf.data[fn.start_byte : cmp.start_byte]
         name = re.escape(var).encode()
@@ -2143,6 +2157,12 @@ _CASE_CHANGES = {
     "boost::algorithm::to_lower_copy": "lower",
     "boost::algorithm::to_upper_copy": "upper",
 }
+
+
+#: a variable set from one of those calls
+_CASE_SET = re.compile(
+    rb"\b(\w+)\s*=\s*(" + "|".join(map(re.escape, _CASE_CHANGES)).encode() + rb")\s*\("
+)
 
 
 def _condition_of(n: Any) -> Any:
