@@ -1608,7 +1608,11 @@ class Extractor:
             last = m
         if last is None or last.group(1) is None or last.group(2) is None:
             return  # (not assigned in the function, or from no call: ``param = (x)``)
-        change = _CASE_CHANGES.get(last.group(1).decode())
+        call = last.group(1).decode()
+        if call in _CASE_KEEPERS:  # ``stripBlankEnds(toupper(...))``
+            inner = re.match(rb"\s*([\w:]+)\s*\(", before[last.end() :])
+            call = inner.group(1).decode() if inner else call
+        change = _CASE_CHANGES.get(call)
         if change is None:
             return
         # after the conversion: the variable changed in place, or handed to code that may
@@ -1629,11 +1633,11 @@ class Extractor:
             and f'"{meant}"'.encode() in self.pf.data[condition.start_byte : condition.end_byte]
         ):
             return  # ``param == "NAME" || param == "name"``: the other side holds
+        if _empty_branch(condition):
+            return  # ``if(param == "foo") { // handled }``: a template's placeholder
         line = self.pf.data[: fn.start_byte + last.start()].count(b"\n") + 1
         self.out.case_mismatches.append(
-            CaseMismatch(
-                var, lit, last.group(1).decode(), change, line, self.pf.spans.of(lit_node), negated
-            )
+            CaseMismatch(var, lit, call, change, line, self.pf.spans.of(lit_node), negated)
         )
 
     def _compared(
@@ -2159,10 +2163,29 @@ _CASE_CHANGES = {
 }
 
 
-#: a variable set from one of those calls
+#: calls that keep the case of the string they are given (MBUtils)
+_CASE_KEEPERS = ("stripBlankEnds", "stripBlanks", "stripQuotes")
+#: a variable set from one of those calls, maybe inside one that keeps its case
 _CASE_SET = re.compile(
-    rb"\b(\w+)\s*=\s*(" + "|".join(map(re.escape, _CASE_CHANGES)).encode() + rb")\s*\("
+    rb"\b(\w+)\s*=\s*(?:(?:"
+    + "|".join(_CASE_KEEPERS).encode()
+    + rb")\s*\(\s*)?("
+    + "|".join(map(re.escape, _CASE_CHANGES)).encode()
+    + rb")\s*\("
 )
+
+
+def _empty_branch(condition: Any) -> bool:
+    """Whether the ``if`` that ``condition`` tests has a branch with no statement in it
+    (comments only): whether it runs changes nothing."""
+    clause = condition.parent
+    stmt = clause.parent if clause is not None and clause.type == "condition_clause" else None
+    if stmt is None or stmt.type != "if_statement":
+        return False
+    body = stmt.child_by_field_name("consequence")
+    if body is None or body.type != "compound_statement":
+        return False
+    return all(c.type == "comment" for c in body.named_children)
 
 
 def _condition_of(n: Any) -> Any:

@@ -5,7 +5,8 @@ Reports a comparison `var == "Literal"` (or `!=`) where the last change of
 `var` before it, in the same function, made it lower case (`tolower`,
 `MOOSToLower`, `boost::to_lower_copy`) and the literal has a capital, or made
 it upper case (`toupper`, `MOOSToUpper`, `boost::to_upper_copy`) and the
-literal has a lower-case letter.
+literal has a lower-case letter. A conversion inside a call that keeps the
+case (`stripBlankEnds(toupper(...))`) counts as well.
 
 The usual place is an app's configuration loop:
 `string param = tolower(biteStringX(line, '='));` followed by
@@ -15,7 +16,9 @@ mission writes it in.
 Not reported: a comparison after any other assignment to the variable, or
 after it is changed in place or handed to a function by reference; and an
 alternative whose other side compares with the right case
-(`param == "NAME" || param == "name"`).
+(`param == "NAME" || param == "name"`); and a test whose branch holds no
+statement (a template's `if(param == "foo") { // handled }`), which changes
+nothing.
 
 ## Why is this bad?
 The comparison is never true (or, with `!=`, always true), so the branch
