@@ -9,14 +9,14 @@ from __future__ import annotations
 
 import os
 import re
-from typing import Any
+from collections.abc import Callable
 
 from moos_lint.files.source import SourceFile
 from moos_lint.files.suffixes import Kind
 from moos_lint.frontends.cpp.app import build_apps, helper_io, link_apps, read_relevant
 from moos_lint.frontends.cpp.cmake import unbuilt
 from moos_lint.frontends.cpp.file_names import FileNames
-from moos_lint.frontends.cpp.model import AppModel, CppFile
+from moos_lint.frontends.cpp.model import AppModel, CppFile, GeodesyCall
 from moos_lint.frontends.nsplug import Expansion
 from moos_lint.frontends.unit import Unit
 from moos_lint.semantics.run_state import RunView
@@ -100,10 +100,12 @@ def _own_geodesy(apps: list[AppModel], paths: list[str]) -> None:
             g.own_signature = ()
 
 
-def _declared_other_than_geodesy(g: Any, paths: list[str], read: Any) -> bool:
+def _declared_other_than_geodesy(
+    g: GeodesyCall, paths: list[str], read: Callable[[str], object]
+) -> bool:
     """Whether the call's object is declared, in the files of the call's folder, with a
     type other than CMOOSGeodesy (``Geodesy geod;``, ``MyGeo* m_geo;``)."""
-    name = re.escape(g.receiver.rsplit(".", 1)[-1].rsplit("->", 1)[-1])
+    name = re.escape((g.receiver or "").rsplit(".", 1)[-1].rsplit("->", 1)[-1])
     declaration = re.compile(
         rb"\b([A-Za-z_][\w:]*)\s*[*&]?\s*\b" + name.encode() + rb"\s*[;=,)\[{(]"
     )
@@ -111,7 +113,10 @@ def _declared_other_than_geodesy(g: Any, paths: list[str], read: Any) -> bool:
     for path in paths:
         if os.path.dirname(path) != folder:
             continue
-        for m in declaration.finditer(read(path) or b""):
+        data = read(path)
+        if not isinstance(data, bytes):
+            continue  # (a file that cannot be read: read_bytes said why)
+        for m in declaration.finditer(data):
             kind = m.group(1).rsplit(b"::", 1)[-1]
             if kind in _NOT_TYPES:
                 continue

@@ -1628,10 +1628,7 @@ class Extractor:
             return
         meant = lit.lower() if change == "lower" else lit.upper()
         condition = _condition_of(cmp)
-        if (
-            condition is not None
-            and f'"{meant}"'.encode() in self.pf.data[condition.start_byte : condition.end_byte]
-        ):
+        if f'"{meant}"'.encode() in self.pf.data[condition.start_byte : condition.end_byte]:
             return  # ``param == "NAME" || param == "name"``: the other side holds
         if _empty_branch(condition):
             return  # ``if(param == "foo") { // handled }``: a template's placeholder
@@ -2189,8 +2186,8 @@ def _empty_branch(condition: Any) -> bool:
 
 
 def _condition_of(n: Any) -> Any:
-    """The whole condition a comparison is part of (up to its ``if``, loop or
-    statement), or None."""
+    """The whole condition a comparison is part of: the outermost ``||``, ``&&``, ``!``
+    or parentheses around it (what an ``if``, a loop or a statement holds)."""
     while n.parent is not None and n.parent.type in (
         "binary_expression",
         "parenthesized_expression",

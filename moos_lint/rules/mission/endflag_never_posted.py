@@ -14,9 +14,9 @@ duration to end it:
   once: behavior-completes-at-once reports those).
 
 It reports such a flag only where it matters: a condition of the mission (a
-behavior's other than its own, a mode's or an app's) reads the flag's
-variable, and nothing
-else in the mission posts the variable with the flag's value (another
+behavior's other than its own, a mode's or an app's) waits for the flag's
+variable to take the flag's value (`condition = SURFACED = true`), and nothing
+else in the mission posts the variable with that value (another
 behavior's flag, an `initialize`, a timer script or a button). A flag that only
 repeats another publisher, or that nobody reads, is left alone: it does
 nothing, but nothing waits on it. The message names the behaviors whose
@@ -127,9 +127,9 @@ def check(ctx):
 
 def _waited_for_alone(model, flag, own: set[int]) -> tuple[str, list[str]] | None:
     """(the flag's variable, who waits for it) when a condition of the mission, other
-    than the behavior's own (lines ``own``), waits for the variable and nothing else
-    posts it with the flag's value; None otherwise (the flag then only repeats another
-    publisher, or nobody else reads it)."""
+    than the behavior's own (lines ``own``), waits for the variable to take the flag's
+    value and nothing else posts it with that value; None otherwise (the flag then only
+    repeats another publisher, or nobody else waits for it)."""
     var, sep, value = flag.value.partition("=")
     var, value = var.strip(), _norm(value)
     if not var or not sep or has_macro(flag.value):
@@ -142,8 +142,17 @@ def _waited_for_alone(model, flag, own: set[int]) -> tuple[str, list[str]] | Non
         other = value_after(ref)
         if other is None or _norm(other) == value:
             return None
+    # (a condition that waits for the flag's own value: `SURFACED = true`, `== true`)
+    wanted = (f"{var}={value}".lower(), f"{var}=={value}".lower())
     waiting = sorted(
-        {r.app for r in model.waits if var in r.read_names and r.app and id(r.line) not in own}
+        {
+            r.app
+            for r in model.waits
+            if var in r.read_names
+            and r.app
+            and id(r.line) not in own
+            and any(w in "".join(r.line.text.split()).lower() for w in wanted)
+        }
     )
     return (var, waiting) if waiting else None
 
