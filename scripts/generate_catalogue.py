@@ -397,11 +397,15 @@ BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["param_forms"].update(
         },
         "point": {"form": "point|start|empty", "at": _MARINE + "BHV_Waypoint.cpp:239-250"},
         "newpt": {"form": "point", "at": _MARINE + "BHV_Waypoint.cpp:259-262"},
+        # `forever` (any case) in one branch, a whole number 0 or more in another: each
+        # sets whether the points repeat endlessly, the last line naming it wins
+        "repeat": {"form": "enum_or_uint:forever", "at": _MARINE + "BHV_Waypoint.cpp:400-423"},
     }
 )
 BEHAVIOR_CORRECTIONS["BHV_Waypoint"]["why"] += (
     "; polygon, points and xpoints return false when neither string2SegList nor string2Poly "
-    "reads a vertex, point and newpt when string2Point gives no valid point"
+    "reads a vertex, point and newpt when string2Point gives no valid point; repeat takes "
+    "`forever` (compared lower-cased) or a number that isNumber and atoi find 0 or more"
 )
 
 
