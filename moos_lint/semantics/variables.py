@@ -787,6 +787,19 @@ def unit_variables(moos: MoosFile | None = None, bhv: BehaviorFile | None = None
     return iter(refs)
 
 
+_UPPER_WORDS = re.compile(r"[A-Z0-9_]+")
+
+
+def scoped_to_app(name: str, apps: frozenset[str]) -> bool:
+    """Whether ``name`` is an upper-case name joined to the name of one of ``apps``
+    (the repository's own apps) as that app is named (``iWhoiMicroModem_CMD``): such
+    a name is most often built from the app's name (``GetAppName() + "_CMD"``), so its
+    publishers and subscribers must write it in the app's case. (Core MOOS's apps
+    upper-case theirs, ``PHELMIVP_CMD``: a stock app's name is not one of ``apps``.)"""
+    head, _, tail = name.partition("_")
+    return head in apps and _UPPER_WORDS.fullmatch(tail) is not None
+
+
 __all__ = [
     "APP_PARAMS",
     "BHV_PARAMS",
@@ -800,16 +813,3 @@ __all__ = [
     "moos_variables",
     "unit_variables",
 ]
-
-
-_UPPER_WORDS = re.compile(r"[A-Z0-9_]+")
-
-
-def scoped_to_app(name: str, apps: frozenset[str]) -> bool:
-    """Whether ``name`` is an upper-case name joined to the name of one of ``apps``
-    (the repository's own apps) as that app is named (``iWhoiMicroModem_CMD``): such
-    a name is most often built from the app's name (``GetAppName() + "_CMD"``), so its
-    publishers and subscribers must write it in the app's case. (Core MOOS's apps
-    upper-case theirs, ``PHELMIVP_CMD``: a stock app's name is not one of ``apps``.)"""
-    head, _, tail = name.partition("_")
-    return head in apps and _UPPER_WORDS.fullmatch(tail) is not None

@@ -46,12 +46,13 @@ Keep one line, with the value meant.
 ## Options
 None.
 
-MOOS-IvP caveats, deliberately not reported: lines in different branches of
-an nsplug `#ifdef`, lines on the two sides of a merge conflict left in the
-file (bhv-invalid-line reports its markers), a value holding a macro, a boolean `toggle`, two lines
-with the same value, and two words one branch of the parser takes alike
-(uTimerScript's `reset_time = end` and `reset_time = all-posted` both set it
-to 0, TS_MOOSApp.cpp: the catalogue records such words with the key's form).
+MOOS-IvP caveats, deliberately not reported: lines in different branches of an
+nsplug `#ifdef`, lines on the two sides of a merge conflict left in the file
+(bhv-invalid-line reports its markers), a value holding a macro, a boolean
+`toggle`, two lines with the same value, and two words one branch of the
+parser takes alike (uTimerScript's `reset_time = end` and `reset_time =
+all-posted` both set it to 0, TS_MOOSApp.cpp: the catalogue records such words
+with the key's form).
 """
 
 from __future__ import annotations

@@ -19,8 +19,8 @@ digits and `_`, wherever a configuration value names a variable:
 Each name is reported once per file, at its first place, with the number of
 other places in the file (and its includes) that use it. A boolean written
 where the key takes a variable's name (`duration_reset = true`, which the
-helm reads as a variable named `true`) is reported saying so. In a mission, when
-nothing publishes the name as written but an app or behavior of the mission
+helm reads as a variable named `true`) is reported saying so. In a mission,
+when nothing publishes the name as written but an app or behavior of the mission
 publishes it in upper case (`Log = Nav_Speed` beside uSimMarine's `NAV_SPEED`),
 the finding says who: the name is then not only of the wrong style, it reads
 nothing.
@@ -85,8 +85,8 @@ as `GetAppName() + "_CMD"`): its publishers and subscribers must write the
 app's case. The repository's apps are those of the linted C++ and the C++
 folders named as processes are (`src/iWhoiMicroModem`). Core MOOS's apps
 upper-case such names themselves (`PHELMIVP_CMD`), so a stock app's name is
-not taken. Each name is reported once
-per app, at its first place, with the number of other places that use it.
+not taken. Each name is reported once per app, at its first place, with the
+number of other places that use it.
 
 A name that a mission gives through a configuration key of one of the
 repository's apps (`servo_var = servo_3` where the C++ publishes
